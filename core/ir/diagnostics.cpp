@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: MIT
+// Diagnostic formatting with a source excerpt, and the collecting sink.
+#include "core/ir/diagnostics.h"
+
+#include <fstream>
+
+namespace rt {
+
+const std::string &SourceLoc::fileName() const {
+    static const std::string kUnknown = "<unknown>";
+    return file ? *file : kUnknown;
+}
+
+std::string SourceLoc::toString() const {
+    if (!file) return "<unknown>";
+    std::string s = *file;
+    if (line > 0) {
+        s += ":" + std::to_string(line);
+        if (col > 0) s += ":" + std::to_string(col);
+    }
+    return s;
+}
+
+namespace {
+
+const char *severityName(Severity s) {
+    switch (s) {
+        case Severity::Note: return "note";
+        case Severity::Warning: return "warning";
+        case Severity::Error: return "error";
+    }
+    return "error";
+}
+
+/// Reads line `line` (1-based) of `path`; empty when unreadable.
+std::string readSourceLine(const std::string &path, int line) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return {};
+    std::string text;
+    for (int i = 1; std::getline(in, text); ++i)
+        if (i == line) {
+            if (!text.empty() && text.back() == '\r') text.pop_back();
+            return text;
+        }
+    return {};
+}
+
+}  // namespace
+
+std::string formatDiagnostic(const Diagnostic &d, bool withExcerpt) {
+    std::string out = d.loc.toString() + ": " + severityName(d.severity) + ": " + d.message;
+    if (!withExcerpt || !d.loc.isValid()) return out;
+    std::string src = readSourceLine(*d.loc.file, d.loc.line);
+    if (src.empty()) return out;
+    out += "\n    " + src + "\n    ";
+    // Keep tabs so the caret lines up under the offending text
+    for (int i = 1; i < d.loc.col && i - 1 < static_cast<int>(src.size()); ++i)
+        out += src[i - 1] == '\t' ? '\t' : ' ';
+    out += "^";
+    return out;
+}
+
+void DiagnosticSink::report(Severity s, const SourceLoc &loc, std::string message) {
+    diags_.push_back({s, loc, std::move(message)});
+    if (listener_) listener_(diags_.back());
+}
+
+int DiagnosticSink::count(Severity s) const {
+    int n = 0;
+    for (const auto &d : diags_) n += d.severity == s;
+    return n;
+}
+
+int DiagnosticSink::countContaining(const std::string &text) const {
+    int n = 0;
+    for (const auto &d : diags_) n += d.message.find(text) != std::string::npos;
+    return n;
+}
+
+}  // namespace rt

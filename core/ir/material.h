@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+// IR material: POV-Ray 3.7's classic pigment, finish and interior, with every value explicit.
+#pragma once
+
+#include <string>
+
+#include "core/ir/source_loc.h"
+#include "core/math/rgb.h"
+
+namespace rt::ir {
+
+/// OpenSCAD's default face colour (Cornfield scheme front colour #f9d72c), as linear values of
+/// the 8-bit sRGB-less integers divided by 255, exactly as OpenSCAD treats colours.
+constexpr Rgb kOpenScadDefaultColor{0xf9 / 255.0, 0xd7 / 255.0, 0x2c / 255.0};
+
+/// Local-illumination and reflection parameters (povray-semantics.md section 1-2).
+struct Finish {
+    double ambient = 0.15;
+    double diffuse = 0.75;
+    double brilliance = 1;
+    double phong = 0;
+    double phongSize = 40;
+    double specular = 0;
+    double roughness = 0.05;  ///< POV-Ray's roughness; the specular exponent is 1/roughness
+    double metallic = 0;
+    Rgb reflectionMin{0};
+    Rgb reflectionMax{0};
+    double reflectionFalloff = 1;
+    double reflectionExponent = 1;
+    bool fresnel = false;
+    bool conserveEnergy = false;
+    Rgb emission{0};
+
+    bool operator==(const Finish &) const = default;
+    bool hasReflection() const { return !reflectionMin.isBlack() || !reflectionMax.isBlack(); }
+};
+
+/// What is inside a solid: index of refraction and POV-Ray's interior fade.
+struct Interior {
+    double ior = 1;
+    double fadeDistance = 0;
+    double fadePower = 0;
+    Rgb fadeColor{0};
+
+    bool operator==(const Interior &) const = default;
+};
+
+struct Material {
+    Rgb color = kOpenScadDefaultColor;
+    double filter = 0;    ///< light passing through, tinted by color
+    double transmit = 0;  ///< light passing through untinted
+    Finish finish;
+    Interior interior;
+    SourceLoc loc;  ///< where it was first defined (not part of equality)
+
+    bool sameAppearance(const Material &o) const {
+        return color == o.color && filter == o.filter && transmit == o.transmit &&
+               finish == o.finish && interior == o.interior;
+    }
+    bool isTransparent() const { return filter > 0 || transmit > 0; }
+};
+
+}  // namespace rt::ir

@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: MIT
+// Node construction, material table and CSG-aware bounds of the IR.
+#include "core/ir/scene_ir.h"
+
+#include <cmath>
+
+#include "core/math/float_util.h"
+#include "core/math/transform.h"
+
+namespace rt::ir {
+
+std::unique_ptr<Node> Node::makeGroup(NodeKind kind, SourceLoc loc) {
+    auto n = std::make_unique<Node>();
+    n->kind = kind;
+    n->loc = std::move(loc);
+    return n;
+}
+
+std::unique_ptr<Node> Node::makeTransform(const Mat4 &m, SourceLoc loc) {
+    auto n = makeGroup(NodeKind::Transform, std::move(loc));
+    n->matrix = m;
+    return n;
+}
+
+std::unique_ptr<Node> Node::makePrimitive(PrimShape shape, int material, SourceLoc loc) {
+    auto n = makeGroup(NodeKind::Primitive, std::move(loc));
+    n->shape = shape;
+    n->material = material;
+    return n;
+}
+
+size_t Node::primitiveCount() const {
+    size_t n = kind == NodeKind::Primitive ? 1 : 0;
+    for (const auto &c : children) n += c->primitiveCount();
+    return n;
+}
+
+std::unique_ptr<Node> Node::clone() const {
+    auto n = std::make_unique<Node>();
+    n->kind = kind;
+    n->loc = loc;
+    n->label = label;
+    n->matrix = matrix;
+    n->shape = shape;
+    n->material = material;
+    n->fragments = fragments;
+    n->highlight = highlight;
+    n->children.reserve(children.size());
+    for (const auto &c : children) n->children.push_back(c->clone());
+    return n;
+}
+
+const char *nodeKindName(NodeKind k) {
+    switch (k) {
+        case NodeKind::Group: return "group";
+        case NodeKind::Union: return "union";
+        case NodeKind::Intersection: return "intersection";
+        case NodeKind::Difference: return "difference";
+        case NodeKind::Transform: return "transform";
+        case NodeKind::Primitive: return "primitive";
+    }
+    return "?";
+}
+
+double Camera::horizontalFov(double aspect) const {
+    if (fovAxis == FovAxis::Horizontal) return fov;
+    return degrees(2 * std::atan(std::tan(radians(fov) / 2) * aspect));
+}
+
+int Scene::addMaterial(const Material &m) {
+    for (size_t i = 0; i < materials.size(); ++i)
+        if (materials[i].sameAppearance(m)) return static_cast<int>(i);
+    materials.push_back(m);
+    return static_cast<int>(materials.size()) - 1;
+}
+
+Bounds3 primitiveBounds(const PrimShape &shape) {
+    if (const auto *s = std::get_if<SpherePrim>(&shape))
+        return Bounds3(Vec3(-s->radius), Vec3(s->radius));
+    if (const auto *b = std::get_if<BoxPrim>(&shape)) return Bounds3(b->min, b->max);
+    const auto &c = std::get<CylinderPrim>(shape);
+    double r = std::max(c.r1, c.r2);
+    return Bounds3(Vec3(-r, -r, c.z0), Vec3(r, r, c.z1));
+}
+
+Bounds3 worldBounds(const Node &node, const Mat4 &parentFromNode) {
+    switch (node.kind) {
+        case NodeKind::Primitive: {
+            Transform t(parentFromNode, Mat4());  // inverse unused by bounds()
+            return t.bounds(primitiveBounds(node.shape));
+        }
+        case NodeKind::Transform: {
+            Mat4 m = parentFromNode * node.matrix;
+            Bounds3 b;
+            for (const auto &c : node.children) b = unionBounds(b, worldBounds(*c, m));
+            return b;
+        }
+        case NodeKind::Intersection: {
+            if (node.children.empty()) return Bounds3();
+            Bounds3 b = Bounds3::infinite();
+            for (const auto &c : node.children) b = intersectBounds(b, worldBounds(*c, parentFromNode));
+            return b.isEmpty() ? Bounds3() : b;
+        }
+        case NodeKind::Difference:
+            return node.children.empty() ? Bounds3()
+                                         : worldBounds(*node.children.front(), parentFromNode);
+        case NodeKind::Group:
+        case NodeKind::Union: {
+            Bounds3 b;
+            for (const auto &c : node.children) b = unionBounds(b, worldBounds(*c, parentFromNode));
+            return b;
+        }
+    }
+    return Bounds3();
+}
+
+}  // namespace rt::ir

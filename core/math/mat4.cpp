@@ -1,0 +1,192 @@
+// SPDX-License-Identifier: MIT
+// 4x4 matrix construction, products and affine inversion.
+#include "core/math/mat4.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/math/degree_trig.h"
+
+namespace rt {
+
+Mat4 Mat4::translate(const Vec3 &t) {
+    Mat4 r;
+    r.m[0][3] = t.x;
+    r.m[1][3] = t.y;
+    r.m[2][3] = t.z;
+    return r;
+}
+
+Mat4 Mat4::scale(const Vec3 &s) {
+    Mat4 r;
+    r.m[0][0] = s.x;
+    r.m[1][1] = s.y;
+    r.m[2][2] = s.z;
+    return r;
+}
+
+Mat4 Mat4::rotateX(double deg) {
+    double s = sinDegrees(deg), c = cosDegrees(deg);
+    Mat4 r;
+    r.m[1][1] = c;
+    r.m[1][2] = -s;
+    r.m[2][1] = s;
+    r.m[2][2] = c;
+    return r;
+}
+
+Mat4 Mat4::rotateY(double deg) {
+    double s = sinDegrees(deg), c = cosDegrees(deg);
+    Mat4 r;
+    r.m[0][0] = c;
+    r.m[0][2] = s;
+    r.m[2][0] = -s;
+    r.m[2][2] = c;
+    return r;
+}
+
+Mat4 Mat4::rotateZ(double deg) {
+    double s = sinDegrees(deg), c = cosDegrees(deg);
+    Mat4 r;
+    r.m[0][0] = c;
+    r.m[0][1] = -s;
+    r.m[1][0] = s;
+    r.m[1][1] = c;
+    return r;
+}
+
+Mat4 Mat4::rotateAxis(double deg, const Vec3 &axis) {
+    double len = length(axis);
+    if (!(len > 0) || !std::isfinite(len)) return Mat4();
+    Vec3 u = axis / len;
+    double s = sinDegrees(deg), c = cosDegrees(deg);
+    double t = 1 - c;
+    Mat4 r;
+    r.m[0][0] = u.x * u.x * t + c;
+    r.m[0][1] = u.x * u.y * t - u.z * s;
+    r.m[0][2] = u.x * u.z * t + u.y * s;
+    r.m[1][0] = u.y * u.x * t + u.z * s;
+    r.m[1][1] = u.y * u.y * t + c;
+    r.m[1][2] = u.y * u.z * t - u.x * s;
+    r.m[2][0] = u.z * u.x * t - u.y * s;
+    r.m[2][1] = u.z * u.y * t + u.x * s;
+    r.m[2][2] = u.z * u.z * t + c;
+    return r;
+}
+
+Mat4 Mat4::mirror(const Vec3 &n) {
+    double nn = dot(n, n);
+    if (!(nn > 0) || !std::isfinite(nn)) return Mat4();
+    Mat4 r;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) r.m[i][j] = (i == j ? 1.0 : 0.0) - 2.0 * n[i] * n[j] / nn;
+    return r;
+}
+
+Mat4 Mat4::operator*(const Mat4 &o) const {
+    Mat4 r;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            double s = 0;
+            for (int k = 0; k < 4; ++k) s += m[i][k] * o.m[k][j];
+            r.m[i][j] = s;
+        }
+    return r;
+}
+
+bool Mat4::operator==(const Mat4 &o) const {
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            if (m[i][j] != o.m[i][j]) return false;
+    return true;
+}
+
+Vec3 Mat4::transformPoint(const Vec3 &p) const {
+    return {m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
+            m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
+            m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]};
+}
+
+Vec3 Mat4::transformVector(const Vec3 &v) const {
+    return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z,
+            m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
+            m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
+}
+
+Mat4 Mat4::transposed() const {
+    Mat4 r;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) r.m[i][j] = m[j][i];
+    return r;
+}
+
+double Mat4::det3() const {
+    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+           m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+bool Mat4::isAffine() const {
+    return m[3][0] == 0 && m[3][1] == 0 && m[3][2] == 0 && m[3][3] == 1;
+}
+
+bool Mat4::isFinite() const {
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            if (!std::isfinite(m[i][j])) return false;
+    return true;
+}
+
+std::optional<Mat4> Mat4::affineInverse() const {
+    if (!isFinite()) return std::nullopt;
+    // Cofactors of the 3x3 block
+    double c00 = m[1][1] * m[2][2] - m[1][2] * m[2][1];
+    double c01 = m[1][2] * m[2][0] - m[1][0] * m[2][2];
+    double c02 = m[1][0] * m[2][1] - m[1][1] * m[2][0];
+    double det = m[0][0] * c00 + m[0][1] * c01 + m[0][2] * c02;
+    // Singular relative to the block's scale: |det| compared with the product of row norms
+    // (Hadamard's bound), so uniform scales of 1e-6 or 1e6 stay invertible.
+    double rowNorms = 1;
+    for (int i = 0; i < 3; ++i)
+        rowNorms *= std::sqrt(m[i][0] * m[i][0] + m[i][1] * m[i][1] + m[i][2] * m[i][2]);
+    constexpr double kSingularRatio = 1e-12;  // det below this fraction of Hadamard's bound
+    if (!(rowNorms > 0) || !(std::abs(det) > kSingularRatio * rowNorms)) return std::nullopt;
+    double inv = 1.0 / det;
+    Mat4 r;
+    r.m[0][0] = c00 * inv;
+    r.m[0][1] = (m[0][2] * m[2][1] - m[0][1] * m[2][2]) * inv;
+    r.m[0][2] = (m[0][1] * m[1][2] - m[0][2] * m[1][1]) * inv;
+    r.m[1][0] = c01 * inv;
+    r.m[1][1] = (m[0][0] * m[2][2] - m[0][2] * m[2][0]) * inv;
+    r.m[1][2] = (m[0][2] * m[1][0] - m[0][0] * m[1][2]) * inv;
+    r.m[2][0] = c02 * inv;
+    r.m[2][1] = (m[0][1] * m[2][0] - m[0][0] * m[2][1]) * inv;
+    r.m[2][2] = (m[0][0] * m[1][1] - m[0][1] * m[1][0]) * inv;
+    // Translation: -A^-1 t
+    Vec3 t{m[0][3], m[1][3], m[2][3]};
+    for (int i = 0; i < 3; ++i)
+        r.m[i][3] = -(r.m[i][0] * t.x + r.m[i][1] * t.y + r.m[i][2] * t.z);
+    return r;
+}
+
+std::string Mat4::toString() const {
+    std::ostringstream os;
+    os.precision(17);
+    os << "[";
+    for (int i = 0; i < 4; ++i) {
+        os << (i ? ", [" : "[");
+        for (int j = 0; j < 4; ++j) os << (j ? ", " : "") << m[i][j];
+        os << "]";
+    }
+    os << "]";
+    return os.str();
+}
+
+std::string Vec3::toString() const {
+    std::ostringstream os;
+    os.precision(17);
+    os << "[" << x << ", " << y << ", " << z << "]";
+    return os.str();
+}
+
+}  // namespace rt

@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: MIT
+// Entry point of the OpenSCAD-subset importer: .scad file -> ir::Scene.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/ir/diagnostics.h"
+#include "core/ir/scene_ir.h"
+
+namespace rt::scad {
+
+struct ImportOptions {
+    /// Extra folders searched by include<>/use<> after the including file's folder.
+    std::vector<std::string> libraryPaths;
+    /// Top-level overrides, as `openscad -D name=expr`: each expression is parsed and assigned
+    /// after the main file's own assignments.
+    std::vector<std::pair<std::string, std::string>> defines;
+};
+
+/// Reads, parses and evaluates a .scad file. Non-fatal problems go to `diag`; fatal ones throw
+/// ParseError or EvalError with the source location.
+ir::Scene importScad(const std::string &path, DiagnosticSink &diag, const ImportOptions &opts = {});
+
+/// Same for source text held in memory; `virtualPath` names it in diagnostics and anchors
+/// relative include<>/use<> lookups.
+ir::Scene importScadSource(const std::string &source, const std::string &virtualPath,
+                           DiagnosticSink &diag, const ImportOptions &opts = {});
+
+}  // namespace rt::scad
