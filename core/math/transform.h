@@ -28,6 +28,11 @@ class Transform {
     bool swapsHandedness() const { return m_.det3() < 0; }
 
     Vec3 point(const Vec3 &p) const { return m_.transformPoint(p); }
+    Vec3 inversePoint(const Vec3 &p) const { return mInv_.transformPoint(p); }
+    /// Maps a ray by the inverse transform (world to object), keeping t.
+    Ray inverseRay(const Ray &r) const {
+        return Ray(mInv_.transformPoint(r.o), mInv_.transformVector(r.d));
+    }
     Vec3 vector(const Vec3 &v) const { return m_.transformVector(v); }
     /// Normals transform by the inverse transpose.
     Vec3 normal(const Vec3 &n) const;

@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: MIT
+// Binned SAH construction of the flattened BVH.
+#include "core/bvh/bvh.h"
+
+#include <algorithm>
+#include <array>
+
+namespace rt {
+
+Bvh::Bvh(const std::vector<Bounds3> &itemBounds) {
+    std::vector<BuildItem> items;
+    items.reserve(itemBounds.size());
+    for (size_t i = 0; i < itemBounds.size(); ++i)
+        items.push_back({itemBounds[i], itemBounds[i].centroid(), static_cast<uint32_t>(i)});
+    if (items.empty()) return;
+    nodes_.reserve(2 * items.size());
+    order_.reserve(items.size());
+    build(items, 0, items.size(), 1);
+}
+
+int Bvh::build(std::vector<BuildItem> &items, size_t begin, size_t end, int depth) {
+    depth_ = std::max(depth_, depth);
+    int nodeIndex = static_cast<int>(nodes_.size());
+    nodes_.emplace_back();
+    Bounds3 bounds, centroidBounds;
+    for (size_t i = begin; i < end; ++i) {
+        bounds = unionBounds(bounds, items[i].bounds);
+        centroidBounds = unionBounds(centroidBounds, items[i].centroid);
+    }
+    nodes_[nodeIndex].bounds = bounds;
+    size_t n = end - begin;
+
+    auto makeLeaf = [&]() {
+        nodes_[nodeIndex].offset = static_cast<uint32_t>(order_.size());
+        nodes_[nodeIndex].count = static_cast<uint32_t>(n);
+        for (size_t i = begin; i < end; ++i) order_.push_back(items[i].index);
+        return nodeIndex;
+    };
+    // The traversal stack (128) bounds the depth; a degenerate split sequence ends in a leaf
+    constexpr int kMaxDepth = 100;
+    if (n <= 1 || depth >= kMaxDepth) return makeLeaf();
+
+    // Evaluate the surface area heuristic at kBins-1 planes on each axis
+    int bestAxis = -1, bestSplit = -1;
+    double bestCost = kInfinity;
+    Vec3 extent = centroidBounds.diagonal();
+    for (int axis = 0; axis < 3; ++axis) {
+        if (!(extent[axis] > 0)) continue;
+        std::array<int, kBins> counts{};
+        std::array<Bounds3, kBins> binBounds;
+        for (size_t i = begin; i < end; ++i) {
+            int b = static_cast<int>(kBins * centroidBounds.offset(items[i].centroid)[axis]);
+            b = std::clamp(b, 0, kBins - 1);
+            ++counts[b];
+            binBounds[b] = unionBounds(binBounds[b], items[i].bounds);
+        }
+        // Sweep from the right to get the area and count of every right side
+        std::array<double, kBins> rightArea{};
+        std::array<int, kBins> rightCount{};
+        Bounds3 acc;
+        int cnt = 0;
+        for (int b = kBins - 1; b > 0; --b) {
+            acc = unionBounds(acc, binBounds[b]);
+            cnt += counts[b];
+            rightArea[b] = acc.surfaceArea();
+            rightCount[b] = cnt;
+        }
+        acc = Bounds3();
+        cnt = 0;
+        for (int b = 0; b < kBins - 1; ++b) {
+            acc = unionBounds(acc, binBounds[b]);
+            cnt += counts[b];
+            if (cnt == 0 || rightCount[b + 1] == 0) continue;
+            double cost = cnt * acc.surfaceArea() + rightCount[b + 1] * rightArea[b + 1];
+            if (cost < bestCost) {
+                bestCost = cost;
+                bestAxis = axis;
+                bestSplit = b;
+            }
+        }
+    }
+    // Relative cost: one traversal step (1/8 of an item test) plus the expected item tests
+    double area = bounds.surfaceArea();
+    double leafCost = static_cast<double>(n);
+    double splitCost = area > 0 ? 0.125 + bestCost / area : kInfinity;
+    if (n <= static_cast<size_t>(kMaxLeafItems) && (bestAxis < 0 || splitCost >= leafCost))
+        return makeLeaf();
+    size_t mid;
+    if (bestAxis >= 0) {
+        auto pivot = std::partition(items.begin() + begin, items.begin() + end,
+                                    [&](const BuildItem &it) {
+                                        int b = static_cast<int>(
+                                            kBins * centroidBounds.offset(it.centroid)[bestAxis]);
+                                        return std::clamp(b, 0, kBins - 1) <= bestSplit;
+                                    });
+        mid = static_cast<size_t>(pivot - items.begin());
+    } else {
+        // All centroids coincide: split by count so leaves stay small
+        bestAxis = 0;
+        mid = begin + n / 2;
+    }
+    nodes_[nodeIndex].axis = static_cast<uint8_t>(bestAxis);
+    build(items, begin, mid, depth + 1);
+    nodes_[nodeIndex].offset = static_cast<uint32_t>(build(items, mid, end, depth + 1));
+    return nodeIndex;
+}
+
+}  // namespace rt

@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: MIT
+// Perspective pinhole camera with POV-Ray 3.7's look_at construction (povray-semantics.md
+// section 3), right-handed: a film position maps to the same ray POV-Ray traces for it.
+#pragma once
+
+#include "core/ir/camera.h"
+#include "core/math/ray.h"
+
+namespace rt {
+
+class Camera {
+  public:
+    /// Throws SceneError when location == look_at or sky is parallel to the view direction.
+    Camera(const ir::Camera &c, int width, int height);
+
+    /// Ray through film position (x, y) in pixel units, (0,0) the top-left corner of the image:
+    /// pixel (i, j)'s centre is (i + 0.5, j + 0.5). The direction is unit length.
+    Ray generateRay(double x, double y) const;
+    const Vec3 &position() const { return origin_; }
+
+  private:
+    Vec3 origin_, direction_, right_, up_;
+    double invWidth_, invHeight_;
+};
+
+}  // namespace rt

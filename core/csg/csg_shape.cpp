@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: MIT
+// CSG span evaluation with a window of interest and bounds pruning.
+#include "core/csg/csg_shape.h"
+
+#include <algorithm>
+
+namespace rt {
+
+int CsgShape::addLeaf(std::unique_ptr<PrimitiveInstance> leaf) {
+    Node n;
+    n.op = Op::Leaf;
+    n.bounds = leaf->worldBounds();
+    n.leaf = leaf.get();
+    leaves_.push_back(std::move(leaf));
+    nodes_.push_back(std::move(n));
+    return static_cast<int>(nodes_.size()) - 1;
+}
+
+int CsgShape::addOp(Op op, std::vector<int> children) {
+    Node n;
+    n.op = op;
+    switch (op) {
+        case Op::Union:
+            for (int c : children) n.bounds = unionBounds(n.bounds, nodes_[c].bounds);
+            break;
+        case Op::Intersection:
+            n.bounds = Bounds3::infinite();
+            for (int c : children) n.bounds = intersectBounds(n.bounds, nodes_[c].bounds);
+            if (n.bounds.isEmpty()) n.bounds = Bounds3();
+            break;
+        case Op::Difference:
+            if (!children.empty()) n.bounds = nodes_[children.front()].bounds;
+            break;
+        case Op::Leaf: break;
+    }
+    n.children = std::move(children);
+    nodes_.push_back(std::move(n));
+    return static_cast<int>(nodes_.size()) - 1;
+}
+
+std::unique_ptr<PrimitiveInstance> CsgShape::releaseOnlyLeaf() {
+    std::unique_ptr<PrimitiveInstance> leaf = std::move(leaves_.front());
+    leaves_.clear();
+    nodes_.clear();
+    return leaf;
+}
+
+void CsgShape::spans(const Ray &ray, double tMin, double tMax, SpanList &out,
+                     SpanScratch &scratch) const {
+    out.clear();
+    if (!nodes_.empty())
+        evaluate(static_cast<int>(nodes_.size()) - 1, ray, tMin, tMax, out, scratch);
+}
+
+// Only the state of the ray inside [w0, w1] decides the crossings there, and a boolean result's
+// state at t depends only on its operands' states at t. So a subtree whose bounds the ray misses
+// within the window contributes nothing, and an intersection or difference can narrow the window
+// of later operands to the extent of its result so far.
+void CsgShape::evaluate(int index, const Ray &ray, double w0, double w1, SpanList &out,
+                        SpanScratch &scratch) const {
+    const Node &node = nodes_[index];
+    out.clear();
+    if (!node.bounds.intersectP(ray, w0, w1)) {
+        ++scratch.prunedSubtrees;
+        return;
+    }
+    if (node.op == Op::Leaf) {
+        Span s;
+        if (node.leaf->lineSpan(ray, &s)) out.push_back(s);
+        return;
+    }
+    ScratchList operand(scratch), merged(scratch);
+    bool first = true;
+    for (int child : node.children) {
+        if (!first && node.op != Op::Union) {
+            if (out.empty()) {
+                // Pruning rule: nothing left of the minuend or the intersection so far
+                ++scratch.prunedSubtrees;
+                return;
+            }
+            w0 = std::max(w0, out.front().in.t);
+            w1 = std::min(w1, out.back().out.t);
+        }
+        if (first) {
+            evaluate(child, ray, w0, w1, out, scratch);
+            first = false;
+            continue;
+        }
+        evaluate(child, ray, w0, w1, *operand, scratch);
+        if (operand->empty()) {
+            if (node.op == Op::Intersection) {
+                out.clear();
+                return;
+            }
+            continue;  // union or difference with nothing: unchanged
+        }
+        if (out.empty() && node.op == Op::Union) {
+            out.swap(*operand);
+            continue;
+        }
+        SpanOp op = node.op == Op::Union          ? SpanOp::Union
+                    : node.op == Op::Intersection ? SpanOp::Intersection
+                                                  : SpanOp::Difference;
+        combineSpans(out, *operand, op, *merged);
+        ++scratch.spanOps;
+        out.swap(*merged);
+    }
+}
+
+bool CsgShape::inside(const Vec3 &p) const {
+    return !nodes_.empty() && insideNode(static_cast<int>(nodes_.size()) - 1, p);
+}
+
+bool CsgShape::insideNode(int index, const Vec3 &p) const {
+    const Node &node = nodes_[index];
+    if (!node.bounds.contains(p)) return false;
+    switch (node.op) {
+        case Op::Leaf: return node.leaf->inside(p);
+        case Op::Union:
+            return std::any_of(node.children.begin(), node.children.end(),
+                               [&](int c) { return insideNode(c, p); });
+        case Op::Intersection:
+            return !node.children.empty() &&
+                   std::all_of(node.children.begin(), node.children.end(),
+                               [&](int c) { return insideNode(c, p); });
+        case Op::Difference: {
+            if (node.children.empty() || !insideNode(node.children.front(), p)) return false;
+            for (size_t i = 1; i < node.children.size(); ++i)
+                if (insideNode(node.children[i], p)) return false;
+            return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace rt

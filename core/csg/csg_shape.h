@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: MIT
+// A CSG tree as one solid: span lists of the leaves merged bottom-up, with subtrees skipped by
+// their bounds and by the pruning rules (empty intersection operand, empty difference minuend).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "core/csg/span_ops.h"
+#include "core/geometry/shape.h"
+
+namespace rt {
+
+class CsgShape final : public Shape {
+  public:
+    enum class Op { Leaf, Union, Intersection, Difference };
+
+    /// Builder: add nodes bottom-up; the last node added is the root.
+    int addLeaf(std::unique_ptr<PrimitiveInstance> leaf);
+    int addOp(Op op, std::vector<int> children);
+
+    Bounds3 worldBounds() const override { return nodes_.empty() ? Bounds3() : nodes_.back().bounds; }
+    void spans(const Ray &ray, double tMin, double tMax, SpanList &out,
+               SpanScratch &scratch) const override;
+    bool inside(const Vec3 &p) const override;
+    size_t primitiveCount() const override { return leaves_.size(); }
+
+    const std::vector<std::unique_ptr<PrimitiveInstance>> &leaves() const { return leaves_; }
+    /// Hands over the primitive of a tree that has exactly one; the shape is empty afterwards.
+    std::unique_ptr<PrimitiveInstance> releaseOnlyLeaf();
+
+  private:
+    struct Node {
+        Op op = Op::Leaf;
+        Bounds3 bounds;
+        std::vector<int> children;
+        const PrimitiveInstance *leaf = nullptr;
+    };
+
+    void evaluate(int node, const Ray &ray, double w0, double w1, SpanList &out,
+                  SpanScratch &scratch) const;
+    bool insideNode(int node, const Vec3 &p) const;
+
+    std::vector<Node> nodes_;
+    std::vector<std::unique_ptr<PrimitiveInstance>> leaves_;
+};
+
+}  // namespace rt

@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: MIT
+// Merge sweep over the crossings of two span lists.
+#include "core/csg/span_ops.h"
+
+#include "core/geometry/shape.h"
+#include "core/math/float_util.h"
+
+namespace rt {
+
+namespace {
+
+bool evaluate(SpanOp op, bool inA, bool inB) {
+    switch (op) {
+        case SpanOp::Union: return inA || inB;
+        case SpanOp::Intersection: return inA && inB;
+        case SpanOp::Difference: return inA && !inB;
+    }
+    return false;
+}
+
+/// Walks the crossings of one list in order; each span contributes its entry then its exit.
+class CrossingCursor {
+  public:
+    explicit CrossingCursor(const SpanList &l) : list_(l) {}
+    bool done() const { return index_ >= 2 * list_.size(); }
+    double t() const { return done() ? kInfinity : current().t; }
+    const Crossing &current() const {
+        const Span &s = list_[index_ / 2];
+        return index_ % 2 ? s.out : s.in;
+    }
+    /// Inside state after the current crossing.
+    bool insideAfter() const { return index_ % 2 == 0; }
+    void advance() { ++index_; }
+
+  private:
+    const SpanList &list_;
+    size_t index_ = 0;
+};
+
+int rankOf(const Crossing &c) { return c.leaf ? c.leaf->tieRank : 0; }
+
+}  // namespace
+
+void combineSpans(const SpanList &a, const SpanList &b, SpanOp op, SpanList &out) {
+    out.clear();
+    CrossingCursor ca(a), cb(b);
+    bool inA = false, inB = false, inside = false;
+    Span open;
+    while (!ca.done() || !cb.done()) {
+        double t = std::min(ca.t(), cb.t());
+        // Apply every crossing at this t (at most one per list: spans do not touch)
+        const Crossing *xa = nullptr, *xb = nullptr;
+        bool newA = inA, newB = inB;
+        if (!ca.done() && ca.t() == t) {
+            xa = &ca.current();
+            newA = ca.insideAfter();
+            ca.advance();
+        }
+        if (!cb.done() && cb.t() == t) {
+            xb = &cb.current();
+            newB = cb.insideAfter();
+            cb.advance();
+        }
+        bool now = evaluate(op, newA, newB);
+        if (now != inside) {
+            // Which crossing is the result's surface: one that alone would cause this change
+            bool aCauses = xa && evaluate(op, newA, inB) == now;
+            bool bCauses = xb && evaluate(op, inA, newB) == now;
+            const Crossing *winner;
+            if (op == SpanOp::Difference && xa && (aCauses || !bCauses))
+                winner = xa;  // a subtrahend that only touches the minuend does not cut it
+            else if (aCauses && bCauses)
+                winner = rankOf(*xb) < rankOf(*xa) ? xb : xa;
+            else if (aCauses)
+                winner = xa;
+            else if (bCauses)
+                winner = xb;
+            else  // only the two together change the state: rank decides
+                winner = (xa && xb) ? (rankOf(*xb) < rankOf(*xa) ? xb : xa) : (xa ? xa : xb);
+            if (now) {
+                open.in = *winner;
+            } else {
+                open.out = *winner;
+                out.push_back(open);
+            }
+            inside = now;
+        }
+        inA = newA;
+        inB = newB;
+    }
+}
+
+}  // namespace rt

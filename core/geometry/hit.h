@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+// Surface interaction of the winning hit and error-bounded spawning of secondary rays.
+#pragma once
+
+#include "core/math/float_util.h"
+#include "core/math/ray.h"
+
+namespace rt {
+
+class PrimitiveInstance;
+class Shape;
+
+struct SurfaceInteraction {
+    double t = 0;                              ///< world ray parameter of the hit
+    Vec3 p;                                    ///< hit point, refined onto the surface
+    Vec3 pError;                               ///< bound on the absolute error of p
+    Vec3 n;                                    ///< unit geometric normal, out of the primitive
+    const PrimitiveInstance *leaf = nullptr;   ///< primitive whose surface was hit
+    const Shape *object = nullptr;             ///< top-level object (owner of the interior)
+};
+
+/// How far spawned origins sit beyond the error bound of the hit point. The bound covers the
+/// refinement and the forward transform; the factor covers the rounding of the new ray's own
+/// transform into object space and of the re-intersection (pbrt-v3 section 3.9.5).
+constexpr double kSpawnSafety = 4;
+
+/// Origin for a ray leaving the surface in direction w: the hit point pushed along the normal,
+/// to the side of w, past its error bound, then rounded away from the surface.
+inline Vec3 offsetRayOrigin(const SurfaceInteraction &si, const Vec3 &w) {
+    double d = dot(abs(si.n), si.pError) * kSpawnSafety;
+    Vec3 offset = si.n * d;
+    if (dot(w, si.n) < 0) offset = -offset;
+    Vec3 po = si.p + offset;
+    for (int i = 0; i < 3; ++i) {
+        if (offset[i] > 0)
+            po[i] = nextUp(po[i]);
+        else if (offset[i] < 0)
+            po[i] = nextDown(po[i]);
+    }
+    return po;
+}
+
+inline Ray spawnRay(const SurfaceInteraction &si, const Vec3 &w) {
+    return Ray(offsetRayOrigin(si, w), w);
+}
+
+}  // namespace rt

@@ -1,0 +1,210 @@
+// SPDX-License-Identifier: MIT
+// Sphere, box and truncated cone: whole-line spans, inside tests and surface refinement.
+#include "core/geometry/primitive.h"
+
+#include <cmath>
+#include <utility>
+
+#include "core/math/float_util.h"
+#include "core/math/quadratic.h"
+
+namespace rt {
+
+std::unique_ptr<Primitive> Primitive::create(const ir::PrimShape &shape) {
+    if (const auto *s = std::get_if<ir::SpherePrim>(&shape))
+        return std::make_unique<Sphere>(s->radius);
+    if (const auto *b = std::get_if<ir::BoxPrim>(&shape)) return std::make_unique<Box>(b->min, b->max);
+    const auto &c = std::get<ir::CylinderPrim>(shape);
+    return std::make_unique<Cone>(c.z0, c.z1, c.r1, c.r2);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Sphere
+
+bool Sphere::intersect(const Ray &r, PrimitiveSpan *span) const {
+    double a = lengthSquared(r.d);
+    if (!(a > 0)) return false;
+    // Discriminant from the distance of the line to the centre (Hearn and Baker; pbrt-v4
+    // Sphere::BasicIntersect): 4a (R - |v|)(R + |v|) does not cancel for rays far from the sphere.
+    double f = dot(r.o, r.d) / a;
+    Vec3 v = r.o - r.d * f;
+    double len = length(v);
+    double discrim = 4 * a * (radius_ - len) * (radius_ + len);
+    // A tangent line (discrim 0) only touches the sphere: no span
+    if (!(discrim > 0)) return false;
+    double rootDiscrim = std::sqrt(discrim);
+    double b = 2 * dot(r.o, r.d);
+    double q = (b < 0) ? -0.5 * (b - rootDiscrim) : -0.5 * (b + rootDiscrim);
+    double lo = length(r.o);
+    double c = (lo - radius_) * (lo + radius_);
+    double t0 = q / a, t1 = c / q;
+    if (t0 > t1) std::swap(t0, t1);
+    if (!(t0 < t1)) return false;
+    *span = {t0, t1, 0, 0};
+    return true;
+}
+
+ObjectSurface Sphere::surface(const Vec3 &p, int) const {
+    // Reproject onto the sphere: the refined point has a relative error of gamma(5)
+    // (pbrt-v3 section 3.9.4).
+    double len = length(p);
+    Vec3 refined = len > 0 ? p * (radius_ / len) : Vec3(0, 0, radius_);
+    return {refined, abs(refined) * gamma(5), refined};
+}
+
+// ---------------------------------------------------------------------------------------------
+// Box
+
+bool Box::intersect(const Ray &r, PrimitiveSpan *span) const {
+    double t0 = -kInfinity, t1 = kInfinity;
+    int face0 = -1, face1 = -1;
+    for (int i = 0; i < 3; ++i) {
+        if (r.d[i] == 0) {
+            // Parallel to this slab: inside it everywhere or nowhere
+            if (r.o[i] < min_[i] || r.o[i] > max_[i]) return false;
+            continue;
+        }
+        double inv = 1 / r.d[i];
+        double tNear = (min_[i] - r.o[i]) * inv, tFar = (max_[i] - r.o[i]) * inv;
+        int fNear = 2 * i, fFar = 2 * i + 1;
+        if (tNear > tFar) {
+            std::swap(tNear, tFar);
+            std::swap(fNear, fFar);
+        }
+        if (tNear > t0) {
+            t0 = tNear;
+            face0 = fNear;
+        }
+        if (tFar < t1) {
+            t1 = tFar;
+            face1 = fFar;
+        }
+    }
+    if (face0 < 0 || face1 < 0 || !(t0 < t1)) return false;
+    *span = {t0, t1, face0, face1};
+    return true;
+}
+
+bool Box::inside(const Vec3 &p) const {
+    return p.x >= min_.x && p.x <= max_.x && p.y >= min_.y && p.y <= max_.y && p.z >= min_.z &&
+           p.z <= max_.z;
+}
+
+ObjectSurface Box::surface(const Vec3 &p, int face) const {
+    int axis = face / 2;
+    bool maxSide = face % 2;
+    Vec3 refined = max(min_, rt::min(p, max_));
+    refined[axis] = maxSide ? max_[axis] : min_[axis];
+    // The face coordinate is exact; the others carry the error of o + t d.
+    Vec3 err = abs(refined) * gamma(3);
+    err[axis] = 0;
+    Vec3 n(0);
+    n[axis] = maxSide ? 1 : -1;
+    return {refined, err, n};
+}
+
+// ---------------------------------------------------------------------------------------------
+// Truncated cone
+
+Cone::Cone(double z0, double z1, double r1, double r2)
+    : z0_(z0), z1_(z1), r1_(r1), r2_(r2), slope_((r2 - r1) / (z1 - z0)) {}
+
+Bounds3 Cone::objectBounds() const {
+    double r = std::max(r1_, r2_);
+    return Bounds3(Vec3(-r, -r, z0_), Vec3(r, r, z1_));
+}
+
+bool Cone::intersect(const Ray &r, PrimitiveSpan *span) const {
+    // Clip the line to the slab z0 <= z <= z1
+    double ta = -kInfinity, tb = kInfinity;
+    int fa = 0, fb = 0;  // side unless a cap bounds the interval
+    if (r.d.z == 0) {
+        if (r.o.z < z0_ || r.o.z > z1_) return false;
+    } else {
+        ta = (z0_ - r.o.z) / r.d.z;
+        tb = (z1_ - r.o.z) / r.d.z;
+        fa = 1;
+        fb = 2;
+        if (ta > tb) {
+            std::swap(ta, tb);
+            std::swap(fa, fb);
+        }
+    }
+    // Inside the infinite cone: x^2 + y^2 - r(z)^2 <= 0 with r(z) = w0 + wd t along the ray.
+    // Within the slab r(z) >= 0, so the solid's part of the line is one interval.
+    double w0 = radiusAt(r.o.z), wd = slope_ * r.d.z;
+    double A = differenceOfProducts(r.d.x, r.d.x, -r.d.y, r.d.y) - wd * wd;
+    double B = 2 * (r.o.x * r.d.x + r.o.y * r.d.y - w0 * wd);
+    double C = differenceOfProducts(r.o.x, r.o.x, -r.o.y, r.o.y) - w0 * w0;
+    double s0 = -kInfinity, s1 = kInfinity;  // side interval
+    if (A == 0 && B == 0) {
+        if (C > 0) return false;
+    } else if (A == 0) {
+        // Ray parallel to a generator line: one root
+        double tr = -C / B;
+        if (B > 0)
+            s1 = tr;
+        else
+            s0 = tr;
+    } else {
+        double q0, q1;
+        if (!solveQuadratic(A, B, C, &q0, &q1)) {
+            if (A > 0) return false;  // never inside
+            // A < 0 and no root: inside along the whole line
+        } else if (A > 0) {
+            s0 = q0;
+            s1 = q1;
+        } else {
+            // Inside outside the roots; only one piece meets the slab (the other nappe has r < 0)
+            double lenLow = std::min(tb, q0) - ta, lenHigh = tb - std::max(ta, q1);
+            if (lenLow >= lenHigh)
+                s1 = q0;
+            else
+                s0 = q1;
+        }
+    }
+    double t0 = ta, t1 = tb;
+    int face0 = fa, face1 = fb;
+    if (s0 > t0) {
+        t0 = s0;
+        face0 = 0;
+    }
+    if (s1 < t1) {
+        t1 = s1;
+        face1 = 0;
+    }
+    if (!(t0 < t1) || std::isinf(t0) || std::isinf(t1)) return false;
+    *span = {t0, t1, face0, face1};
+    return true;
+}
+
+bool Cone::inside(const Vec3 &p) const {
+    if (p.z < z0_ || p.z > z1_) return false;
+    double rz = radiusAt(p.z);
+    return p.x * p.x + p.y * p.y <= rz * rz;
+}
+
+ObjectSurface Cone::surface(const Vec3 &p, int face) const {
+    if (face == 1 || face == 2) {
+        Vec3 refined = p;
+        refined.z = face == 1 ? z0_ : z1_;
+        Vec3 err = abs(refined) * gamma(3);
+        err.z = 0;
+        return {refined, err, Vec3(0, 0, face == 1 ? -1 : 1)};
+    }
+    // Side: move the point radially onto the cone at its height
+    Vec3 refined = p;
+    refined.z = clamp(p.z, std::min(z0_, z1_), std::max(z0_, z1_));
+    double rz = radiusAt(refined.z);
+    double rho = std::hypot(p.x, p.y);
+    if (rho > 0) {
+        refined.x *= rz / rho;
+        refined.y *= rz / rho;
+    }
+    // Gradient of x^2 + y^2 - r(z)^2, halved
+    Vec3 n(refined.x, refined.y, -rz * slope_);
+    if (lengthSquared(n) == 0) n = Vec3(0, 0, slope_ > 0 ? 1 : -1);  // apex
+    return {refined, abs(refined) * gamma(6), n};
+}
+
+}  // namespace rt

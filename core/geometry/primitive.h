@@ -1,0 +1,82 @@
+// SPDX-License-Identifier: MIT
+// Analytic convex primitives in object space: each returns the one span of the whole ray line
+// inside it, its inside test, and surface data for a crossing.
+#pragma once
+
+#include <memory>
+
+#include "core/ir/node.h"
+#include "core/math/bounds3.h"
+#include "core/math/ray.h"
+
+namespace rt {
+
+/// Object-space result of intersecting the ray line with a convex solid.
+struct PrimitiveSpan {
+    double t0 = 0, t1 = 0;
+    int face0 = 0, face1 = 0;
+};
+
+/// Surface point refined onto the primitive, with a bound on its absolute error.
+struct ObjectSurface {
+    Vec3 p, pError, normal;  ///< normal points out of the solid (not normalised)
+};
+
+class Primitive {
+  public:
+    virtual ~Primitive() = default;
+    static std::unique_ptr<Primitive> create(const ir::PrimShape &shape);
+
+    virtual Bounds3 objectBounds() const = 0;
+    /// Span of the whole line o + t d inside the solid, t over all reals. False when the line
+    /// misses the solid or only touches it (zero-length spans are dropped).
+    virtual bool intersect(const Ray &objectRay, PrimitiveSpan *span) const = 0;
+    /// Point-in-solid test, boundary included.
+    virtual bool inside(const Vec3 &p) const = 0;
+    /// Refines a point near the surface of the given face onto it and returns the outward normal.
+    virtual ObjectSurface surface(const Vec3 &p, int face) const = 0;
+};
+
+class Sphere final : public Primitive {
+  public:
+    explicit Sphere(double radius) : radius_(radius) {}
+    Bounds3 objectBounds() const override { return Bounds3(Vec3(-radius_), Vec3(radius_)); }
+    bool intersect(const Ray &r, PrimitiveSpan *span) const override;
+    bool inside(const Vec3 &p) const override { return lengthSquared(p) <= radius_ * radius_; }
+    ObjectSurface surface(const Vec3 &p, int face) const override;
+
+  private:
+    double radius_;
+};
+
+/// Axis-aligned box; faces are numbered 2*axis + (0 for the min side, 1 for the max side).
+class Box final : public Primitive {
+  public:
+    Box(const Vec3 &min, const Vec3 &max) : min_(min), max_(max) {}
+    Bounds3 objectBounds() const override { return Bounds3(min_, max_); }
+    bool intersect(const Ray &r, PrimitiveSpan *span) const override;
+    bool inside(const Vec3 &p) const override;
+    ObjectSurface surface(const Vec3 &p, int face) const override;
+
+  private:
+    Vec3 min_, max_;
+};
+
+/// Truncated cone along +Z (OpenSCAD's cylinder): radius r1 at z0, r2 at z1, both >= 0.
+/// Faces: 0 side, 1 bottom cap (z0), 2 top cap (z1).
+class Cone final : public Primitive {
+  public:
+    Cone(double z0, double z1, double r1, double r2);
+    Bounds3 objectBounds() const override;
+    bool intersect(const Ray &r, PrimitiveSpan *span) const override;
+    bool inside(const Vec3 &p) const override;
+    ObjectSurface surface(const Vec3 &p, int face) const override;
+
+  private:
+    double radiusAt(double z) const { return r1_ + slope_ * (z - z0_); }
+
+    double z0_, z1_, r1_, r2_;
+    double slope_;  ///< dr/dz
+};
+
+}  // namespace rt

@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: MIT
+// Shape defaults, span scratch pool and transformed primitive instances.
+#include "core/geometry/shape.h"
+
+#include <cmath>
+
+namespace rt {
+
+SpanList &SpanScratch::acquire() {
+    if (used_ == pool_.size()) pool_.push_back(std::make_unique<SpanList>());
+    SpanList &l = *pool_[used_++];
+    l.clear();
+    return l;
+}
+
+bool Shape::firstCrossing(const Ray &ray, double tMin, double tMax, Crossing *c,
+                          SpanScratch &scratch) const {
+    ScratchList list(scratch);
+    spans(ray, tMin, tMax, *list, scratch);
+    for (const Span &s : *list) {
+        if (s.in.t >= tMax) return false;
+        if (s.in.t > tMin) {
+            *c = s.in;
+            return true;
+        }
+        if (s.out.t > tMin) {
+            if (s.out.t >= tMax) return false;
+            *c = s.out;
+            return true;
+        }
+    }
+    return false;
+}
+
+namespace {
+
+double frobenius3(const Mat4 &m) {
+    double s = 0;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) s += m.m[i][j] * m.m[i][j];
+    return std::sqrt(s);
+}
+
+}  // namespace
+
+PrimitiveInstance::PrimitiveInstance(std::unique_ptr<Primitive> prim,
+                                     const Transform &worldFromObject, int material)
+    : prim_(std::move(prim)),
+      worldFromObject_(worldFromObject),
+      identity_(worldFromObject.isIdentity()),
+      material_(material) {
+    bounds_ = worldFromObject_.bounds(prim_->objectBounds());
+    // ||M||_F ||M^-1||_F / 3 is 1 for rotations and uniform scales and grows with shear and
+    // non-uniform scale, as does the rounding error of mapping points back and forth.
+    conditioning_ = std::max(1.0, frobenius3(worldFromObject_.matrix()) *
+                                      frobenius3(worldFromObject_.inverseMatrix()) / 3);
+}
+
+bool PrimitiveInstance::lineSpan(const Ray &worldRay, Span *span) const {
+    PrimitiveSpan ps;
+    if (!prim_->intersect(toObject(worldRay), &ps)) return false;
+    span->in = {ps.t0, this, ps.face0};
+    span->out = {ps.t1, this, ps.face1};
+    return true;
+}
+
+void PrimitiveInstance::spans(const Ray &ray, double, double, SpanList &out,
+                              SpanScratch &) const {
+    Span s;
+    if (lineSpan(ray, &s)) out.push_back(s);
+}
+
+bool PrimitiveInstance::firstCrossing(const Ray &ray, double tMin, double tMax, Crossing *c,
+                                      SpanScratch &) const {
+    Span s;
+    if (!lineSpan(ray, &s)) return false;
+    if (s.in.t > tMin) {
+        if (s.in.t >= tMax) return false;
+        *c = s.in;
+        return true;
+    }
+    if (s.out.t > tMin && s.out.t < tMax) {
+        *c = s.out;
+        return true;
+    }
+    return false;
+}
+
+bool PrimitiveInstance::inside(const Vec3 &p) const {
+    return prim_->inside(identity_ ? p : worldFromObject_.inversePoint(p));
+}
+
+SurfaceInteraction PrimitiveInstance::surfaceAt(const Ray &worldRay, const Crossing &c) const {
+    Ray r = toObject(worldRay);
+    ObjectSurface os = prim_->surface(r.at(c.t), c.face);
+    SurfaceInteraction si;
+    si.t = c.t;
+    si.leaf = this;
+    if (identity_) {
+        si.p = os.p;
+        si.pError = os.pError;
+        si.n = normalize(os.normal);
+    } else {
+        Vec3 err;
+        si.p = worldFromObject_.point(os.p, os.pError, &err);
+        si.pError = err * conditioning_;
+        si.n = normalize(worldFromObject_.normal(os.normal));
+    }
+    return si;
+}
+
+}  // namespace rt

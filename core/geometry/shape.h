@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: MIT
+// World-space solids the tracer sees: the Shape interface, and a primitive placed by a transform.
+#pragma once
+
+#include <memory>
+
+#include "core/csg/span.h"
+#include "core/geometry/hit.h"
+#include "core/geometry/primitive.h"
+#include "core/math/transform.h"
+
+namespace rt {
+
+/// Per-thread scratch for CSG span evaluation, with the work counters the render summary prints.
+class SpanScratch {
+  public:
+    SpanList &acquire();
+    void release() { --used_; }
+    long long spanOps = 0;         ///< span-list merges performed
+    long long prunedSubtrees = 0;  ///< CSG subtrees skipped by bounds or by the pruning rules
+
+  private:
+    std::vector<std::unique_ptr<SpanList>> pool_;
+    size_t used_ = 0;
+};
+
+/// RAII hold on a scratch span list.
+class ScratchList {
+  public:
+    explicit ScratchList(SpanScratch &s) : scratch_(s), list_(s.acquire()) {}
+    ~ScratchList() { scratch_.release(); }
+    ScratchList(const ScratchList &) = delete;
+    ScratchList &operator=(const ScratchList &) = delete;
+    SpanList &operator*() { return list_; }
+    SpanList *operator->() { return &list_; }
+
+  private:
+    SpanScratch &scratch_;
+    SpanList &list_;
+};
+
+class Shape {
+  public:
+    virtual ~Shape() = default;
+    virtual Bounds3 worldBounds() const = 0;
+    /// Spans of the world ray line inside the solid. Only the part of the line within
+    /// [tMin, tMax] is guaranteed to be classified right; spans may extend beyond it.
+    virtual void spans(const Ray &ray, double tMin, double tMax, SpanList &out,
+                       SpanScratch &scratch) const = 0;
+    /// First surface crossing with tMin < t < tMax.
+    virtual bool firstCrossing(const Ray &ray, double tMin, double tMax, Crossing *c,
+                               SpanScratch &scratch) const;
+    /// Point-in-solid test, boundary included.
+    virtual bool inside(const Vec3 &p) const = 0;
+    /// Number of primitives (for statistics and the plan).
+    virtual size_t primitiveCount() const = 0;
+
+    /// Material index that defines the interior (ior, fade) of this solid.
+    int interiorMaterial = -1;
+    /// No surface of this solid transmits light: shadow rays stop at it.
+    bool opaque = true;
+};
+
+/// An analytic primitive with its world placement and material.
+class PrimitiveInstance final : public Shape {
+  public:
+    PrimitiveInstance(std::unique_ptr<Primitive> prim, const Transform &worldFromObject,
+                      int material);
+
+    Bounds3 worldBounds() const override { return bounds_; }
+    void spans(const Ray &ray, double tMin, double tMax, SpanList &out,
+               SpanScratch &scratch) const override;
+    bool firstCrossing(const Ray &ray, double tMin, double tMax, Crossing *c,
+                       SpanScratch &scratch) const override;
+    bool inside(const Vec3 &p) const override;
+    size_t primitiveCount() const override { return 1; }
+
+    /// The span of the whole world line inside this primitive.
+    bool lineSpan(const Ray &worldRay, Span *span) const;
+    /// Full surface data for a crossing of this primitive by the world ray.
+    SurfaceInteraction surfaceAt(const Ray &worldRay, const Crossing &c) const;
+
+    int material() const { return material_; }
+    const Transform &worldFromObject() const { return worldFromObject_; }
+    /// Order of this primitive's material by value, for the coincident-face tie-break.
+    int tieRank = 0;
+
+  private:
+    Ray toObject(const Ray &r) const {
+        return identity_ ? r : worldFromObject_.inverseRay(r);
+    }
+
+    std::unique_ptr<Primitive> prim_;
+    Transform worldFromObject_;
+    bool identity_;
+    /// Error growth of a round trip through the transform (condition number estimate, >= 1).
+    double conditioning_;
+    int material_;
+    Bounds3 bounds_;
+};
+
+}  // namespace rt

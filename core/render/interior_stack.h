@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+// The solids a ray is inside, innermost last, as POV-Ray's per-ray interior list; it decides
+// the relative index of refraction at each surface (povray-semantics.md section 2.4).
+#pragma once
+
+#include <array>
+
+namespace rt {
+
+class Shape;
+
+class InteriorStack {
+  public:
+    /// POV-Ray's fixed limit is similar; deeper nesting is ignored (counted by the caller).
+    static constexpr int kCapacity = 32;
+
+    bool empty() const { return size_ == 0; }
+    int size() const { return size_; }
+    const Shape *top() const { return size_ ? items_[size_ - 1] : nullptr; }
+    bool contains(const Shape *s) const {
+        for (int i = 0; i < size_; ++i)
+            if (items_[i] == s) return true;
+        return false;
+    }
+    /// False when the stack is full.
+    bool push(const Shape *s) {
+        if (size_ == kCapacity) return false;
+        items_[size_++] = s;
+        return true;
+    }
+    /// Removes s wherever it is; false when absent.
+    bool remove(const Shape *s) {
+        for (int i = size_ - 1; i >= 0; --i)
+            if (items_[i] == s) {
+                for (int j = i; j + 1 < size_; ++j) items_[j] = items_[j + 1];
+                --size_;
+                return true;
+            }
+        return false;
+    }
+
+  private:
+    std::array<const Shape *, kCapacity> items_{};
+    int size_ = 0;
+};
+
+}  // namespace rt

@@ -1,0 +1,222 @@
+// SPDX-License-Identifier: MIT
+// Compilation of the IR node tree into world-space solids, and closest-hit queries.
+#include "core/render/render_scene.h"
+
+#include <algorithm>
+#include <numeric>
+#include <tuple>
+
+#include "core/csg/csg_shape.h"
+
+namespace rt {
+
+namespace {
+
+/// Value of a material as a tuple, so coincident faces pick a material by what it is, not by
+/// the order in which the file mentions it.
+auto materialKey(const ir::Material &m) {
+    const ir::Finish &f = m.finish;
+    return std::make_tuple(m.color.r, m.color.g, m.color.b, m.filter, m.transmit, f.ambient,
+                           f.diffuse, f.brilliance, f.phong, f.phongSize, f.specular, f.roughness,
+                           f.metallic, f.reflectionMax.r, f.reflectionMax.g, f.reflectionMax.b,
+                           f.reflectionMin.r, f.reflectionMin.g, f.reflectionMin.b,
+                           m.interior.ior);
+}
+
+class Compiler {
+  public:
+    Compiler(const ir::Scene &scene, DiagnosticSink &diag, CompileStats &stats)
+        : scene_(scene), diag_(diag), stats_(stats) {
+        // Rank materials by value for the CSG tie-break
+        std::vector<int> order(scene.materials.size());
+        std::iota(order.begin(), order.end(), 0);
+        std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+            return materialKey(scene.materials[a]) < materialKey(scene.materials[b]);
+        });
+        ranks_.resize(order.size());
+        for (size_t i = 0; i < order.size(); ++i) ranks_[order[i]] = static_cast<int>(i);
+    }
+
+    /// Top level: each solid below the root's groups and transforms becomes its own object.
+    void flatten(const ir::Node &node, const Mat4 &m, std::vector<std::unique_ptr<Shape>> &out) {
+        switch (node.kind) {
+            case ir::NodeKind::Group:
+                for (const auto &c : node.children) flatten(*c, m, out);
+                return;
+            case ir::NodeKind::Transform: {
+                Mat4 composed = m * node.matrix;
+                if (!checkTransform(node, composed)) return;
+                for (const auto &c : node.children) flatten(*c, composed, out);
+                return;
+            }
+            case ir::NodeKind::Primitive: {
+                if (auto leaf = makeLeaf(node, m)) out.push_back(std::move(leaf));
+                return;
+            }
+            case ir::NodeKind::Union:
+            case ir::NodeKind::Intersection:
+            case ir::NodeKind::Difference: {
+                auto csg = std::make_unique<CsgShape>();
+                int root = build(*csg, node, m);
+                if (root < 0) {
+                    ++stats_.emptyDropped;
+                    return;
+                }
+                if (csg->primitiveCount() == 1) {
+                    // A CSG node that reduced to one primitive needs no span merging
+                    out.push_back(csg->releaseOnlyLeaf());
+                    return;
+                }
+                finishObject(*csg, csg->leaves());
+                ++stats_.csgObjects;
+                out.push_back(std::move(csg));
+                return;
+            }
+        }
+    }
+
+  private:
+    bool checkTransform(const ir::Node &node, const Mat4 &m) {
+        if (Transform::fromMatrix(m)) return true;
+        diag_.warning(node.loc, m.isFinite()
+                                    ? "transform is singular (a zero scale?); the object has no "
+                                      "volume and is not rendered"
+                                    : "transform has non-finite entries; the object is not rendered");
+        ++stats_.emptyDropped;
+        return false;
+    }
+
+    std::unique_ptr<PrimitiveInstance> makeLeaf(const ir::Node &node, const Mat4 &m) {
+        auto t = Transform::fromMatrix(m);
+        if (!t) {
+            checkTransform(node, m);
+            return nullptr;
+        }
+        int mat = node.material;
+        if (mat < 0 || mat >= static_cast<int>(scene_.materials.size()))
+            throw SceneError(node.loc, "primitive has no valid material (internal error)");
+        auto leaf = std::make_unique<PrimitiveInstance>(Primitive::create(node.shape), *t, mat);
+        leaf->tieRank = ranks_[mat];
+        leaf->interiorMaterial = mat;
+        leaf->opaque = !scene_.materials[mat].isTransparent();
+        ++stats_.primitives;
+        return leaf;
+    }
+
+    /// Adds the subtree to the CSG shape; returns its node index, or -1 when it has no volume.
+    int build(CsgShape &csg, const ir::Node &node, const Mat4 &m) {
+        switch (node.kind) {
+            case ir::NodeKind::Primitive: {
+                auto leaf = makeLeaf(node, m);
+                return leaf ? csg.addLeaf(std::move(leaf)) : -1;
+            }
+            case ir::NodeKind::Transform: {
+                Mat4 composed = m * node.matrix;
+                if (!checkTransform(node, composed)) return -1;
+                return unionOf(csg, node, composed);
+            }
+            case ir::NodeKind::Group:
+            case ir::NodeKind::Union: return unionOf(csg, node, m);
+            case ir::NodeKind::Intersection: {
+                std::vector<int> kids;
+                for (const auto &c : node.children) {
+                    int k = build(csg, *c, m);
+                    if (k < 0) {
+                        // Pruning rule: an empty operand empties the intersection
+                        ++stats_.emptyDropped;
+                        return -1;
+                    }
+                    kids.push_back(k);
+                }
+                if (kids.empty()) return -1;
+                return kids.size() == 1 ? kids[0]
+                                        : csg.addOp(CsgShape::Op::Intersection, std::move(kids));
+            }
+            case ir::NodeKind::Difference: {
+                if (node.children.empty()) return -1;
+                int minuend = build(csg, *node.children.front(), m);
+                if (minuend < 0) return -1;  // pruning rule: nothing to subtract from
+                std::vector<int> kids{minuend};
+                for (size_t i = 1; i < node.children.size(); ++i) {
+                    int k = build(csg, *node.children[i], m);
+                    if (k >= 0) kids.push_back(k);
+                }
+                return kids.size() == 1 ? minuend
+                                        : csg.addOp(CsgShape::Op::Difference, std::move(kids));
+            }
+        }
+        return -1;
+    }
+
+    int unionOf(CsgShape &csg, const ir::Node &node, const Mat4 &m) {
+        std::vector<int> kids;
+        for (const auto &c : node.children) {
+            int k = build(csg, *c, m);
+            if (k >= 0) kids.push_back(k);
+        }
+        if (kids.empty()) return -1;
+        return kids.size() == 1 ? kids[0] : csg.addOp(CsgShape::Op::Union, std::move(kids));
+    }
+
+    void finishObject(Shape &object,
+                      const std::vector<std::unique_ptr<PrimitiveInstance>> &leaves) {
+        // The interior (ior, fade) of a CSG solid is that of its first primitive, which is the
+        // minuend's for a difference; the solid blocks shadows only if every surface is opaque.
+        object.interiorMaterial = leaves.front()->material();
+        object.opaque = std::all_of(leaves.begin(), leaves.end(),
+                                    [](const auto &l) { return l->opaque; });
+    }
+
+    const ir::Scene &scene_;
+    DiagnosticSink &diag_;
+    CompileStats &stats_;
+    std::vector<int> ranks_;
+};
+
+}  // namespace
+
+std::unique_ptr<RenderScene> RenderScene::compile(const ir::Scene &scene, DiagnosticSink &diag) {
+    if (!scene.camera) throw SceneError({}, "scene has no camera (completeScene not applied)");
+    std::unique_ptr<RenderScene> rs(new RenderScene());
+    rs->materials_ = scene.materials;
+    rs->lights_ = scene.lights;
+    rs->camera_ = *scene.camera;
+    rs->settings_ = scene.settings;
+    Compiler compiler(scene, diag, rs->stats_);
+    compiler.flatten(*scene.root, Mat4(), rs->objects_);
+
+    std::vector<Bounds3> bounds;
+    bounds.reserve(rs->objects_.size());
+    for (const auto &o : rs->objects_) bounds.push_back(o->worldBounds());
+    rs->bvh_ = Bvh(bounds);
+    rs->stats_.objects = rs->objects_.size();
+    rs->stats_.bvhDepth = rs->bvh_.depth();
+    return rs;
+}
+
+bool RenderScene::intersect(const Ray &ray, double tMin, double tMax, SurfaceInteraction *si,
+                            SpanScratch &scratch) const {
+    Crossing best;
+    const Shape *bestObject = nullptr;
+    double closest = tMax;
+    bvh_.traverse(ray, tMin, &closest, [&](uint32_t index, double *tFar) {
+        Crossing c;
+        const Shape *obj = objects_[index].get();
+        if (obj->firstCrossing(ray, tMin, *tFar, &c, scratch)) {
+            *tFar = c.t;
+            best = c;
+            bestObject = obj;
+        }
+        return false;
+    });
+    if (!bestObject) return false;
+    *si = best.leaf->surfaceAt(ray, best);
+    si->object = bestObject;
+    return true;
+}
+
+Bounds3 RenderScene::bounds() const {
+    return bvh_.empty() ? Bounds3() : bvh_.nodes().front().bounds;
+}
+
+}  // namespace rt

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+// The immutable, compiled form of an ir::Scene: world-space solids in a BVH, materials, lights,
+// camera and settings. Built only by RenderScene::compile; any thread may read it.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "core/bvh/bvh.h"
+#include "core/geometry/shape.h"
+#include "core/ir/diagnostics.h"
+#include "core/ir/scene_ir.h"
+
+namespace rt {
+
+struct CompileStats {
+    size_t objects = 0;         ///< top-level solids
+    size_t primitives = 0;      ///< analytic primitives in them
+    size_t csgObjects = 0;      ///< solids that need span merging
+    size_t emptyDropped = 0;    ///< subtrees with no volume (empty operands, singular transforms)
+    int bvhDepth = 0;
+};
+
+class RenderScene {
+  public:
+    /// Builds render objects from a complete scene (ir::completeScene already applied: it must
+    /// have a camera). Singular transforms and empty operands are dropped with a located warning.
+    static std::unique_ptr<RenderScene> compile(const ir::Scene &scene, DiagnosticSink &diag);
+
+    /// Closest surface crossing with tMin < t < tMax.
+    bool intersect(const Ray &ray, double tMin, double tMax, SurfaceInteraction *si,
+                   SpanScratch &scratch) const;
+
+    const ir::Material &material(int index) const { return materials_[index]; }
+    const std::vector<ir::Material> &materials() const { return materials_; }
+    const std::vector<ir::Light> &lights() const { return lights_; }
+    const ir::Camera &camera() const { return camera_; }
+    const ir::Settings &settings() const { return settings_; }
+    const std::vector<std::unique_ptr<Shape>> &objects() const { return objects_; }
+    const Bvh &bvh() const { return bvh_; }
+    const CompileStats &stats() const { return stats_; }
+    /// World bounds of everything renderable.
+    Bounds3 bounds() const;
+
+  private:
+    RenderScene() = default;
+
+    std::vector<std::unique_ptr<Shape>> objects_;
+    Bvh bvh_;
+    std::vector<ir::Material> materials_;
+    std::vector<ir::Light> lights_;
+    ir::Camera camera_;
+    ir::Settings settings_;
+    CompileStats stats_;
+};
+
+}  // namespace rt

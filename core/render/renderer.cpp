@@ -1,0 +1,106 @@
+// SPDX-License-Identifier: MIT
+// Tile scheduling across threads and per-pixel sampling.
+#include "core/render/renderer.h"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+
+#include "core/camera/camera.h"
+#include "core/math/rng.h"
+#include "core/render/whitted.h"
+
+namespace rt {
+
+void validateRenderOptions(const RenderOptions &o) {
+    if (o.width < 1 || o.height < 1 || o.width > kMaxImageSide || o.height > kMaxImageSide)
+        throw std::invalid_argument("image size " + std::to_string(o.width) + "x" +
+                                    std::to_string(o.height) + " is outside 1.." +
+                                    std::to_string(kMaxImageSide));
+    if (o.samplesPerPixel < 1 || o.samplesPerPixel > kMaxSamplesPerPixel)
+        throw std::invalid_argument("samples per pixel must be between 1 and " +
+                                    std::to_string(kMaxSamplesPerPixel));
+    int k = static_cast<int>(std::lround(std::sqrt(o.samplesPerPixel)));
+    if (k * k != o.samplesPerPixel)
+        throw std::invalid_argument("samples per pixel must be a square (1, 4, 9, 16, ...) for "
+                                    "stratified sampling; got " +
+                                    std::to_string(o.samplesPerPixel));
+    if (o.threads < 0) throw std::invalid_argument("thread count must not be negative");
+    if (o.tileSize < 1) throw std::invalid_argument("tile size must be positive");
+}
+
+RenderResult renderImage(const RenderScene &scene, const RenderOptions &opts) {
+    validateRenderOptions(opts);
+    auto start = std::chrono::steady_clock::now();
+    Camera camera(scene.camera(), opts.width, opts.height);
+    WhittedIntegrator integrator(scene, camera.position());
+
+    int tilesX = (opts.width + opts.tileSize - 1) / opts.tileSize;
+    int tilesY = (opts.height + opts.tileSize - 1) / opts.tileSize;
+    int tileCount = tilesX * tilesY;
+    int threads = opts.threads > 0 ? opts.threads
+                                   : std::max(1u, std::thread::hardware_concurrency());
+    threads = std::min(threads, tileCount);
+    int strata = static_cast<int>(std::lround(std::sqrt(opts.samplesPerPixel)));
+    double invSamples = 1.0 / opts.samplesPerPixel;
+
+    RenderResult result;
+    result.image = Image(opts.width, opts.height);
+    result.threads = threads;
+    std::atomic<int> nextTile{0}, doneTiles{0};
+    std::mutex mutex;
+    std::condition_variable finished;
+    std::vector<RayStats> threadStats(threads);
+
+    auto worker = [&](int id) {
+        TraceContext ctx;
+        for (int tile; (tile = nextTile.fetch_add(1)) < tileCount;) {
+            int x0 = (tile % tilesX) * opts.tileSize, y0 = (tile / tilesX) * opts.tileSize;
+            int x1 = std::min(x0 + opts.tileSize, opts.width);
+            int y1 = std::min(y0 + opts.tileSize, opts.height);
+            for (int y = y0; y < y1; ++y)
+                for (int x = x0; x < x1; ++x) {
+                    uint64_t pixel = uint64_t(y) * opts.width + x;
+                    Rgb sum(0);
+                    for (int s = 0; s < opts.samplesPerPixel; ++s) {
+                        double fx = 0.5, fy = 0.5;
+                        if (opts.samplesPerPixel > 1) {
+                            // Jittered stratum s of a strata x strata grid
+                            Rng rng = Rng::forSample(pixel, s, opts.seed);
+                            fx = ((s % strata) + rng.uniform()) / strata;
+                            fy = ((s / strata) + rng.uniform()) / strata;
+                        }
+                        sum += integrator.li(camera.generateRay(x + fx, y + fy), ctx);
+                    }
+                    result.image.set(x, y, sum * invSamples);
+                }
+            doneTiles.fetch_add(1);
+        }
+        ctx.stats.spanOps = ctx.scratch.spanOps;
+        ctx.stats.prunedSubtrees = ctx.scratch.prunedSubtrees;
+        threadStats[id] = ctx.stats;
+        std::lock_guard<std::mutex> lock(mutex);
+        finished.notify_all();
+    };
+
+    std::vector<std::thread> pool;
+    for (int i = 0; i < threads; ++i) pool.emplace_back(worker, i);
+    {
+        std::unique_lock<std::mutex> lock(mutex);
+        while (doneTiles.load() < tileCount) {
+            finished.wait_for(lock, std::chrono::milliseconds(250));
+            if (opts.progress) opts.progress(double(doneTiles.load()) / tileCount);
+        }
+    }
+    for (auto &t : pool) t.join();
+    for (const auto &s : threadStats) result.stats += s;
+    result.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+}  // namespace rt

@@ -1,0 +1,202 @@
+// SPDX-License-Identifier: MIT
+// POV-Ray-compatible Whitted integrator.
+#include "core/render/whitted.h"
+
+#include <cmath>
+
+#include "core/materials/classic_shading.h"
+
+namespace rt {
+
+namespace {
+
+/// Shadow rays stop this fraction of the light distance short of the light, so a light placed
+/// on a surface does not shadow itself (scale-free form of POV-Ray's SHADOW_TOLERANCE).
+constexpr double kShadowEpsilon = 1e-9;
+
+Rgb powRgb(const Rgb &c, double e) {
+    return {std::pow(c.r, e), std::pow(c.g, e), std::pow(c.b, e)};
+}
+
+}  // namespace
+
+WhittedIntegrator::WhittedIntegrator(const RenderScene &scene, const Vec3 &cameraPosition)
+    : scene_(scene) {
+    // POV-Ray's InitRayContainerState: camera rays start inside every solid holding the camera
+    for (const auto &o : scene.objects())
+        if (o->inside(cameraPosition)) cameraStack_.push(o.get());
+}
+
+Rgb WhittedIntegrator::li(const Ray &cameraRay, TraceContext &ctx) const {
+    ++ctx.stats.camera;
+    Rgb c = trace(cameraRay, 0, 1.0, cameraStack_, false, ctx);
+    if (!c.isFinite()) {
+        ++ctx.stats.nonFinite;
+        return Rgb(0);
+    }
+    return c;
+}
+
+Rgb WhittedIntegrator::trace(const Ray &ray, int level, double weight, const InteriorStack &stack,
+                             bool continued, TraceContext &ctx) const {
+    const ir::Settings &s = scene_.settings();
+    if (level >= s.maxTraceLevel || weight < s.adcBailout) return Rgb(0);
+    SurfaceInteraction si;
+    if (!scene_.intersect(ray, 0, kInfinity, &si, ctx.scratch)) return s.background;
+    return shade(ray, si, continued ? level : level + 1, weight, stack, ctx);
+}
+
+double WhittedIntegrator::relativeIor(const Shape *object, const InteriorStack &stack) const {
+    double iorX = interiorOf(object).ior;
+    if (stack.empty()) return iorX;
+    if (stack.contains(object)) {
+        if (stack.size() == 1) return 1 / iorX;
+        return interiorOf(stack.top()).ior / iorX;
+    }
+    return iorX / interiorOf(stack.top()).ior;
+}
+
+Rgb WhittedIntegrator::shade(const Ray &ray, const SurfaceInteraction &si, int level,
+                             double weight, const InteriorStack &stack, TraceContext &ctx) const {
+    const ir::Material &m = scene_.material(si.leaf->material());
+    const ir::Finish &f = m.finish;
+    const ir::Settings &settings = scene_.settings();
+    // Shading normal faces the incoming ray
+    Vec3 N = dot(si.n, ray.d) > 0 ? -si.n : si.n;
+    double cosI = -dot(ray.d, N);
+
+    Rgb colour = localColour(ray, si, N, m, stack, ctx);
+
+    Reflectivity refl = reflectivity(f, cosI, f.fresnel ? relativeIor(si.object, stack) : 1);
+    Rgb filCol = m.color * m.filter + Rgb(m.transmit);
+    if (f.conserveEnergy)
+        for (int i = 0; i < 3; ++i) filCol[i] *= std::min(1.0, 1 - refl.value[i]);
+    double trans = std::min(1.0, std::abs(povGreyscale(filCol)));
+
+    Vec3 reflectDir = normalize(ray.d + N * (2 * cosI));
+    bool tir = false;
+    if (trans > settings.adcBailout) {
+        double w = weight * std::max({std::abs(filCol.r), std::abs(filCol.g), std::abs(filCol.b)});
+        const Shape *x = si.object;
+        // Relative ior and the interior list beyond the surface (POV-Ray ComputeRefraction)
+        InteriorStack next = stack;
+        double eta;
+        if (stack.empty()) {
+            if (!next.push(x)) ++ctx.stats.interiorOverflow;
+            eta = 1 / interiorOf(x).ior;
+        } else if (stack.top() == x) {
+            next.remove(x);
+            eta = interiorOf(x).ior / (next.empty() ? 1.0 : interiorOf(next.top()).ior);
+        } else if (next.remove(x)) {
+            eta = 1;  // leaving the overlap of two solids
+        } else {
+            eta = interiorOf(stack.top()).ior / interiorOf(x).ior;
+            if (!next.push(x)) ++ctx.stats.interiorOverflow;
+        }
+        Rgb transmitted;
+        if (std::abs(eta - 1) < kPovEpsilon) {
+            // Same medium on both sides: continue straight on without using a trace level
+            ++ctx.stats.transmission;
+            transmitted = trace(spawnRay(si, ray.d), level, w, next, true, ctx);
+        } else {
+            // Heckbert's refraction; N faces the ray so n = cos of incidence
+            double n = cosI;
+            double t = 1 + eta * eta * (n * n - 1);
+            if (t < 0) {
+                tir = true;
+                ++ctx.stats.internalReflection;
+                transmitted = trace(spawnRay(si, reflectDir), level, w, stack, false, ctx);
+            } else {
+                ++ctx.stats.refraction;
+                Vec3 dir = ray.d * eta + N * (eta * n - std::sqrt(t));
+                transmitted = trace(spawnRay(si, dir), level, w, next, false, ctx);
+            }
+        }
+        // Light leaving a medium the ray was inside fades with the distance travelled
+        Rgb att(1);
+        if (stack.contains(x)) att = interiorFade(interiorOf(x), si.t, false);
+        colour += tir ? att * transmitted : att * transmitted * filCol;
+    }
+    if (!tir && !refl.value.isBlack()) {
+        ++ctx.stats.reflection;
+        Rgb r = trace(spawnRay(si, reflectDir), level, weight * refl.weightScale, stack, false, ctx);
+        if (f.reflectionExponent != 1) r = powRgb(r, 1 / f.reflectionExponent);
+        colour += refl.value * r;
+    }
+    return colour;
+}
+
+Rgb WhittedIntegrator::localColour(const Ray &ray, const SurfaceInteraction &si, const Vec3 &N,
+                                   const ir::Material &m, const InteriorStack &stack,
+                                   TraceContext &ctx) const {
+    const ir::Finish &f = m.finish;
+    const Rgb &c = m.color;
+    double a = 1 - m.filter - m.transmit;  // opacity
+    Rgb colour = c * a * (scene_.settings().ambientLight * f.ambient + f.emission);
+    if (f.diffuse == 0 && f.phong == 0 && f.specular == 0) return colour;
+
+    for (const ir::Light &light : scene_.lights()) {
+        Vec3 toLight = light.position - si.p;
+        double dist = length(toLight);
+        if (!(dist > 0)) continue;
+        Vec3 L = toLight / dist;
+        // A light behind the surface, as seen from the viewer, does nothing
+        double cosNL = dot(N, L);
+        if (cosNL < kPovEpsilon) continue;
+        Rgb lc = light.color * lightFade(light, dist);
+        if (!light.shadowless) lc *= shadowFilter(si, light.position, stack, ctx);
+        if (!(std::abs(lc.r) > kPovEpsilon || std::abs(lc.g) > kPovEpsilon ||
+              std::abs(lc.b) > kPovEpsilon))
+            continue;
+        if (f.diffuse != 0) {
+            double intensity = f.brilliance != 1 ? std::pow(cosNL, f.brilliance) : cosNL;
+            colour += c * lc * (f.diffuse * a * intensity);
+        }
+        if (light.shadowless) continue;  // fill lights give no highlights
+        Rgb hc = highlightColour(f, lc, c, cosNL);
+        if (f.phong > 0) {
+            Vec3 r = ray.d - N * (2 * dot(ray.d, N));
+            double k = dot(r, L);
+            // POV-Ray skips tiny phong terms of tight highlights
+            if (k > 0 && !(f.phongSize >= 60 && k <= 0.0008))
+                colour += hc * (f.phong * std::pow(k, f.phongSize));
+        }
+        if (f.specular > 0) {
+            Vec3 h = (L - ray.d) * 0.5;
+            double hl = length(h);
+            double k = hl > 0 ? dot(h, N) / hl : 0;
+            if (k > 0) colour += hc * (f.specular * std::pow(k, 1 / f.roughness));
+        }
+    }
+    return colour;
+}
+
+Rgb WhittedIntegrator::shadowFilter(const SurfaceInteraction &si, const Vec3 &lightPos,
+                                    const InteriorStack &stack, TraceContext &ctx) const {
+    Rgb filter(1);
+    InteriorStack inside = stack;
+    Ray ray = spawnRay(si, normalize(lightPos - si.p));
+    double remaining = length(lightPos - ray.o) * (1 - kShadowEpsilon);
+    // March from surface to surface towards the light, filtering at each crossing
+    while (true) {
+        ++ctx.stats.shadow;
+        SurfaceInteraction hit;
+        if (!scene_.intersect(ray, 0, remaining, &hit, ctx.scratch)) return filter;
+        const ir::Material &m = scene_.material(hit.leaf->material());
+        if (hit.object->opaque || !m.isTransparent()) return Rgb(0);
+        filter *= m.color * m.filter + Rgb(m.transmit);
+        if (inside.contains(hit.object)) {
+            filter *= interiorFade(interiorOf(hit.object), hit.t, true);
+            inside.remove(hit.object);
+        } else if (!inside.push(hit.object)) {
+            ++ctx.stats.interiorOverflow;
+        }
+        if (filter.isBlack()) return filter;
+        remaining -= hit.t;
+        ray = spawnRay(hit, ray.d);
+        remaining -= length(ray.o - hit.p);
+        if (!(remaining > 0)) return filter;
+    }
+}
+
+}  // namespace rt

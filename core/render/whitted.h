@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: MIT
+// Whitted-style recursive ray tracer with POV-Ray 3.7's classic shading, shadows through
+// transparent solids, reflection, refraction and total internal reflection, exactly as
+// docs/povray-semantics.md sets them out.
+#pragma once
+
+#include "core/geometry/shape.h"
+#include "core/math/rng.h"
+#include "core/render/interior_stack.h"
+#include "core/render/ray_stats.h"
+#include "core/render/render_scene.h"
+
+namespace rt {
+
+/// Per-thread state of a trace.
+struct TraceContext {
+    RayStats stats;
+    SpanScratch scratch;
+};
+
+class WhittedIntegrator {
+  public:
+    /// `cameraPosition` decides which solids a camera ray starts inside.
+    WhittedIntegrator(const RenderScene &scene, const Vec3 &cameraPosition);
+
+    /// Radiance along a camera ray.
+    Rgb li(const Ray &cameraRay, TraceContext &ctx) const;
+
+  private:
+    /// POV-Ray's TraceRay: `level` is the trace level of the ray's parent hit; rays beyond
+    /// max_trace_level or below adc_bailout weight return black. Continued rays (through a
+    /// surface with no change of ior) do not count a level.
+    Rgb trace(const Ray &ray, int level, double weight, const InteriorStack &stack,
+              bool continued, TraceContext &ctx) const;
+    Rgb shade(const Ray &ray, const SurfaceInteraction &si, int level, double weight,
+              const InteriorStack &stack, TraceContext &ctx) const;
+    /// Ambient, emission and the sum over lights of diffuse, phong and specular.
+    Rgb localColour(const Ray &ray, const SurfaceInteraction &si, const Vec3 &N,
+                    const ir::Material &m, const InteriorStack &stack, TraceContext &ctx) const;
+    /// Filtered light reaching si from a point light (1 = unoccluded), POV-Ray section 1.4.
+    Rgb shadowFilter(const SurfaceInteraction &si, const Vec3 &lightPos,
+                     const InteriorStack &stack, TraceContext &ctx) const;
+    /// n_transmitted / n_incident at a surface of `object`, as POV-Ray's ComputeRelativeIOR.
+    double relativeIor(const Shape *object, const InteriorStack &stack) const;
+    const ir::Interior &interiorOf(const Shape *object) const {
+        return scene_.material(object->interiorMaterial).interior;
+    }
+
+    const RenderScene &scene_;
+    InteriorStack cameraStack_;
+};
+
+}  // namespace rt
