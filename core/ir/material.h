@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <tuple>
 
 #include "core/ir/source_loc.h"
 #include "core/math/rgb.h"
@@ -53,10 +54,20 @@ struct Material {
     Interior interior;
     SourceLoc loc;  ///< where it was first defined (not part of equality)
 
-    bool sameAppearance(const Material &o) const {
-        return color == o.color && filter == o.filter && transmit == o.transmit &&
-               finish == o.finish && interior == o.interior;
+    /// Every field that decides how the material looks, as one tuple: equality dedupes
+    /// materials, its order ranks coincident CSG faces, its hash indexes Scene::materials.
+    auto appearanceKey() const {
+        const Finish &f = finish;
+        const Rgb &rmin = f.reflectionMin, &rmax = f.reflectionMax, &e = f.emission;
+        const Rgb &fc = interior.fadeColor;
+        return std::make_tuple(color.r, color.g, color.b, filter, transmit, f.ambient, f.diffuse,
+                               f.brilliance, f.phong, f.phongSize, f.specular, f.roughness,
+                               f.metallic, rmax.r, rmax.g, rmax.b, rmin.r, rmin.g, rmin.b,
+                               f.reflectionFalloff, f.reflectionExponent, f.fresnel,
+                               f.conserveEnergy, e.r, e.g, e.b, interior.ior,
+                               interior.fadeDistance, interior.fadePower, fc.r, fc.g, fc.b);
     }
+    bool sameAppearance(const Material &o) const { return appearanceKey() == o.appearanceKey(); }
     bool isTransparent() const { return filter > 0 || transmit > 0; }
 };
 

@@ -67,11 +67,32 @@ double Camera::horizontalFov(double aspect) const {
     return degrees(2 * std::atan(std::tan(radians(fov) / 2) * aspect));
 }
 
+namespace {
+
+size_t appearanceHash(const Material &m) {
+    size_t h = 0;
+    // std::hash<double> maps -0 and +0 alike, as == compares them
+    std::apply([&h](auto... v) { ((h = h * 1000003 ^ std::hash<decltype(v)>()(v)), ...); },
+               m.appearanceKey());
+    return h;
+}
+
+}  // namespace
+
 int Scene::addMaterial(const Material &m) {
-    for (size_t i = 0; i < materials.size(); ++i)
-        if (materials[i].sameAppearance(m)) return static_cast<int>(i);
+    if (materialIndex_.size() != materials.size()) {
+        materialIndex_.clear();
+        for (size_t i = 0; i < materials.size(); ++i)
+            materialIndex_.emplace(appearanceHash(materials[i]), static_cast<int>(i));
+    }
+    size_t h = appearanceHash(m);
+    auto [first, last] = materialIndex_.equal_range(h);
+    for (auto it = first; it != last; ++it)
+        if (materials[it->second].sameAppearance(m)) return it->second;
     materials.push_back(m);
-    return static_cast<int>(materials.size()) - 1;
+    int index = static_cast<int>(materials.size()) - 1;
+    materialIndex_.emplace(h, index);
+    return index;
 }
 
 Bounds3 primitiveBounds(const PrimShape &shape) {

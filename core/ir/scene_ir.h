@@ -10,6 +10,7 @@
 
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "core/ir/camera.h"
@@ -44,7 +45,12 @@ struct Scene {
     ImportStats stats;
 
     /// Returns the index of a material with the same appearance, adding it if new.
+    /// Constant time on average: materials are indexed by a hash of their appearance.
     int addMaterial(const Material &m);
+
+  private:
+    /// Hash of appearance -> index into materials; rebuilt if materials was edited directly.
+    std::unordered_multimap<size_t, int> materialIndex_;
 };
 
 /// World-space bounds of a subtree placed by `parentFromNode` (CSG-aware: an intersection is

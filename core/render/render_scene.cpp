@@ -4,24 +4,12 @@
 
 #include <algorithm>
 #include <numeric>
-#include <tuple>
 
 #include "core/csg/csg_shape.h"
 
 namespace rt {
 
 namespace {
-
-/// Value of a material as a tuple, so coincident faces pick a material by what it is, not by
-/// the order in which the file mentions it.
-auto materialKey(const ir::Material &m) {
-    const ir::Finish &f = m.finish;
-    return std::make_tuple(m.color.r, m.color.g, m.color.b, m.filter, m.transmit, f.ambient,
-                           f.diffuse, f.brilliance, f.phong, f.phongSize, f.specular, f.roughness,
-                           f.metallic, f.reflectionMax.r, f.reflectionMax.g, f.reflectionMax.b,
-                           f.reflectionMin.r, f.reflectionMin.g, f.reflectionMin.b,
-                           m.interior.ior);
-}
 
 class Compiler {
   public:
@@ -31,7 +19,9 @@ class Compiler {
         std::vector<int> order(scene.materials.size());
         std::iota(order.begin(), order.end(), 0);
         std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-            return materialKey(scene.materials[a]) < materialKey(scene.materials[b]);
+            // By value, so coincident faces pick a material by what it is, not by the order
+            // in which the file mentions it
+            return scene.materials[a].appearanceKey() < scene.materials[b].appearanceKey();
         });
         ranks_.resize(order.size());
         for (size_t i = 0; i < order.size(); ++i) ranks_[order[i]] = static_cast<int>(i);

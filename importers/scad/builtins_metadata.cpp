@@ -1,0 +1,364 @@
+// SPDX-License-Identifier: MIT
+// scadray's metadata modules (camera, point_light, material, background, render_settings),
+// the $vp* viewport camera, and per-primitive material resolution.
+#include <cmath>
+#include <cstring>
+#include <functional>
+
+#include "core/ir/scene_defaults.h"
+#include "importers/scad/colors.h"
+#include "importers/scad/evaluator.h"
+
+namespace rt::scad {
+
+namespace {
+
+constexpr const char *kMetadataNames[] = {"camera", "point_light", "material", "background",
+                                          "render_settings"};
+
+/// Sky vectors closer than this (relative sine) to the view direction cannot orient a camera.
+constexpr double kParallelSine = 1e-9;
+
+/// Reads validated arguments of one metadata call, warning and keeping the default when an
+/// argument has the wrong type, is not finite or is out of range.
+class MetaArgs {
+  public:
+    MetaArgs(Evaluator &ev, const BoundArgs &a, const char *module)
+        : ev_(ev), a_(a), module_(module) {}
+
+    bool given(size_t i) const { return a_.given[i] && !a_[i].isUndef(); }
+
+    double number(size_t i, double dflt, const std::function<bool(double)> &valid = nullptr,
+                  const char *requirement = nullptr) {
+        if (!given(i)) return dflt;
+        const Value &v = a_[i];
+        if (!v.isNumber() || !std::isfinite(v.toNumber())) return bad(i, dflt, "a finite number");
+        if (valid && !valid(v.toNumber())) return bad(i, dflt, requirement);
+        return v.toNumber();
+    }
+
+    bool boolean(size_t i, bool dflt) {
+        if (!given(i)) return dflt;
+        if (!a_[i].isBool()) return bad(i, dflt, "true or false");
+        return a_[i].boolValue();
+    }
+
+    Vec3 vec3(size_t i, Vec3 dflt) {
+        if (!given(i)) return dflt;
+        double x, y, z;
+        if (!a_[i].getVec3(x, y, z) || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
+            return bad(i, dflt, "a vector of 3 finite numbers");
+        return Vec3(x, y, z);
+    }
+
+    /// Anything color() accepts; `alpha` receives the fourth component.
+    Rgb color(size_t i, Rgb dflt, double *alpha = nullptr) {
+        if (!given(i)) return dflt;
+        auto c = colorFromValue(a_[i]);
+        if (!c || !std::isfinite(c->r) || !std::isfinite(c->g) || !std::isfinite(c->b) ||
+            !std::isfinite(c->a) || c->r < 0 || c->g < 0 || c->b < 0)
+            return bad(i, dflt, "a colour name, \"#rrggbb\" or [r, g, b] with non-negative values");
+        if (alpha) *alpha = c->a;
+        return Rgb(c->r, c->g, c->b);
+    }
+
+    /// A number (all channels) or [r, g, b].
+    Rgb numberOrRgb(size_t i, Rgb dflt) {
+        if (!given(i)) return dflt;
+        const Value &v = a_[i];
+        if (v.isNumber() && std::isfinite(v.toNumber()) && v.toNumber() >= 0)
+            return Rgb(v.toNumber());
+        double x, y, z;
+        if (v.getVec3(x, y, z) && std::isfinite(x) && std::isfinite(y) && std::isfinite(z) &&
+            x >= 0 && y >= 0 && z >= 0)
+            return Rgb(x, y, z);
+        return bad(i, dflt, "a non-negative number or [r, g, b]");
+    }
+
+    template <typename T>
+    T bad(size_t i, T dflt, const char *requirement) {
+        ev_.warn(a_.loc(i), std::string(module_) + "(): " + std::string(a_.names[i]) + " = " +
+                                a_[i].toEchoString() + " is not " + requirement +
+                                "; using the default");
+        return dflt;
+    }
+
+  private:
+    Evaluator &ev_;
+    const BoundArgs &a_;
+    const char *module_;
+};
+
+bool nonNegative(double x) { return x >= 0; }
+bool positive(double x) { return x > 0; }
+bool unit(double x) { return x >= 0 && x <= 1; }
+
+}  // namespace
+
+bool Evaluator::isMetadataModule(Symbol name) {
+    for (const char *n : kMetadataNames)
+        if (name.str() == n) return true;
+    return false;
+}
+
+ir::NodePtr Evaluator::instantiateMetadata(Symbol name, const ModuleInstantiation &inst,
+                                           const FramePtr &f) {
+    const std::string &n = name.str();
+    if (n == "material") return metaMaterial(inst, f);
+    if (!inst.children.empty()) warn(inst.loc, n + "() takes no children; they are ignored");
+    // Like the library's empty modules, these calls produce an empty group
+    ir::NodePtr node = newNode(ir::NodeKind::Group, inst.loc);
+    node->label = n;
+    if (backgroundDepth_ > 0) return node;  // left out of the render with its `%` subtree
+    if (n == "camera")
+        metaCamera(inst, f);
+    else if (n == "point_light")
+        metaPointLight(inst, f);
+    else if (n == "background")
+        metaBackground(inst, f);
+    else
+        metaRenderSettings(inst, f);
+    return node;
+}
+
+ir::NodePtr Evaluator::metaCamera(const ModuleInstantiation &inst, const FramePtr &f) {
+    BoundArgs a = bindBuiltin(inst, {"location", "look_at", "sky", "fov"}, f, nullptr);
+    MetaArgs m(*this, a, "camera");
+    ir::Camera cam;
+    Vec3 location = m.vec3(0, cam.location);
+    Vec3 lookAt = m.vec3(1, cam.lookAt);
+    Vec3 sky = m.vec3(2, cam.sky);
+    cam.fov = m.number(
+        3, cam.fov, [](double x) { return x > 0 && x < 180; },
+        "between 0 and 180 degrees (exclusive)");
+    if (scene_.camera) {
+        warn(inst.loc, "camera() already given at " + scene_.camera->loc.toString() +
+                           "; this one is ignored");
+        return nullptr;
+    }
+    // The camera is placed by the transforms around the call
+    cam.location = worldFromLocal_.transformPoint(location);
+    cam.lookAt = worldFromLocal_.transformPoint(lookAt);
+    cam.sky = worldFromLocal_.transformVector(sky);
+    Vec3 view = cam.lookAt - cam.location;
+    if (!(lengthSquared(view) > 0))
+        throw EvalError(inst.loc, "camera(): location and look_at are the same point " +
+                                      cam.location.toString());
+    if (!(length(cross(view, cam.sky)) > kParallelSine * length(view) * length(cam.sky)))
+        throw EvalError(inst.loc, "camera(): sky " + cam.sky.toString() +
+                                      " is parallel to the view direction " + view.toString());
+    cam.fovAxis = ir::FovAxis::Horizontal;
+    cam.source = ir::CameraSource::Explicit;
+    cam.loc = inst.loc;
+    scene_.camera = cam;
+    return nullptr;
+}
+
+ir::NodePtr Evaluator::metaPointLight(const ModuleInstantiation &inst, const FramePtr &f) {
+    BoundArgs a = bindBuiltin(
+        inst, {"position", "color", "fade_distance", "fade_power", "shadowless"}, f, nullptr);
+    MetaArgs m(*this, a, "point_light");
+    ir::Light light;
+    Vec3 position = m.vec3(0, Vec3(10, -10, 10));
+    light.color = m.color(1, light.color);
+    light.fadeDistance = m.number(2, light.fadeDistance, nonNegative, "a number >= 0");
+    light.fadePower = m.number(3, light.fadePower, nonNegative, "a number >= 0");
+    light.shadowless = m.boolean(4, light.shadowless);
+    light.position = worldFromLocal_.transformPoint(position);
+    light.loc = inst.loc;
+    scene_.lights.push_back(light);
+    return nullptr;
+}
+
+ir::NodePtr Evaluator::metaBackground(const ModuleInstantiation &inst, const FramePtr &f) {
+    BoundArgs a = bindBuiltin(inst, {"color"}, f, nullptr);
+    MetaArgs m(*this, a, "background");
+    Rgb c = m.color(0, ir::Settings().background);
+    if (backgroundSet_) {
+        warn(inst.loc, "background() already given; this one is ignored");
+        return nullptr;
+    }
+    backgroundSet_ = true;
+    scene_.settings.background = c;
+    return nullptr;
+}
+
+ir::NodePtr Evaluator::metaRenderSettings(const ModuleInstantiation &inst, const FramePtr &f) {
+    BoundArgs a =
+        bindBuiltin(inst, {"max_trace_level", "adc_bailout", "ambient_light"}, f, nullptr);
+    MetaArgs m(*this, a, "render_settings");
+    ir::Settings s;
+    double level = m.number(
+        0, s.maxTraceLevel, [](double x) { return x >= 1 && x <= 256 && x == std::floor(x); },
+        "a whole number from 1 to 256");
+    double bailout = m.number(1, s.adcBailout, unit, "between 0 and 1");
+    Rgb ambient = m.color(2, s.ambientLight);
+    if (renderSettingsSet_) {
+        warn(inst.loc, "render_settings() already given; this one is ignored");
+        return nullptr;
+    }
+    renderSettingsSet_ = true;
+    scene_.settings.maxTraceLevel = static_cast<int>(level);
+    scene_.settings.adcBailout = bailout;
+    scene_.settings.ambientLight = ambient;
+    return nullptr;
+}
+
+ir::NodePtr Evaluator::metaMaterial(const ModuleInstantiation &inst, const FramePtr &f) {
+    FramePtr dollars = makeFrame(nullptr);
+    BoundArgs a = bindBuiltin(inst,
+                              {"color",
+                               "filter",
+                               "transmit",
+                               "ambient",
+                               "diffuse",
+                               "brilliance",
+                               "phong",
+                               "phong_size",
+                               "specular",
+                               "roughness",
+                               "metallic",
+                               "reflection",
+                               "reflection_falloff",
+                               "reflection_exponent",
+                               "fresnel",
+                               "conserve_energy",
+                               "emission",
+                               "ior",
+                               "fade_distance",
+                               "fade_power",
+                               "fade_color"},
+                              f, dollars.get());
+    MetaArgs m(*this, a, "material");
+    MaterialSpec spec;
+    spec.loc = inst.loc;
+    ir::Material &mat = spec.material;
+    ir::Finish &fin = mat.finish;
+    ir::Interior &in = mat.interior;
+    if (m.given(0)) {
+        double alpha = 1;
+        Rgb c = m.color(0, Rgb(-1), &alpha);
+        if (c.r >= 0) {
+            spec.hasColor = true;
+            mat.color = c;
+            spec.colorAlpha = alpha;
+        }
+    }
+    mat.filter = m.number(1, mat.filter, unit, "between 0 and 1");
+    mat.transmit = m.number(2, mat.transmit, unit, "between 0 and 1");
+    spec.hasTransmit = m.given(2);
+    fin.ambient = m.number(3, fin.ambient, nonNegative, "a number >= 0");
+    fin.diffuse = m.number(4, fin.diffuse, nonNegative, "a number >= 0");
+    fin.brilliance = m.number(5, fin.brilliance, nonNegative, "a number >= 0");
+    fin.phong = m.number(6, fin.phong, nonNegative, "a number >= 0");
+    fin.phongSize = m.number(7, fin.phongSize, positive, "a number > 0");
+    fin.specular = m.number(8, fin.specular, nonNegative, "a number >= 0");
+    fin.roughness = m.number(9, fin.roughness, positive, "a number > 0");
+    fin.metallic = m.number(10, fin.metallic, unit, "between 0 and 1");
+    if (m.given(11)) {
+        // reflection = r (min = max) or [min, max]
+        const Value &r = a[11];
+        double lo, hi;
+        if (r.isNumber() && std::isfinite(r.toNumber()) && unit(r.toNumber())) {
+            fin.reflectionMin = fin.reflectionMax = Rgb(r.toNumber());
+        } else if (r.isVector() && r.toVector().size() == 2 &&
+                   r.toVector()[0].getFiniteNumber(lo) && r.toVector()[1].getFiniteNumber(hi) &&
+                   unit(lo) && unit(hi)) {
+            fin.reflectionMin = Rgb(lo);
+            fin.reflectionMax = Rgb(hi);
+        } else {
+            m.bad(11, 0, "a number or [min, max] between 0 and 1");
+        }
+    }
+    fin.reflectionFalloff = m.number(12, fin.reflectionFalloff, positive, "a number > 0");
+    fin.reflectionExponent = m.number(13, fin.reflectionExponent, positive, "a number > 0");
+    fin.fresnel = m.boolean(14, fin.fresnel);
+    fin.conserveEnergy = m.boolean(15, fin.conserveEnergy);
+    fin.emission = m.numberOrRgb(16, fin.emission);
+    in.ior = m.number(17, in.ior, positive, "a number > 0");
+    in.fadeDistance = m.number(18, in.fadeDistance, nonNegative, "a number >= 0");
+    in.fadePower = m.number(19, in.fadePower, nonNegative, "a number >= 0");
+    in.fadeColor = m.color(20, in.fadeColor);
+
+    FrameGuard g(dyn_, dollars.get());
+    materials_.push_back(spec);
+    currentMaterial_ = -1;
+    ir::NodePtr node = newNode(ir::NodeKind::Group, inst.loc);
+    node->label = "material";
+    instantiateChildren(inst, f, node->children);
+    materials_.pop_back();
+    currentMaterial_ = -1;
+    return node;
+}
+
+int Evaluator::resolveMaterial(const SourceLoc &primLoc) {
+    // Finish, interior, filter and transmit from the innermost material(); pigment from the
+    // outermost valid color(), else the innermost material() with a colour, else OpenSCAD's
+    // default face colour.
+    if (currentMaterial_ >= 0) return currentMaterial_;
+    const MaterialSpec *inner = materials_.empty() ? nullptr : &materials_.back();
+    ir::Material m = inner ? inner->material : ir::Material();
+    m.color = ir::kOpenScadDefaultColor;
+    m.loc = inner ? inner->loc : primLoc;
+    if (color_) {
+        m.color = Rgb(color_->r, color_->g, color_->b);
+        if (color_->a < 1) m.transmit = std::clamp(1 - color_->a, 0.0, 1.0);
+        if (!inner) m.loc = color_->loc;
+    } else {
+        for (auto it = materials_.rbegin(); it != materials_.rend(); ++it) {
+            if (!it->hasColor) continue;
+            m.color = it->material.color;
+            if (it->colorAlpha < 1 && !inner->hasTransmit)
+                m.transmit = std::clamp(1 - it->colorAlpha, 0.0, 1.0);
+            break;
+        }
+    }
+    return currentMaterial_ = scene_.addMaterial(m);
+}
+
+void Evaluator::cameraFromViewportVariables(const SourceFile &main) {
+    // Top-level $vpt/$vpr/$vpd/$vpf of the main file move OpenSCAD's camera; honour them
+    const Assignment *first = nullptr;
+    for (const auto &a : main.top.assignments) {
+        const std::string &n = a.name.str();
+        if (n == "$vpt" || n == "$vpr" || n == "$vpd" || n == "$vpf") {
+            first = &a;
+            break;
+        }
+    }
+    if (!first) return;
+    const Frame &top = *mainFile_.frame;
+    auto vec = [&](const char *name, Vec3 dflt) {
+        const Value *v = top.findLocal(Symbol::intern(name));
+        double x, y, z;
+        if (!v) return dflt;
+        if (v->getVec3(x, y, z) && std::isfinite(x) && std::isfinite(y) && std::isfinite(z))
+            return Vec3(x, y, z);
+        warn(first->loc, std::string(name) + " = " + v->toEchoString() +
+                             " is not a vector of 3 finite numbers; using the default");
+        return dflt;
+    };
+    auto num = [&](const char *name, double dflt, bool positiveOnly) {
+        const Value *v = top.findLocal(Symbol::intern(name));
+        if (!v) return dflt;
+        if (v->isNumber() && std::isfinite(v->toNumber()) && (!positiveOnly || v->toNumber() > 0))
+            return v->toNumber();
+        warn(first->loc, std::string(name) + " = " + v->toEchoString() +
+                             " is not a usable number; using the default");
+        return dflt;
+    };
+    Vec3 vpt = vec("$vpt", ir::kOpenScadBuiltinVpt);
+    Vec3 vpr = vec("$vpr", ir::kOpenScadBuiltinVpr);
+    double vpd = num("$vpd", ir::kOpenScadBuiltinVpd, true);
+    double vpf = num("$vpf", ir::kOpenScadDefaultFov, true);
+    if (!(vpf < 180)) {
+        warn(first->loc, "$vpf must be below 180 degrees; using the default");
+        vpf = ir::kOpenScadDefaultFov;
+    }
+    ir::Camera cam = ir::cameraFromViewport(vpt, vpr, vpd, vpf);
+    cam.source = ir::CameraSource::ViewportVariables;
+    cam.loc = first->loc;
+    scene_.camera = cam;
+}
+
+}  // namespace rt::scad

@@ -1,0 +1,1029 @@
+// SPDX-License-Identifier: MIT
+// Expression evaluation, function calls (with iterative tail calls), scopes, module
+// instantiation and the control modules, following OpenSCAD 2021.01's contexts.
+#include "importers/scad/evaluator.h"
+
+#include <pthread.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "importers/scad/utf8.h"
+
+namespace rt::scad {
+
+namespace {
+
+/// Module-level `for` skips ranges this long (control.cc for_eval).
+constexpr uint64_t kMaxModuleForRange = 10000;
+/// List-comprehension `for`/`each` and C-style loops stop here (expr.cc LcFor/LcForC).
+constexpr uint64_t kMaxComprehensionRange = 1000000;
+
+constexpr double kPiValue = 3.14159265358979323846;
+
+Symbol sym(const char *s) { return Symbol::intern(s); }
+
+bool isScadrayLibrary(const SourceLoc &loc) {
+    return loc.file && std::filesystem::path(*loc.file).filename() == "scadray.scad";
+}
+
+}  // namespace
+
+Evaluator::Evaluator(DiagnosticSink &diag, EvalLimits limits) : diag_(diag), limits_(limits) {}
+
+Evaluator::~Evaluator() {
+    // Every cycle runs through a closure's frame up its parent chain: clearing the variables
+    // of those frames frees them.
+    for (const auto &weak : capturedFrames_)
+        if (FramePtr f = weak.lock())
+            for (Frame *p = f.get(); p; p = p->parent.get()) p->clear();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Budgets
+
+void Evaluator::checkStack(const SourceLoc &loc) {
+    char here;
+    if (stackLow_ && &here < stackLow_)
+        throw EvalError(loc, "recursion too deep: the evaluation stack is exhausted");
+}
+
+void Evaluator::step(const SourceLoc &loc) {
+    if (++steps_ > limits_.maxSteps)
+        throw EvalError(loc, "evaluation too long: more than " + std::to_string(limits_.maxSteps) +
+                                 " steps (calls, loop iterations and module instances); "
+                                 "runaway loop or recursion?");
+}
+
+void Evaluator::checkElementBudget(size_t extra, const SourceLoc &loc) {
+    if (liveVectorElements() + static_cast<int64_t>(extra) > limits_.maxLiveElements)
+        throw EvalError(loc, "too many elements: vectors would hold more than " +
+                                 std::to_string(limits_.maxLiveElements) + " values");
+}
+
+Value Evaluator::makeString(std::string s, const SourceLoc &loc) {
+    if (s.size() > limits_.maxStringLength)
+        throw EvalError(loc, "string too long: more than " +
+                                 std::to_string(limits_.maxStringLength) + " bytes");
+    if (liveStringBytes() + static_cast<int64_t>(s.size()) > limits_.maxLiveStringBytes)
+        throw EvalError(loc, "too much string data: strings would hold more than " +
+                                 std::to_string(limits_.maxLiveStringBytes) + " bytes");
+    return Value::string(std::move(s));
+}
+
+ir::NodePtr Evaluator::newNode(ir::NodeKind kind, const SourceLoc &loc) {
+    if (++nodes_ > limits_.maxNodes)
+        throw EvalError(loc,
+                        "too many geometry nodes: more than " + std::to_string(limits_.maxNodes));
+    return ir::Node::makeGroup(kind, loc);
+}
+
+ir::NodePtr Evaluator::groupOf(ir::NodeKind kind, const SourceLoc &loc,
+                               std::vector<ir::NodePtr> children) {
+    ir::NodePtr n = newNode(kind, loc);
+    n->children = std::move(children);
+    return n;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Top level
+
+ir::Scene Evaluator::evaluate(const SourceFile &main, SourceLoader &loader) {
+    // The lowest stack address evaluation may reach before failing with a located error
+    pthread_attr_t attr;
+    if (pthread_getattr_np(pthread_self(), &attr) == 0) {
+        void *addr = nullptr;
+        size_t size = 0;
+        if (pthread_attr_getstack(&attr, &addr, &size) == 0 && size > 2 * limits_.stackReserveBytes)
+            stackLow_ = static_cast<const char *>(addr) + limits_.stackReserveBytes;
+        pthread_attr_destroy(&attr);
+    }
+
+    // Builtin constants and special variables (builtin.cc); $preview is false when rendering
+    builtinFrame_ = makeFrame(nullptr);
+    builtinFrame_->set(sym("PI"), Value::number(kPiValue));
+    builtinFrame_->set(sym("$fn"), Value::number(0));
+    builtinFrame_->set(sym("$fa"), Value::number(12));
+    builtinFrame_->set(sym("$fs"), Value::number(2));
+    builtinFrame_->set(sym("$t"), Value::number(0));
+    builtinFrame_->set(sym("$preview"), Value::boolean(false));
+    builtinFrame_->set(sym("$vpt"),
+                       Value::vector({Value::number(0), Value::number(0), Value::number(0)}));
+    builtinFrame_->set(sym("$vpr"),
+                       Value::vector({Value::number(0), Value::number(0), Value::number(0)}));
+    builtinFrame_->set(sym("$vpd"), Value::number(500));
+    builtinFrame_->set(sym("$vpf"), Value::number(22.5));
+    FrameGuard builtinGuard(dyn_, builtinFrame_.get());
+
+    // Files and their `use` lists; a later `use` wins, so the newest is searched first
+    for (const auto &[path, file] : loader.usedFiles()) libraries_[file.get()].src = file.get();
+    auto linkUses = [&](LoadedFile &lf) {
+        for (auto it = lf.src->uses.rbegin(); it != lf.src->uses.rend(); ++it) {
+            auto found = loader.usedFiles().find(it->path);
+            if (found != loader.usedFiles().end())
+                lf.uses.push_back(&libraries_[found->second.get()]);
+        }
+    };
+    for (auto &[src, lf] : libraries_) linkUses(lf);
+    mainFile_.src = &main;
+    linkUses(mainFile_);
+
+    FramePtr top = makeFrame(builtinFrame_);
+    top->defs = &main.top;
+    top->file = &mainFile_;
+    mainFile_.frame = top;
+    FrameGuard topGuard(dyn_, top.get());
+
+    applyAssignments(main.top.assignments, top);
+    std::vector<ir::NodePtr> nodes;
+    instantiateScope(main.top, top, nodes);
+
+    auto mainName = std::make_shared<const std::string>(main.path);
+    scene_.root = newNode(ir::NodeKind::Group, SourceLoc(mainName, 1, 1));
+    if (rootNode_)
+        scene_.root->children.push_back(std::move(rootNode_));
+    else
+        scene_.root->children = std::move(nodes);
+
+    if (!scene_.camera) cameraFromViewportVariables(main);
+    return std::move(scene_);
+}
+
+FramePtr Evaluator::libraryFrame(LoadedFile &lib) {
+    if (lib.frame) return lib.frame;
+    // A used library's top-level variables, evaluated once on first use; its geometry is not
+    // instantiated (FileContext::initializeModule).
+    lib.frame = makeFrame(builtinFrame_);
+    lib.frame->defs = &lib.src->top;
+    lib.frame->file = &lib;
+    FrameGuard g(dyn_, lib.frame.get());
+    applyAssignments(lib.src->top.assignments, lib.frame);
+    return lib.frame;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Expressions
+
+Value Evaluator::lookupVariable(Symbol name, const Frame *f, const SourceLoc &loc, bool silent) {
+    if (name.isDollar()) {
+        if (const Value *v = dyn_.lookup(name)) return *v;
+    } else {
+        for (const Frame *p = f; p; p = p->parent.get())
+            if (const Value *v = p->findLocal(name)) return *v;
+    }
+    if (!silent) warn(loc, "Ignoring unknown variable '" + name.str() + "'");
+    return Value();
+}
+
+Value Evaluator::eval(const Expr &e, const FramePtr &f) {
+    switch (e.kind) {
+        case ExprKind::Literal: return static_cast<const LiteralExpr &>(e).value;
+        case ExprKind::Identifier:
+            return lookupVariable(static_cast<const IdentifierExpr &>(e).name, f.get(), e.loc);
+        case ExprKind::Range: return evalRange(static_cast<const RangeExpr &>(e), f);
+        case ExprKind::Vector: {
+            const auto &v = static_cast<const VectorExpr &>(e);
+            if (v.constant) return *v.constant;
+            return evalVector(v, f);
+        }
+        case ExprKind::Unary: {
+            const auto &u = static_cast<const UnaryExpr &>(e);
+            Value v = eval(*u.operand, f);
+            if (u.op == UnaryOp::Not) return Value::boolean(!v.toBool());
+            std::string w;
+            Value r = negate(v, w);
+            if (!w.empty()) warn(e.loc, w);
+            return r;
+        }
+        case ExprKind::Binary: {
+            const auto &b = static_cast<const BinaryExpr &>(e);
+            Value l = eval(*b.lhs, f);
+            Value r = eval(*b.rhs, f);
+            std::string w;
+            Value out = applyBinary(b.op, l, r, w);
+            if (!w.empty()) warn(e.loc, w);
+            return out;
+        }
+        case ExprKind::And: {
+            const auto &b = static_cast<const BinaryExpr &>(e);
+            return Value::boolean(eval(*b.lhs, f).toBool() && eval(*b.rhs, f).toBool());
+        }
+        case ExprKind::Or: {
+            const auto &b = static_cast<const BinaryExpr &>(e);
+            return Value::boolean(eval(*b.lhs, f).toBool() || eval(*b.rhs, f).toBool());
+        }
+        case ExprKind::Equal:
+        case ExprKind::NotEqual: {
+            const auto &b = static_cast<const BinaryExpr &>(e);
+            bool eq = eval(*b.lhs, f) == eval(*b.rhs, f);
+            return Value::boolean(e.kind == ExprKind::Equal ? eq : !eq);
+        }
+        case ExprKind::Ternary: {
+            const auto &t = static_cast<const TernaryExpr &>(e);
+            return eval(*t.cond, f).toBool() ? eval(*t.thenExpr, f) : eval(*t.elseExpr, f);
+        }
+        case ExprKind::Call: return evalCall(static_cast<const CallExpr &>(e), f);
+        case ExprKind::Index: return evalIndex(static_cast<const IndexExpr &>(e), f);
+        case ExprKind::Member: return evalMember(static_cast<const MemberExpr &>(e), f);
+        case ExprKind::Let:
+        case ExprKind::Assert:
+        case ExprKind::Echo: return evalPrefix(static_cast<const PrefixExpr &>(e), f);
+        case ExprKind::FunctionLiteral: {
+            auto fv = std::make_shared<FunctionValue>();
+            fv->def = &static_cast<const FunctionLiteralExpr &>(e);
+            fv->closure = f;
+            if (capturedFrames_.empty() || capturedFrames_.back().lock() != f)
+                capturedFrames_.push_back(f);
+            return Value::function(std::move(fv));
+        }
+        default: {
+            // A comprehension element outside a vector: evaluate it as a one-level list
+            std::vector<Value> out;
+            evalElement(e, f, out);
+            return Value::vector(std::move(out));
+        }
+    }
+}
+
+Value Evaluator::evalRange(const RangeExpr &r, const FramePtr &f) {
+    Value b = eval(*r.begin, f);
+    Value s = r.step ? eval(*r.step, f) : Value::number(1);
+    Value e = eval(*r.end, f);
+    if (!b.isNumber() || !s.isNumber() || !e.isNumber()) return Value();
+    double begin = b.toNumber(), step = s.toNumber(), end = e.toNumber();
+    if (!r.step && end < begin) {
+        warn(r.loc,
+             "DEPRECATED: Using ranges of the form [begin:end] with begin value greater "
+             "than the end value is deprecated");
+        std::swap(begin, end);
+    } else if (r.step) {
+        if (step < 0 && begin < end)
+            warn(r.loc, "begin is smaller than the end, but step is negative");
+        if (step > 0 && begin > end)
+            warn(r.loc, "begin is greater than the end, but step is positive");
+    }
+    return Value::range(begin, step, end);
+}
+
+Value Evaluator::evalVector(const VectorExpr &v, const FramePtr &f) {
+    std::vector<Value> out;
+    out.reserve(v.elements.size());
+    for (const auto &e : v.elements) evalElement(*e, f, out);
+    checkElementBudget(out.size(), v.loc);
+    return Value::vector(std::move(out));
+}
+
+void Evaluator::evalElement(const Expr &e, const FramePtr &f, std::vector<Value> &out) {
+    auto push = [&](Value v) {
+        if ((out.size() & 1023) == 1023) checkElementBudget(out.size(), e.loc);
+        out.push_back(std::move(v));
+    };
+    switch (e.kind) {
+        case ExprKind::LcFor: {
+            const auto &lc = static_cast<const LcForExpr &>(e);
+            // One frame per loop variable, reused across iterations as OpenSCAD's LcFor does
+            // (closures made in the body see the variable's last value).
+            auto loop = [&](auto &self, size_t var, const FramePtr &frame) -> void {
+                if (var == lc.vars.size()) {
+                    evalElement(*lc.body, frame, out);
+                    return;
+                }
+                const Argument &a = lc.vars[var];
+                Value seq = eval(*a.expr, frame);
+                FramePtr c = makeFrame(frame);
+                FrameGuard g(dyn_, c.get());
+                auto iterate = [&](Value x) {
+                    step(e.loc);
+                    c->set(a.name, std::move(x));
+                    self(self, var + 1, c);
+                };
+                if (seq.isRange()) {
+                    uint64_t n = seq.toRange().numValues();
+                    if (n >= kMaxComprehensionRange) {
+                        warn(a.loc, "Bad range parameter in for statement: too many elements (" +
+                                        std::to_string(n) + ")");
+                        return;
+                    }
+                    RangeValue r = seq.toRange();
+                    for (uint64_t i = 0; i < n; ++i) iterate(Value::number(r.at(i)));
+                } else if (seq.isVector()) {
+                    Value keep = seq;
+                    for (const auto &x : keep.toVector()) iterate(x);
+                } else if (seq.isString()) {
+                    for (auto &ch : utf8Chars(seq.toStr())) iterate(Value::string(std::move(ch)));
+                } else if (!seq.isUndef()) {
+                    iterate(seq);
+                }
+            };
+            if (!lc.vars.empty()) loop(loop, 0, f);
+            return;
+        }
+        case ExprKind::LcForC: {
+            const auto &lc = static_cast<const LcForCExpr &>(e);
+            FramePtr c = makeFrame(f);
+            FrameGuard g(dyn_, c.get());
+            bindLet(lc.init, c);
+            uint64_t count = 0;
+            while (eval(*lc.cond, c).toBool()) {
+                evalElement(*lc.body, c, out);
+                if (++count > kMaxComprehensionRange)
+                    throw EvalError(e.loc, "For loop counter exceeded limit");
+                step(e.loc);
+                // The update binds sequentially in a scratch frame, then replaces the variables
+                FramePtr tmp = makeFrame(c);
+                {
+                    FrameGuard tg(dyn_, tmp.get());
+                    bindLet(lc.update, tmp);
+                }
+                for (const auto &[n, v] : tmp->vars()) c->set(n, v);
+            }
+            return;
+        }
+        case ExprKind::LcIf: {
+            const auto &lc = static_cast<const LcIfExpr &>(e);
+            if (eval(*lc.cond, f).toBool())
+                evalElement(*lc.thenExpr, f, out);
+            else if (lc.elseExpr)
+                evalElement(*lc.elseExpr, f, out);
+            return;
+        }
+        case ExprKind::LcLet: {
+            const auto &lc = static_cast<const LcLetExpr &>(e);
+            FramePtr c = makeFrame(f);
+            FrameGuard g(dyn_, c.get());
+            bindLet(lc.args, c);
+            evalElement(*lc.body, c, out);
+            return;
+        }
+        case ExprKind::LcEach: {
+            const auto &lc = static_cast<const LcEachExpr &>(e);
+            std::vector<Value> items;
+            if (lc.body->isListComprehension())
+                evalElement(*lc.body, f, items);
+            else
+                items.push_back(eval(*lc.body, f));
+            for (auto &v : items) {
+                if (v.isVector()) {
+                    for (const auto &x : v.toVector()) push(x);
+                } else if (v.isRange()) {
+                    uint64_t n = v.toRange().numValues();
+                    if (n >= kMaxComprehensionRange) {
+                        warn(e.loc, "Bad range parameter in for statement: too many elements (" +
+                                        std::to_string(n) + ")");
+                        continue;
+                    }
+                    for (uint64_t i = 0; i < n; ++i) push(Value::number(v.toRange().at(i)));
+                } else if (v.isString()) {
+                    for (auto &ch : utf8Chars(v.toStr())) push(Value::string(std::move(ch)));
+                } else if (!v.isUndef()) {
+                    push(std::move(v));
+                }
+            }
+            return;
+        }
+        default: push(eval(e, f)); return;
+    }
+}
+
+Value Evaluator::evalIndex(const IndexExpr &e, const FramePtr &f) {
+    Value obj = eval(*e.object, f);
+    Value idx = eval(*e.index, f);
+    if (!idx.isNumber()) return Value();
+    double d = idx.toNumber();
+    if (!(d >= 0)) return Value();
+    double t = std::trunc(d);
+    if (obj.isVector()) {
+        const auto &v = obj.toVector();
+        return t < static_cast<double>(v.size()) ? v[static_cast<size_t>(t)] : Value();
+    }
+    if (obj.isString()) {
+        auto chars = utf8Chars(obj.toStr());
+        return t < static_cast<double>(chars.size()) ? Value::string(chars[static_cast<size_t>(t)])
+                                                     : Value();
+    }
+    if (obj.isRange()) {
+        const auto &r = obj.toRange();
+        if (t == 0) return Value::number(r.begin);
+        if (t == 1) return Value::number(r.step);
+        if (t == 2) return Value::number(r.end);
+    }
+    return Value();
+}
+
+Value Evaluator::evalMember(const MemberExpr &e, const FramePtr &f) {
+    Value obj = eval(*e.object, f);
+    const std::string &m = e.member.str();
+    if (obj.isVector()) {
+        const auto &v = obj.toVector();
+        size_t i = m == "x" ? 0 : m == "y" ? 1 : m == "z" ? 2 : 3;
+        return i < v.size() && m.size() == 1 ? v[i] : Value();
+    }
+    if (obj.isRange()) {
+        const auto &r = obj.toRange();
+        if (m == "begin") return Value::number(r.begin);
+        if (m == "step") return Value::number(r.step);
+        if (m == "end") return Value::number(r.end);
+    }
+    return Value();
+}
+
+void Evaluator::bindLet(const ArgumentList &args, const FramePtr &c) {
+    // Sequential: each binding sees the ones before it
+    for (const auto &a : args) c->set(a.name, eval(*a.expr, c));
+}
+
+Value Evaluator::evalPrefix(const PrefixExpr &p, const FramePtr &f) {
+    switch (p.kind) {
+        case ExprKind::Let: {
+            FramePtr c = makeFrame(f);
+            FrameGuard g(dyn_, c.get());
+            bindLet(p.args, c);
+            return eval(*p.body, c);
+        }
+        case ExprKind::Assert: evalAssert(p.args, f, p.loc); break;
+        default: evalEcho(p.args, f, p.loc); break;
+    }
+    return p.body ? eval(*p.body, f) : Value();
+}
+
+void Evaluator::evalEcho(const ArgumentList &args, const FramePtr &f, const SourceLoc &loc) {
+    std::string msg = "ECHO: ";
+    for (size_t i = 0; i < args.size(); ++i) {
+        if (i) msg += ", ";
+        if (!args[i].name.empty()) msg += args[i].name.str() + " = ";
+        msg += eval(*args[i].expr, f).toEchoString();
+    }
+    diag_.note(loc, msg);
+}
+
+void Evaluator::evalAssert(const ArgumentList &args, const FramePtr &f, const SourceLoc &loc) {
+    // assert(condition, message), positional or named
+    const Argument *cond = nullptr, *message = nullptr;
+    size_t pos = 0;
+    for (const auto &a : args) {
+        const std::string &n = a.name.str();
+        if (n == "condition" || (n.empty() && pos == 0 && !cond))
+            cond = &a;
+        else if (n == "message" || (n.empty() && pos == 1 && !message))
+            message = &a;
+        if (n.empty()) ++pos;
+    }
+    Value c = cond ? eval(*cond->expr, f) : Value();
+    if (c.toBool()) return;
+    std::string msg =
+        "Assertion '" + (cond ? exprToString(*cond->expr) : std::string("undef")) + "' failed";
+    if (message) msg += ": " + eval(*message->expr, f).toEchoString();
+    throw EvalError(loc, msg);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Function calls
+
+std::optional<Evaluator::CallTarget> Evaluator::resolveFunction(const Expr &callee,
+                                                                const FramePtr &f,
+                                                                Value *calleeValue) {
+    auto fromValue = [](const Value &v) {
+        CallTarget t;
+        const FunctionValue &fv = v.toFunction();
+        t.params = &fv.def->params;
+        t.body = fv.def->body.get();
+        t.parent = fv.closure;
+        return t;
+    };
+    if (callee.kind != ExprKind::Identifier) {
+        *calleeValue = eval(callee, f);
+        if (calleeValue->isFunction()) return fromValue(*calleeValue);
+        return std::nullopt;
+    }
+    Symbol name = static_cast<const IdentifierExpr &>(callee).name;
+    // A variable holding a function shadows a function definition (Context::lookup_function)
+    if (name.isDollar()) {
+        if (const Value *v = dyn_.lookup(name); v && v->isFunction()) {
+            CallTarget t = fromValue(*v);
+            t.name = name;
+            return t;
+        }
+    } else {
+        for (const Frame *p = f.get(); p; p = p->parent.get())
+            if (const Value *v = p->findLocal(name); v && v->isFunction()) {
+                CallTarget t = fromValue(*v);
+                t.name = name;
+                return t;
+            }
+    }
+    for (const Frame *p = f.get(); p; p = p->parent.get()) {
+        if (p->defs) {
+            auto it = p->defs->functions.find(name);
+            if (it != p->defs->functions.end()) {
+                CallTarget t;
+                t.params = &it->second->params;
+                t.body = it->second->body.get();
+                t.parent = std::const_pointer_cast<Frame>(p->shared_from_this());
+                t.name = name;
+                return t;
+            }
+        }
+        if (p->file) {
+            for (LoadedFile *lib : p->file->uses) {
+                auto it = lib->src->top.functions.find(name);
+                if (it == lib->src->top.functions.end()) continue;
+                CallTarget t;
+                t.params = &it->second->params;
+                t.body = it->second->body.get();
+                t.parent = libraryFrame(*lib);
+                t.library = lib;
+                t.name = name;
+                return t;
+            }
+        }
+    }
+    return std::nullopt;
+}
+
+Value Evaluator::evalCall(const CallExpr &c, const FramePtr &f) {
+    Value calleeValue;
+    if (auto target = resolveFunction(*c.callee, f, &calleeValue))
+        return callUser(std::move(*target), c.args, f, c.loc);
+    if (c.callee->kind == ExprKind::Identifier) {
+        Symbol name = static_cast<const IdentifierExpr &>(*c.callee).name;
+        // is_undef(name) tests a variable without the unknown-variable warning (func.cc)
+        static const Symbol kIsUndef = Symbol::intern("is_undef");
+        if (name == kIsUndef && c.args.size() == 1 &&
+            c.args[0].expr->kind == ExprKind::Identifier) {
+            const auto &id = static_cast<const IdentifierExpr &>(*c.args[0].expr);
+            return Value::boolean(lookupVariable(id.name, f.get(), id.loc, true).isUndef());
+        }
+        if (BuiltinFunction fn = findBuiltinFunction(name))
+            return callBuiltinFunction(fn, c.args, f, c.loc);
+        throw EvalError(c.loc, "unknown function '" + name.str() + "'");
+    }
+    warn(c.loc,
+         std::string("can't call a value of type ") + calleeValue.typeName() + " as a function");
+    return Value();
+}
+
+Value Evaluator::callBuiltinFunction(BuiltinFunction fn, const ArgumentList &args,
+                                     const FramePtr &f, const SourceLoc &loc) {
+    // OpenSCAD's builtin functions read their arguments by position only
+    std::vector<Value> values;
+    values.reserve(args.size());
+    for (const auto &a : args) values.push_back(eval(*a.expr, f));
+    step(loc);
+    return fn(*this, values, loc);
+}
+
+void Evaluator::bindParameters(const ParameterList &params, const ArgumentList &args,
+                               const FramePtr &argFrame, Frame &into, const FramePtr &defaultsFrame,
+                               const SourceLoc &callLoc) {
+    // EvalContext::resolveArguments: positional arguments fill the parameters in order, named
+    // ones by name; unknown names warn but are still bound, `$` names silently.
+    std::vector<bool> given(params.size(), false);
+    size_t pos = 0;
+    for (const auto &a : args) {
+        if (!a.name.empty()) {
+            size_t idx = params.size();
+            for (size_t i = 0; i < params.size(); ++i)
+                if (params[i].name == a.name) idx = i;
+            if (idx < params.size()) {
+                if (given[idx])
+                    warn(a.loc, "argument " + a.name.str() + " supplied more than once");
+                given[idx] = true;
+            } else if (!a.name.isDollar() && a.name.str()[0] != '$') {
+                warn(a.loc, "variable " + a.name.str() + " not specified as parameter");
+            }
+            into.set(a.name, eval(*a.expr, argFrame));
+        } else if (pos < params.size()) {
+            given[pos] = true;
+            into.set(params[pos++].name, eval(*a.expr, argFrame));
+        } else {
+            warn(a.loc, "Too many unnamed arguments supplied");
+        }
+    }
+    (void)callLoc;
+    // Defaults are evaluated in the defining scope and cannot see the other parameters
+    for (size_t i = 0; i < params.size(); ++i)
+        if (!given[i])
+            into.set(params[i].name,
+                     params[i].defaultExpr ? eval(*params[i].defaultExpr, defaultsFrame) : Value());
+}
+
+Value Evaluator::callUser(CallTarget target, const ArgumentList &args, const FramePtr &argFrame,
+                          const SourceLoc &loc) {
+    if (callDepth_ >= limits_.maxCallDepth)
+        throw EvalError(loc, "recursion too deep calling function '" + target.name.str() +
+                                 "' (more than " + std::to_string(limits_.maxCallDepth) +
+                                 " nested calls)");
+    checkStack(loc);
+    ++callDepth_;
+    // The frames of the current iteration stay alive until they are off the dynamic stack
+    std::vector<FramePtr> live;
+    struct Restore {
+        Evaluator &ev;
+        size_t base;
+        ~Restore() {
+            while (ev.dyn_.depth() > base) ev.dyn_.pop();
+            --ev.callDepth_;
+        }
+    } restore{*this, dyn_.depth()};
+
+    const ArgumentList *callArgs = &args;
+    FramePtr callerFrame = argFrame;
+    SourceLoc callLoc = loc;
+    for (;;) {
+        step(callLoc);
+        // Bind the arguments with the previous iteration's frames still visible, then
+        // replace those frames with the new one
+        FramePtr frame = makeFrame(target.parent);
+        bindParameters(*target.params, *callArgs, callerFrame, *frame, target.parent, callLoc);
+        while (dyn_.depth() > restore.base) dyn_.pop();
+        live.clear();
+        if (target.library) dyn_.push(libraryFrame(*target.library).get());
+        dyn_.push(frame.get());
+        live.push_back(frame);
+
+        // Walk the tail positions of the body: ?: branches, let, assert and echo prefixes
+        const Expr *body = target.body;
+        FramePtr cur = frame;
+        for (;;) {
+            if (body->kind == ExprKind::Ternary) {
+                const auto &t = static_cast<const TernaryExpr &>(*body);
+                body = eval(*t.cond, cur).toBool() ? t.thenExpr.get() : t.elseExpr.get();
+            } else if (body->kind == ExprKind::Let) {
+                const auto &p = static_cast<const PrefixExpr &>(*body);
+                FramePtr c = makeFrame(cur);
+                dyn_.push(c.get());
+                live.push_back(c);
+                bindLet(p.args, c);
+                cur = c;
+                body = p.body.get();
+            } else if (body->kind == ExprKind::Assert || body->kind == ExprKind::Echo) {
+                const auto &p = static_cast<const PrefixExpr &>(*body);
+                if (body->kind == ExprKind::Assert)
+                    evalAssert(p.args, cur, p.loc);
+                else
+                    evalEcho(p.args, cur, p.loc);
+                if (!p.body) return Value();
+                body = p.body.get();
+            } else {
+                break;
+            }
+        }
+        if (body->kind == ExprKind::Call) {
+            // A call in tail position reuses this loop instead of the C++ stack
+            const auto &call = static_cast<const CallExpr &>(*body);
+            Value calleeValue;
+            if (auto next = resolveFunction(*call.callee, cur, &calleeValue)) {
+                target = std::move(*next);
+                callArgs = &call.args;
+                callerFrame = cur;
+                callLoc = call.loc;
+                continue;
+            }
+            if (call.callee->kind != ExprKind::Identifier) {
+                warn(call.loc, std::string("can't call a value of type ") + calleeValue.typeName() +
+                                   " as a function");
+                return Value();
+            }
+        }
+        return eval(*body, cur);
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Scopes and instantiation
+
+void Evaluator::applyAssignments(const std::vector<Assignment> &as, const FramePtr &f) {
+    for (const auto &a : as) f->set(a.name, eval(*a.expr, f));
+}
+
+void Evaluator::instantiateScope(const Scope &s, const FramePtr &f, std::vector<ir::NodePtr> &out) {
+    for (const auto &inst : s.instantiations)
+        if (ir::NodePtr n = instantiate(*inst, f)) out.push_back(std::move(n));
+}
+
+void Evaluator::instantiateChildren(const ModuleInstantiation &inst, const FramePtr &caller,
+                                    std::vector<ir::NodePtr> &out, const Scope *scope) {
+    if (!scope) scope = &inst.children;
+    if (scope->assignments.empty()) {
+        // A frame without variables is invisible to every lookup: skip it
+        instantiateScope(*scope, caller, out);
+        return;
+    }
+    FramePtr c = makeFrame(caller);
+    FrameGuard g(dyn_, c.get());
+    applyAssignments(scope->assignments, c);
+    instantiateScope(*scope, c, out);
+}
+
+ir::NodePtr Evaluator::instantiate(const ModuleInstantiation &inst, const FramePtr &f) {
+    const Modifiers &m = inst.modifiers;
+    if (m.disabled) {
+        ++scene_.stats.disabledParts;
+        return nullptr;
+    }
+    if (m.background) {
+        // Evaluated (echo, assert and errors still happen) but left out, as OpenSCAD's renders do
+        ++backgroundDepth_;
+        instantiateUnmodified(inst, f);
+        --backgroundDepth_;
+        ++scene_.stats.backgroundParts;
+        return nullptr;
+    }
+    if (m.root) {
+        if (rootSeen_) {
+            warn(inst.loc, "More than one Root Modifier (!)");
+        } else {
+            // The first `!` in tree order becomes the scene root, without the transforms and
+            // colours around it
+            rootSeen_ = true;
+            Mat4 savedWorld = worldFromLocal_;
+            auto savedColor = color_;
+            auto savedMaterials = std::move(materials_);
+            worldFromLocal_ = Mat4();
+            color_.reset();
+            materials_.clear();
+            currentMaterial_ = -1;
+            ir::NodePtr n = instantiateUnmodified(inst, f);
+            worldFromLocal_ = savedWorld;
+            color_ = savedColor;
+            materials_ = std::move(savedMaterials);
+            currentMaterial_ = -1;
+            if (n && m.highlight) n->highlight = true;
+            rootNode_ = n ? std::move(n) : newNode(ir::NodeKind::Group, inst.loc);
+            return nullptr;
+        }
+    }
+    ir::NodePtr n = instantiateUnmodified(inst, f);
+    if (n && m.highlight) n->highlight = true;
+    return n;
+}
+
+std::optional<Evaluator::ModuleLookup> Evaluator::findModule(Symbol name, const Frame *f) {
+    for (const Frame *p = f; p; p = p->parent.get()) {
+        if (p->defs) {
+            auto it = p->defs->modules.find(name);
+            if (it != p->defs->modules.end())
+                return ModuleLookup{it->second.get(),
+                                    std::const_pointer_cast<Frame>(p->shared_from_this()), nullptr};
+        }
+        if (p->file) {
+            for (LoadedFile *lib : p->file->uses) {
+                auto it = lib->src->top.modules.find(name);
+                if (it != lib->src->top.modules.end())
+                    return ModuleLookup{it->second.get(), libraryFrame(*lib), lib};
+            }
+        }
+    }
+    return std::nullopt;
+}
+
+ir::NodePtr Evaluator::instantiateUnmodified(const ModuleInstantiation &inst, const FramePtr &f) {
+    checkStack(inst.loc);
+    step(inst.loc);
+    if (inst.isIf) return moduleIf(inst, f);
+    if (auto user = findModule(inst.name, f.get())) {
+        if (isMetadataModule(inst.name) && isScadrayLibrary(user->def->loc))
+            return instantiateMetadata(inst.name, inst, f);
+        return instantiateUser(*user, inst, f);
+    }
+    const auto &builtins = builtinModules();
+    auto it = builtins.find(inst.name);
+    if (it != builtins.end()) return (this->*(it->second))(inst, f);
+    if (isMetadataModule(inst.name)) {
+        warn(inst.loc, "`" + inst.name.str() +
+                           "` is a scadray metadata module but scadray.scad is not used: OpenSCAD "
+                           "will ignore it and drop its children; add `use <scadray.scad>`");
+        return instantiateMetadata(inst.name, inst, f);
+    }
+    throw EvalError(inst.loc, "unknown module '" + inst.name.str() + "'");
+}
+
+ir::NodePtr Evaluator::instantiateUser(const ModuleLookup &m, const ModuleInstantiation &inst,
+                                       const FramePtr &caller) {
+    if (callDepth_ >= limits_.maxCallDepth)
+        throw EvalError(inst.loc, "recursion too deep calling module '" + inst.name.str() +
+                                      "' (more than " + std::to_string(limits_.maxCallDepth) +
+                                      " nested calls)");
+    ++callDepth_;
+    struct Restore {
+        Evaluator &ev;
+        ~Restore() { --ev.callDepth_; }
+    } restore{*this};
+
+    // The child block's assignments go into the call's frame before the module body runs;
+    // the arguments are evaluated there too (UserModule::instantiate, scope.apply(evalctx)).
+    FramePtr childFrame = makeFrame(caller);
+    FrameGuard childGuard(dyn_, childFrame.get());
+    applyAssignments(inst.children.assignments, childFrame);
+
+    std::optional<FrameGuard> libGuard;
+    if (m.library) libGuard.emplace(dyn_, m.parent.get());
+    ModuleCallInfo info{&inst, childFrame};
+    FramePtr body = makeFrame(m.parent);
+    body->defs = &m.def->body;
+    body->call = &info;
+    FrameGuard bodyGuard(dyn_, body.get());
+    static const Symbol kChildren = sym("$children"), kParentModules = sym("$parent_modules");
+    body->set(kChildren, Value::number(static_cast<double>(inst.children.instantiations.size())));
+    moduleStack_.push_back(inst.name);
+    body->set(kParentModules, Value::number(static_cast<double>(moduleStack_.size())));
+    bindParameters(m.def->params, inst.args, childFrame, *body, m.parent, inst.loc);
+    // Body assignments share the parameters' frame, so they can override them
+    applyAssignments(m.def->body.assignments, body);
+
+    ir::NodePtr node = newNode(ir::NodeKind::Group, inst.loc);
+    node->label = "module " + inst.name.str();
+    instantiateScope(m.def->body, body, node->children);
+    moduleStack_.pop_back();
+    return node;
+}
+
+BoundArgs Evaluator::bindBuiltin(const ModuleInstantiation &inst,
+                                 std::initializer_list<std::string_view> params,
+                                 const FramePtr &argFrame, Frame *dollarFrame, size_t positional) {
+    BoundArgs b;
+    size_t n = params.size();
+    b.names.assign(params.begin(), params.end());
+    b.values.resize(n);
+    b.locs.resize(n);
+    b.given.assign(n, false);
+    b.callLoc = inst.loc;
+    size_t pos = 0;
+    for (const auto &a : inst.args) {
+        size_t idx = n;
+        if (!a.name.empty()) {
+            size_t i = 0;
+            for (auto p : params) {
+                if (p == a.name.str()) idx = i;
+                ++i;
+            }
+            if (idx == n) {
+                Value v = eval(*a.expr, argFrame);
+                if (a.name.str()[0] == '$') {
+                    if (dollarFrame) dollarFrame->set(a.name, std::move(v));
+                } else {
+                    warn(a.loc, "variable " + a.name.str() + " not specified as parameter");
+                }
+                continue;
+            }
+            if (b.given[idx]) warn(a.loc, "argument " + a.name.str() + " supplied more than once");
+        } else if (pos < std::min(n, positional)) {
+            idx = pos++;
+        } else {
+            eval(*a.expr, argFrame);
+            warn(a.loc, "Too many unnamed arguments supplied");
+            continue;
+        }
+        b.values[idx] = eval(*a.expr, argFrame);
+        b.locs[idx] = a.loc;
+        b.given[idx] = true;
+    }
+    return b;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Control modules
+
+ir::NodePtr Evaluator::moduleIf(const ModuleInstantiation &inst, const FramePtr &f) {
+    bool cond = !inst.args.empty() && eval(*inst.args[0].expr, f).toBool();
+    // `if (false)` without else produces nothing at all (null, not an empty group)
+    if (!cond && !inst.hasElse) return nullptr;
+    ir::NodePtr node = newNode(ir::NodeKind::Group, inst.loc);
+    instantiateChildren(inst, f, node->children, cond ? &inst.children : &inst.elseChildren);
+    return node;
+}
+
+void Evaluator::forLoop(const ModuleInstantiation &inst, size_t var, const FramePtr &f,
+                        std::vector<ir::NodePtr> &out, bool groupPerIteration) {
+    if (var == inst.args.size()) {
+        if (!groupPerIteration) {
+            instantiateChildren(inst, f, out);
+            return;
+        }
+        std::vector<ir::NodePtr> kids;
+        instantiateChildren(inst, f, kids);
+        out.push_back(groupOf(ir::NodeKind::Group, inst.loc, std::move(kids)));
+        return;
+    }
+    const Argument &a = inst.args[var];
+    Value seq = eval(*a.expr, f);
+    FramePtr c = makeFrame(f);
+    FrameGuard g(dyn_, c.get());
+    auto iterate = [&](Value x) {
+        step(inst.loc);
+        c->set(a.name, std::move(x));
+        forLoop(inst, var + 1, c, out, groupPerIteration);
+    };
+    if (seq.isRange()) {
+        uint64_t n = seq.toRange().numValues();
+        if (n >= kMaxModuleForRange) {
+            warn(a.loc, "Bad range parameter in for statement: too many elements (" +
+                            std::to_string(n) + ")");
+            return;
+        }
+        RangeValue r = seq.toRange();
+        for (uint64_t i = 0; i < n; ++i) iterate(Value::number(r.at(i)));
+    } else if (seq.isVector()) {
+        for (const auto &x : seq.toVector()) iterate(x);
+    } else if (seq.isString()) {
+        for (auto &ch : utf8Chars(seq.toStr())) iterate(Value::string(std::move(ch)));
+    } else if (!seq.isUndef()) {
+        iterate(seq);
+    }
+}
+
+ir::NodePtr Evaluator::moduleFor(const ModuleInstantiation &inst, const FramePtr &f) {
+    ir::NodePtr node = newNode(ir::NodeKind::Group, inst.loc);
+    if (!inst.args.empty()) forLoop(inst, 0, f, node->children, false);
+    return node;
+}
+
+ir::NodePtr Evaluator::moduleIntersectionFor(const ModuleInstantiation &inst, const FramePtr &f) {
+    ir::NodePtr node = newNode(ir::NodeKind::Intersection, inst.loc);
+    if (!inst.args.empty()) forLoop(inst, 0, f, node->children, true);
+    return node;
+}
+
+ir::NodePtr Evaluator::moduleLet(const ModuleInstantiation &inst, const FramePtr &f) {
+    FramePtr c = makeFrame(f);
+    FrameGuard g(dyn_, c.get());
+    bindLet(inst.args, c);
+    ir::NodePtr node = newNode(ir::NodeKind::Group, inst.loc);
+    instantiateChildren(inst, c, node->children);
+    return node;
+}
+
+ir::NodePtr Evaluator::moduleEcho(const ModuleInstantiation &inst, const FramePtr &f) {
+    evalEcho(inst.args, f, inst.loc);
+    if (inst.children.empty()) return nullptr;
+    ir::NodePtr node = newNode(ir::NodeKind::Group, inst.loc);
+    instantiateChildren(inst, f, node->children);
+    return node;
+}
+
+ir::NodePtr Evaluator::moduleAssert(const ModuleInstantiation &inst, const FramePtr &f) {
+    evalAssert(inst.args, f, inst.loc);
+    if (inst.children.empty()) return nullptr;
+    ir::NodePtr node = newNode(ir::NodeKind::Group, inst.loc);
+    instantiateChildren(inst, f, node->children);
+    return node;
+}
+
+ir::NodePtr Evaluator::moduleChildren(const ModuleInstantiation &inst, const FramePtr &f) {
+    // The innermost user module body lexically around this call owns the children
+    const ModuleCallInfo *call = nullptr;
+    for (const Frame *p = f.get(); p && !call; p = p->parent.get()) call = p->call;
+    if (!call) return nullptr;
+    const auto &kids = call->inst->children.instantiations;
+    auto child = [&](const Value &v) -> ir::NodePtr {
+        if (!v.isNumber()) {
+            warn(inst.loc, "Bad parameter type (" + v.toEchoString() +
+                               ") for children, only accept: empty, number, vector, range.");
+            return nullptr;
+        }
+        double d = std::trunc(v.toNumber());
+        if (d < 0) {
+            warn(inst.loc, "Negative children index (" + formatNumber(d) + ") not allowed");
+            return nullptr;
+        }
+        if (!(d < static_cast<double>(kids.size()))) {
+            warn(inst.loc, "Children index (" + formatNumber(d) + ") out of bounds (" +
+                               std::to_string(kids.size()) + " children)");
+            return nullptr;
+        }
+        return instantiate(*kids[static_cast<size_t>(d)], call->childFrame);
+    };
+    if (inst.args.empty()) {
+        ir::NodePtr node = newNode(ir::NodeKind::Group, inst.loc);
+        for (const auto &k : kids)
+            if (ir::NodePtr n = instantiate(*k, call->childFrame))
+                node->children.push_back(std::move(n));
+        return node;
+    }
+    Value sel = eval(*inst.args[0].expr, f);
+    if (sel.isNumber()) return child(sel);
+    if (sel.isVector()) {
+        ir::NodePtr node = newNode(ir::NodeKind::Group, inst.loc);
+        for (const auto &v : sel.toVector())
+            if (ir::NodePtr n = child(v)) node->children.push_back(std::move(n));
+        return node;
+    }
+    if (sel.isRange()) {
+        uint64_t n = sel.toRange().numValues();
+        if (n >= kMaxModuleForRange) {
+            warn(inst.loc,
+                 "Bad range parameter for children: too many elements (" + std::to_string(n) + ")");
+            return nullptr;
+        }
+        ir::NodePtr node = newNode(ir::NodeKind::Group, inst.loc);
+        for (uint64_t i = 0; i < n; ++i)
+            if (ir::NodePtr c = child(Value::number(sel.toRange().at(i))))
+                node->children.push_back(std::move(c));
+        return node;
+    }
+    warn(inst.loc, "Bad parameter type (" + sel.toEchoString() +
+                       ") for children, only accept: empty, number, vector, range.");
+    return nullptr;
+}
+
+}  // namespace rt::scad

@@ -1,0 +1,239 @@
+// SPDX-License-Identifier: MIT
+// Evaluates a parsed OpenSCAD program into an ir::Scene with OpenSCAD 2021.01's scoping.
+#pragma once
+
+#include <cstdint>
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "core/ir/diagnostics.h"
+#include "core/ir/scene_ir.h"
+#include "importers/scad/ast.h"
+#include "importers/scad/environment.h"
+#include "importers/scad/parser.h"
+
+namespace rt::scad {
+
+/// Resource bounds that turn runaway programs into located EvalErrors.
+/// The defaults stop a runaway program within about 10 s and a few hundred MB.
+struct EvalLimits {
+    int maxCallDepth = 10000;       ///< nested user function/module calls (OpenSCAD fails near it)
+    int64_t maxSteps = 30'000'000;  ///< calls + loop iterations + instantiations
+    int64_t maxLiveElements = 8'000'000;     ///< vector elements alive at once (~24 bytes each)
+    int64_t maxLiveStringBytes = 256 << 20;  ///< bytes of string values alive at once
+    int64_t maxNodes = 1'500'000;            ///< IR nodes produced (~300 bytes each)
+    size_t maxStringLength = 64u << 20;      ///< bytes in one string value
+    size_t stackReserveBytes = 1u << 20;     ///< stack kept free below the deepest frame
+};
+
+/// A file taking part in evaluation: the main file or a used library.
+struct LoadedFile {
+    const SourceFile *src = nullptr;
+    std::vector<LoadedFile *> uses;  ///< newest `use` first (later uses win)
+    FramePtr frame;                  ///< top-level frame, built on first use
+};
+
+/// Appearance requested by color(): outermost valid one wins.
+struct ColorState {
+    double r = 0, g = 0, b = 0, a = 1;
+    SourceLoc loc;
+};
+
+/// One material() call's parameters; only what the call gave is marked.
+struct MaterialSpec {
+    ir::Material material;
+    bool hasColor = false;
+    double colorAlpha = 1;
+    bool hasTransmit = false;
+    SourceLoc loc;
+};
+
+/// Arguments of a builtin module call bound to its declared parameter names.
+struct BoundArgs {
+    /// Parameter names, in binding order (string literals of the builtin's table).
+    std::vector<std::string_view> names;
+    std::vector<Value> values;
+    std::vector<SourceLoc> locs;
+    std::vector<bool> given;
+    SourceLoc callLoc;
+
+    const Value &operator[](size_t i) const { return values[i]; }
+    const SourceLoc &loc(size_t i) const { return given[i] ? locs[i] : callLoc; }
+};
+
+class Evaluator;
+using BuiltinFunction = Value (*)(Evaluator &, const std::vector<Value> &args,
+                                  const SourceLoc &loc);
+
+class Evaluator {
+  public:
+    Evaluator(DiagnosticSink &diag, EvalLimits limits = {});
+    ~Evaluator();
+    Evaluator(const Evaluator &) = delete;
+    Evaluator &operator=(const Evaluator &) = delete;
+
+    /// Evaluates the main file (with the libraries `loader` parsed for it) into a scene.
+    ir::Scene evaluate(const SourceFile &main, SourceLoader &loader);
+
+    // Services used by the builtin function and module implementations
+    DiagnosticSink &diag() { return diag_; }
+    void warn(const SourceLoc &loc, const std::string &msg) { diag_.warning(loc, msg); }
+    Value makeString(std::string s, const SourceLoc &loc);
+    /// Throws when a vector of `extra` more elements would exceed the element budget.
+    void checkElementBudget(size_t extra, const SourceLoc &loc);
+    /// Counts one unit of work (call, iteration, instantiation) against the step budget.
+    void step(const SourceLoc &loc);
+    uint64_t randomSeed() { return ++randomCounter_; }
+
+    /// The user module names on the call stack, innermost last (parent_module()).
+    const std::vector<Symbol> &moduleStack() const { return moduleStack_; }
+
+  private:
+    using ModuleHandler = ir::NodePtr (Evaluator::*)(const ModuleInstantiation &, const FramePtr &);
+
+    struct CallTarget {
+        const ParameterList *params = nullptr;
+        const Expr *body = nullptr;
+        FramePtr parent;                ///< defining (or closure) frame
+        LoadedFile *library = nullptr;  ///< set when defined by a used library
+        Symbol name;
+    };
+    struct ModuleLookup {
+        const ModuleDef *def = nullptr;
+        FramePtr parent;
+        LoadedFile *library = nullptr;
+    };
+
+    // Expressions (evaluator.cpp)
+    Value eval(const Expr &e, const FramePtr &f);
+    Value lookupVariable(Symbol name, const Frame *f, const SourceLoc &loc, bool silent = false);
+    Value evalVector(const VectorExpr &v, const FramePtr &f);
+    void evalElement(const Expr &e, const FramePtr &f, std::vector<Value> &out);
+    Value evalRange(const RangeExpr &r, const FramePtr &f);
+    Value evalIndex(const IndexExpr &e, const FramePtr &f);
+    Value evalMember(const MemberExpr &e, const FramePtr &f);
+    Value evalCall(const CallExpr &c, const FramePtr &f);
+    Value evalPrefix(const PrefixExpr &p, const FramePtr &f);
+    void evalEcho(const ArgumentList &args, const FramePtr &f, const SourceLoc &loc);
+    void evalAssert(const ArgumentList &args, const FramePtr &f, const SourceLoc &loc);
+    void bindLet(const ArgumentList &args, const FramePtr &c);
+    std::optional<CallTarget> resolveFunction(const Expr &callee, const FramePtr &f,
+                                              Value *calleeValue);
+    Value callUser(CallTarget target, const ArgumentList &args, const FramePtr &argFrame,
+                   const SourceLoc &loc);
+    Value callBuiltinFunction(BuiltinFunction fn, const ArgumentList &args, const FramePtr &f,
+                              const SourceLoc &loc);
+    void bindParameters(const ParameterList &params, const ArgumentList &args,
+                        const FramePtr &argFrame, Frame &into, const FramePtr &defaultsFrame,
+                        const SourceLoc &callLoc);
+    void checkStack(const SourceLoc &loc);
+
+    // Scopes and module instantiation (evaluator.cpp)
+    void applyAssignments(const std::vector<Assignment> &as, const FramePtr &f);
+    void instantiateScope(const Scope &s, const FramePtr &f, std::vector<ir::NodePtr> &out);
+    ir::NodePtr instantiate(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr instantiateUnmodified(const ModuleInstantiation &inst, const FramePtr &f);
+    std::optional<ModuleLookup> findModule(Symbol name, const Frame *f);
+    FramePtr libraryFrame(LoadedFile &lib);
+    ir::NodePtr instantiateUser(const ModuleLookup &m, const ModuleInstantiation &inst,
+                                const FramePtr &caller);
+    /// Binds a builtin's arguments; `$` arguments go into `dollarFrame` when given. Only the
+    /// first `positional` parameters can be given without a name.
+    BoundArgs bindBuiltin(const ModuleInstantiation &inst,
+                          std::initializer_list<std::string_view> params, const FramePtr &argFrame,
+                          Frame *dollarFrame, size_t positional = SIZE_MAX);
+    /// Evaluates a builtin's child block into `out` in a fresh frame under `caller`.
+    void instantiateChildren(const ModuleInstantiation &inst, const FramePtr &caller,
+                             std::vector<ir::NodePtr> &out, const Scope *scope = nullptr);
+    ir::NodePtr newNode(ir::NodeKind kind, const SourceLoc &loc);
+    ir::NodePtr groupOf(ir::NodeKind kind, const SourceLoc &loc, std::vector<ir::NodePtr> children);
+
+    // Control modules (evaluator.cpp)
+    ir::NodePtr moduleIf(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr moduleFor(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr moduleIntersectionFor(const ModuleInstantiation &inst, const FramePtr &f);
+    void forLoop(const ModuleInstantiation &inst, size_t var, const FramePtr &f,
+                 std::vector<ir::NodePtr> &out, bool groupPerIteration);
+    ir::NodePtr moduleLet(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr moduleEcho(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr moduleAssert(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr moduleChildren(const ModuleInstantiation &inst, const FramePtr &f);
+
+    // Geometry builtins (builtins_geometry.cpp)
+    ir::NodePtr moduleCube(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr moduleSphere(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr moduleCylinder(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr moduleTranslate(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr moduleRotate(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr moduleScale(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr moduleMirror(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr moduleMultmatrix(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr moduleColor(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr moduleUnion(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr moduleDifference(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr moduleIntersection(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr moduleGroup(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr moduleUnsupported(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr csgOperation(ir::NodeKind kind, const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr transformNode(const Mat4 &m, const ModuleInstantiation &inst, const FramePtr &f,
+                              const FramePtr &argFrame);
+    ir::NodePtr primitive(ir::PrimShape shape, const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr emptyPrimitive(const ModuleInstantiation &inst, const std::string &why);
+    ir::Fragments currentFragments(const SourceLoc &loc);
+    void warnLeafChildren(const ModuleInstantiation &inst);
+
+    // Metadata modules (builtins_metadata.cpp)
+    ir::NodePtr instantiateMetadata(Symbol name, const ModuleInstantiation &inst,
+                                    const FramePtr &f);
+    ir::NodePtr metaCamera(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr metaPointLight(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr metaMaterial(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr metaBackground(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr metaRenderSettings(const ModuleInstantiation &inst, const FramePtr &f);
+    void cameraFromViewportVariables(const SourceFile &main);
+    int resolveMaterial(const SourceLoc &primLoc);
+
+    static const std::unordered_map<Symbol, ModuleHandler, SymbolHash> &builtinModules();
+    static bool isMetadataModule(Symbol name);
+
+    DiagnosticSink &diag_;
+    EvalLimits limits_;
+    ir::Scene scene_;
+    DynamicStack dyn_;
+    FramePtr builtinFrame_;
+    LoadedFile mainFile_;
+    std::unordered_map<const SourceFile *, LoadedFile> libraries_;
+    std::vector<Symbol> moduleStack_;
+
+    // Appearance and placement while instantiating
+    Mat4 worldFromLocal_;
+    std::optional<ColorState> color_;
+    std::vector<MaterialSpec> materials_;
+    int currentMaterial_ = -1;  ///< material of the current colour/material context, once known
+    int backgroundDepth_ = 0;
+    bool backgroundSet_ = false;
+    bool renderSettingsSet_ = false;
+
+    // `!` root modifier
+    ir::NodePtr rootNode_;
+    bool rootSeen_ = false;
+
+    /// Frames captured by function literals; a closure stored in a frame it (indirectly)
+    /// captures forms a reference cycle, broken when the evaluator goes away.
+    std::vector<std::weak_ptr<Frame>> capturedFrames_;
+
+    int callDepth_ = 0;
+    int64_t steps_ = 0;
+    int64_t nodes_ = 0;
+    uint64_t randomCounter_ = 0;
+    const char *stackLow_ = nullptr;
+};
+
+/// Builtin function by name, or null.
+BuiltinFunction findBuiltinFunction(Symbol name);
+
+}  // namespace rt::scad

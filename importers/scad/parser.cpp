@@ -1,0 +1,777 @@
+// SPDX-License-Identifier: MIT
+// OpenSCAD parser: grammar and precedence of 2021.01 parser.y, as recursive descent.
+#include "importers/scad/parser.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "importers/scad/lexer.h"
+
+#ifndef SCADRAY_LIBRARY_DIR
+#define SCADRAY_LIBRARY_DIR ""
+#endif
+
+namespace rt::scad {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Deepest nesting of expressions/statements accepted; beyond it the input is rejected
+/// instead of exhausting the parser's stack.
+constexpr int kMaxNesting = 10000;
+/// Longest chain of one left-associative operator (`1+1+...`): the tree it builds is as deep
+/// as the chain, and evaluating or freeing it recurses that deep.
+constexpr int kMaxOperatorChain = 100000;
+/// include<> chains deeper than this are taken to be recursive.
+constexpr int kMaxIncludeDepth = 64;
+constexpr const char *kOpenScadLibraryDir = "/usr/share/openscad/libraries";
+
+std::string dirOf(const std::string &path) {
+    fs::path p(path);
+    return p.has_parent_path() ? p.parent_path().string() : std::string(".");
+}
+
+class Parser {
+  public:
+    Parser(std::vector<Token> tokens, SourceLoader &loader, SourceFile &root, int includeDepth)
+        : toks_(std::move(tokens)), loader_(loader), root_(root), includeDepth_(includeDepth) {}
+
+    void parseStatements(Scope &scope);
+    ExprPtr parseWholeExpression();
+
+  private:
+    struct NestingGuard {
+        explicit NestingGuard(Parser &p) : p_(p) {
+            if (++p_.nesting_ > kMaxNesting)
+                throw ParseError(p_.cur().loc, "expression or statement nesting too deep");
+        }
+        ~NestingGuard() { --p_.nesting_; }
+        Parser &p_;
+    };
+
+    const Token &cur() const { return toks_[pos_]; }
+    const Token &peekTok(size_t n = 1) const { return toks_[std::min(pos_ + n, toks_.size() - 1)]; }
+    bool at(TokenKind k) const { return cur().kind == k; }
+    bool accept(TokenKind k) {
+        if (!at(k)) return false;
+        ++pos_;
+        return true;
+    }
+    Token expect(TokenKind k, const char *context);
+    [[noreturn]] void unexpected(const char *context) const;
+    static void checkChain(int length, const SourceLoc &loc) {
+        if (length > kMaxOperatorChain)
+            throw ParseError(loc, "expression too long: more than " +
+                                      std::to_string(kMaxOperatorChain) + " chained operators");
+    }
+
+    void parseStatement(Scope &scope);
+    void parseInclude(Scope &scope);
+    void parseUse();
+    void parseModuleDef(Scope &scope);
+    void parseFunctionDef(Scope &scope);
+    void parseAssignment(Scope &scope);
+    std::unique_ptr<ModuleInstantiation> parseInstantiation();
+    void parseChildStatement(Scope &scope);
+    ParameterList parseParameters();
+    ArgumentList parseArguments(TokenKind close);
+
+    ExprPtr parseExpr();
+    ExprPtr parseTernary();
+    ExprPtr parseOr();
+    ExprPtr parseAnd();
+    ExprPtr parseEquality();
+    ExprPtr parseComparison();
+    ExprPtr parseAddition();
+    ExprPtr parseMultiplication();
+    ExprPtr parseUnary();
+    ExprPtr parseExponent();
+    ExprPtr parsePostfix();
+    ExprPtr parsePrimary();
+    ExprPtr parseBracket();
+    ExprPtr parseElement();
+    ExprPtr parsePrefix(ExprKind kind);
+
+    std::vector<Token> toks_;
+    size_t pos_ = 0;
+    SourceLoader &loader_;
+    SourceFile &root_;
+    int includeDepth_;
+    int nesting_ = 0;
+};
+
+Token Parser::expect(TokenKind k, const char *context) {
+    if (!at(k)) {
+        throw ParseError(cur().loc, std::string("syntax error: expected ") + tokenKindName(k) +
+                                        " " + context + ", found " + describeToken(cur()));
+    }
+    return toks_[pos_++];
+}
+
+void Parser::unexpected(const char *context) const {
+    throw ParseError(cur().loc, "syntax error: unexpected " + describeToken(cur()) + " " + context);
+}
+
+void Parser::parseStatements(Scope &scope) {
+    while (!at(TokenKind::End)) parseStatement(scope);
+}
+
+void Parser::parseStatement(Scope &scope) {
+    NestingGuard guard(*this);
+    switch (cur().kind) {
+        case TokenKind::Semicolon: ++pos_; return;
+        case TokenKind::LBrace: {
+            // A bare block is not a scope: its statements belong to the enclosing one
+            ++pos_;
+            while (!at(TokenKind::RBrace)) {
+                if (at(TokenKind::End)) expect(TokenKind::RBrace, "to close the block");
+                parseStatement(scope);
+            }
+            ++pos_;
+            return;
+        }
+        case TokenKind::Include: parseInclude(scope); return;
+        case TokenKind::Use: parseUse(); return;
+        case TokenKind::KwModule: parseModuleDef(scope); return;
+        case TokenKind::KwFunction: parseFunctionDef(scope); return;
+        case TokenKind::Identifier:
+            if (peekTok().kind == TokenKind::Assign) {
+                parseAssignment(scope);
+                return;
+            }
+            break;
+        case TokenKind::RBrace: unexpected("(no block to close)");
+        default: break;
+    }
+    scope.instantiations.push_back(parseInstantiation());
+}
+
+void Parser::parseInclude(Scope &scope) {
+    Token tok = toks_[pos_++];
+    std::string path = loader_.resolve(tok.text, dirOf(*tok.loc.file));
+    if (path.empty()) throw ParseError(tok.loc, "can't find include file '" + tok.text + "'");
+    if (includeDepth_ >= kMaxIncludeDepth)
+        throw ParseError(tok.loc, "include<> nested more than " + std::to_string(kMaxIncludeDepth) +
+                                      " deep (recursive include?)");
+    std::string text = loader_.read(path, tok.loc);
+    auto file = std::make_shared<const std::string>(path);
+    Lexer lexer(std::move(text), file, &loader_.diag());
+    // Textual inclusion: the included statements join the current scope
+    Parser sub(lexer.tokenize(), loader_, root_, includeDepth_ + 1);
+    sub.parseStatements(scope);
+}
+
+void Parser::parseUse() {
+    Token tok = toks_[pos_++];
+    std::string path = loader_.resolve(tok.text, dirOf(*tok.loc.file));
+    if (path.empty()) throw ParseError(tok.loc, "can't find used file '" + tok.text + "'");
+    for (const auto &u : root_.uses)
+        if (u.path == path) return;
+    root_.uses.push_back({path, tok.loc});
+    loader_.loadUsed(path, tok.loc);
+}
+
+ParameterList Parser::parseParameters() {
+    ParameterList params;
+    expect(TokenKind::LParen, "to open the parameter list");
+    while (!at(TokenKind::RParen)) {
+        Token name = expect(TokenKind::Identifier, "as parameter name");
+        Parameter p;
+        p.name = Symbol::intern(name.text);
+        p.loc = name.loc;
+        if (accept(TokenKind::Assign)) p.defaultExpr = parseExpr();
+        params.push_back(std::move(p));
+        if (!accept(TokenKind::Comma)) break;
+        while (accept(TokenKind::Comma)) {
+        }
+    }
+    expect(TokenKind::RParen, "to close the parameter list");
+    return params;
+}
+
+ArgumentList Parser::parseArguments(TokenKind close) {
+    ArgumentList args;
+    while (!at(close)) {
+        Argument a;
+        a.loc = cur().loc;
+        if (at(TokenKind::Identifier) && peekTok().kind == TokenKind::Assign) {
+            a.name = Symbol::intern(cur().text);
+            pos_ += 2;
+        }
+        a.expr = parseExpr();
+        args.push_back(std::move(a));
+        if (!accept(TokenKind::Comma)) break;
+    }
+    return args;
+}
+
+void Parser::parseModuleDef(Scope &scope) {
+    SourceLoc loc = cur().loc;
+    ++pos_;
+    Token name = expect(TokenKind::Identifier, "as module name");
+    auto def = std::make_shared<ModuleDef>();
+    def->name = Symbol::intern(name.text);
+    def->loc = loc;
+    def->params = parseParameters();
+    parseStatement(def->body);
+    scope.modules[def->name] = std::move(def);
+}
+
+void Parser::parseFunctionDef(Scope &scope) {
+    SourceLoc loc = cur().loc;
+    ++pos_;
+    Token name = expect(TokenKind::Identifier, "as function name");
+    auto def = std::make_shared<FunctionDef>();
+    def->name = Symbol::intern(name.text);
+    def->loc = loc;
+    def->params = parseParameters();
+    expect(TokenKind::Assign, "after the function's parameter list");
+    def->body = parseExpr();
+    expect(TokenKind::Semicolon, "after the function definition");
+    scope.functions[def->name] = std::move(def);
+}
+
+void Parser::parseAssignment(Scope &scope) {
+    Token name = toks_[pos_];
+    pos_ += 2;
+    ExprPtr e = parseExpr();
+    expect(TokenKind::Semicolon, "after the assignment");
+    addAssignment(scope, Symbol::intern(name.text), std::move(e), name.loc, &loader_.diag());
+}
+
+std::unique_ptr<ModuleInstantiation> Parser::parseInstantiation() {
+    NestingGuard guard(*this);
+    auto inst = std::make_unique<ModuleInstantiation>();
+    inst->loc = cur().loc;
+    for (;;) {
+        if (accept(TokenKind::Bang))
+            inst->modifiers.root = true;
+        else if (accept(TokenKind::Hash))
+            inst->modifiers.highlight = true;
+        else if (accept(TokenKind::Percent))
+            inst->modifiers.background = true;
+        else if (accept(TokenKind::Star))
+            inst->modifiers.disabled = true;
+        else
+            break;
+    }
+    if (at(TokenKind::KwIf)) {
+        inst->loc = cur().loc;
+        ++pos_;
+        inst->isIf = true;
+        inst->name = Symbol::intern("if");
+        expect(TokenKind::LParen, "after 'if'");
+        Argument cond;
+        cond.loc = cur().loc;
+        cond.expr = parseExpr();
+        inst->args.push_back(std::move(cond));
+        expect(TokenKind::RParen, "to close the if condition");
+        parseChildStatement(inst->children);
+        if (accept(TokenKind::KwElse)) {
+            inst->hasElse = true;
+            parseChildStatement(inst->elseChildren);
+        }
+        return inst;
+    }
+    switch (cur().kind) {
+        case TokenKind::Identifier:
+        case TokenKind::KwFor:
+        case TokenKind::KwLet:
+        case TokenKind::KwAssert:
+        case TokenKind::KwEcho: break;
+        default: unexpected("where a statement was expected");
+    }
+    inst->loc = cur().loc;
+    inst->name = Symbol::intern(cur().text);
+    ++pos_;
+    expect(TokenKind::LParen, "after the module name");
+    inst->args = parseArguments(TokenKind::RParen);
+    expect(TokenKind::RParen, "to close the argument list");
+    parseChildStatement(inst->children);
+    return inst;
+}
+
+void Parser::parseChildStatement(Scope &scope) {
+    NestingGuard guard(*this);
+    if (accept(TokenKind::Semicolon)) return;
+    if (accept(TokenKind::LBrace)) {
+        while (!accept(TokenKind::RBrace)) {
+            switch (cur().kind) {
+                case TokenKind::End: expect(TokenKind::RBrace, "to close the child block"); break;
+                case TokenKind::LBrace:
+                case TokenKind::Semicolon: parseChildStatement(scope); break;
+                case TokenKind::Include: parseInclude(scope); break;
+                case TokenKind::Use: parseUse(); break;
+                case TokenKind::KwModule:
+                case TokenKind::KwFunction:
+                    unexpected("(definitions are not allowed inside a module's child block)");
+                case TokenKind::Identifier:
+                    if (peekTok().kind == TokenKind::Assign) {
+                        parseAssignment(scope);
+                        break;
+                    }
+                    [[fallthrough]];
+                default: scope.instantiations.push_back(parseInstantiation());
+            }
+        }
+        return;
+    }
+    scope.instantiations.push_back(parseInstantiation());
+}
+
+ExprPtr Parser::parseWholeExpression() {
+    ExprPtr e = parseExpr();
+    if (!at(TokenKind::End)) unexpected("after the expression");
+    return e;
+}
+
+ExprPtr Parser::parsePrefix(ExprKind kind) {
+    auto e = std::make_unique<PrefixExpr>(kind, cur().loc);
+    ++pos_;
+    expect(TokenKind::LParen, "after the keyword");
+    e->args = parseArguments(TokenKind::RParen);
+    expect(TokenKind::RParen, "to close the argument list");
+    return e;
+}
+
+ExprPtr Parser::parseExpr() {
+    NestingGuard guard(*this);
+    switch (cur().kind) {
+        case TokenKind::KwFunction: {
+            auto f = std::make_unique<FunctionLiteralExpr>(cur().loc);
+            ++pos_;
+            f->params = parseParameters();
+            f->body = parseExpr();
+            return f;
+        }
+        case TokenKind::KwLet: {
+            ExprPtr e = parsePrefix(ExprKind::Let);
+            static_cast<PrefixExpr &>(*e).body = parseExpr();
+            return e;
+        }
+        case TokenKind::KwAssert:
+        case TokenKind::KwEcho: {
+            ExprPtr e = parsePrefix(at(TokenKind::KwAssert) ? ExprKind::Assert : ExprKind::Echo);
+            // The body is optional (expr_or_empty)
+            switch (cur().kind) {
+                case TokenKind::Semicolon:
+                case TokenKind::RParen:
+                case TokenKind::RBracket:
+                case TokenKind::Comma:
+                case TokenKind::Colon:
+                case TokenKind::RBrace:
+                case TokenKind::End: break;
+                default: static_cast<PrefixExpr &>(*e).body = parseExpr();
+            }
+            return e;
+        }
+        default: return parseTernary();
+    }
+}
+
+ExprPtr Parser::parseTernary() {
+    ExprPtr c = parseOr();
+    if (!at(TokenKind::Question)) return c;
+    auto t = std::make_unique<TernaryExpr>(cur().loc);
+    ++pos_;
+    t->cond = std::move(c);
+    t->thenExpr = parseExpr();
+    expect(TokenKind::Colon, "in the conditional expression");
+    t->elseExpr = parseExpr();
+    return t;
+}
+
+ExprPtr Parser::parseOr() {
+    int chain = 0;
+    ExprPtr e = parseAnd();
+    while (at(TokenKind::OrOr)) {
+        SourceLoc loc = cur().loc;
+        ++pos_;
+        checkChain(++chain, loc);
+        e = std::make_unique<BinaryExpr>(ExprKind::Or, BinaryOp::Add, std::move(e), parseAnd(),
+                                         loc);
+    }
+    return e;
+}
+
+ExprPtr Parser::parseAnd() {
+    int chain = 0;
+    ExprPtr e = parseEquality();
+    while (at(TokenKind::AndAnd)) {
+        SourceLoc loc = cur().loc;
+        ++pos_;
+        checkChain(++chain, loc);
+        e = std::make_unique<BinaryExpr>(ExprKind::And, BinaryOp::Add, std::move(e),
+                                         parseEquality(), loc);
+    }
+    return e;
+}
+
+ExprPtr Parser::parseEquality() {
+    int chain = 0;
+    ExprPtr e = parseComparison();
+    while (at(TokenKind::EqualEqual) || at(TokenKind::NotEqual)) {
+        ExprKind k = at(TokenKind::EqualEqual) ? ExprKind::Equal : ExprKind::NotEqual;
+        SourceLoc loc = cur().loc;
+        ++pos_;
+        checkChain(++chain, loc);
+        e = std::make_unique<BinaryExpr>(k, BinaryOp::Add, std::move(e), parseComparison(), loc);
+    }
+    return e;
+}
+
+ExprPtr Parser::parseComparison() {
+    int chain = 0;
+    ExprPtr e = parseAddition();
+    for (;;) {
+        BinaryOp op;
+        switch (cur().kind) {
+            case TokenKind::Less: op = BinaryOp::Less; break;
+            case TokenKind::LessEqual: op = BinaryOp::LessEqual; break;
+            case TokenKind::Greater: op = BinaryOp::Greater; break;
+            case TokenKind::GreaterEqual: op = BinaryOp::GreaterEqual; break;
+            default: return e;
+        }
+        SourceLoc loc = cur().loc;
+        ++pos_;
+        checkChain(++chain, loc);
+        e = std::make_unique<BinaryExpr>(ExprKind::Binary, op, std::move(e), parseAddition(), loc);
+    }
+}
+
+ExprPtr Parser::parseAddition() {
+    int chain = 0;
+    ExprPtr e = parseMultiplication();
+    while (at(TokenKind::Plus) || at(TokenKind::Minus)) {
+        BinaryOp op = at(TokenKind::Plus) ? BinaryOp::Add : BinaryOp::Sub;
+        SourceLoc loc = cur().loc;
+        ++pos_;
+        checkChain(++chain, loc);
+        e = std::make_unique<BinaryExpr>(ExprKind::Binary, op, std::move(e), parseMultiplication(),
+                                         loc);
+    }
+    return e;
+}
+
+ExprPtr Parser::parseMultiplication() {
+    int chain = 0;
+    ExprPtr e = parseUnary();
+    for (;;) {
+        BinaryOp op;
+        switch (cur().kind) {
+            case TokenKind::Star: op = BinaryOp::Mul; break;
+            case TokenKind::Slash: op = BinaryOp::Div; break;
+            case TokenKind::Percent: op = BinaryOp::Mod; break;
+            default: return e;
+        }
+        SourceLoc loc = cur().loc;
+        ++pos_;
+        checkChain(++chain, loc);
+        e = std::make_unique<BinaryExpr>(ExprKind::Binary, op, std::move(e), parseUnary(), loc);
+    }
+}
+
+ExprPtr Parser::parseUnary() {
+    NestingGuard guard(*this);
+    SourceLoc loc = cur().loc;
+    if (accept(TokenKind::Minus)) {
+        ExprPtr operand = parseUnary();
+        // Fold negative number literals so `-1` is a constant
+        if (operand->kind == ExprKind::Literal) {
+            auto &lit = static_cast<LiteralExpr &>(*operand);
+            if (lit.value.isNumber()) {
+                lit.value = Value::number(-lit.value.toNumber());
+                lit.loc = loc;
+                return operand;
+            }
+        }
+        return std::make_unique<UnaryExpr>(UnaryOp::Negate, std::move(operand), loc);
+    }
+    if (accept(TokenKind::Plus)) return parseUnary();  // parser.y: '+' unary is the operand
+    if (accept(TokenKind::Bang))
+        return std::make_unique<UnaryExpr>(UnaryOp::Not, parseUnary(), loc);
+    return parseExponent();
+}
+
+ExprPtr Parser::parseExponent() {
+    ExprPtr base = parsePostfix();
+    if (!at(TokenKind::Caret)) return base;
+    SourceLoc loc = cur().loc;
+    ++pos_;
+    // Right-associative, and the exponent may carry a sign: call '^' unary
+    return std::make_unique<BinaryExpr>(ExprKind::Binary, BinaryOp::Pow, std::move(base),
+                                        parseUnary(), loc);
+}
+
+ExprPtr Parser::parsePostfix() {
+    ExprPtr e = parsePrimary();
+    for (;;) {
+        SourceLoc loc = cur().loc;
+        if (accept(TokenKind::LParen)) {
+            auto c = std::make_unique<CallExpr>(e->loc);
+            c->callee = std::move(e);
+            c->args = parseArguments(TokenKind::RParen);
+            expect(TokenKind::RParen, "to close the argument list");
+            e = std::move(c);
+        } else if (accept(TokenKind::LBracket)) {
+            auto i = std::make_unique<IndexExpr>(loc);
+            i->object = std::move(e);
+            i->index = parseExpr();
+            expect(TokenKind::RBracket, "to close the index");
+            e = std::move(i);
+        } else if (accept(TokenKind::Dot)) {
+            auto m = std::make_unique<MemberExpr>(loc);
+            m->object = std::move(e);
+            m->member = Symbol::intern(expect(TokenKind::Identifier, "after '.'").text);
+            e = std::move(m);
+        } else {
+            return e;
+        }
+    }
+}
+
+ExprPtr Parser::parsePrimary() {
+    const Token &t = cur();
+    switch (t.kind) {
+        case TokenKind::Number:
+            ++pos_;
+            return std::make_unique<LiteralExpr>(Value::number(t.number), t.loc);
+        case TokenKind::String:
+            ++pos_;
+            return std::make_unique<LiteralExpr>(Value::string(t.text), t.loc);
+        case TokenKind::KwTrue:
+            ++pos_;
+            return std::make_unique<LiteralExpr>(Value::boolean(true), t.loc);
+        case TokenKind::KwFalse:
+            ++pos_;
+            return std::make_unique<LiteralExpr>(Value::boolean(false), t.loc);
+        case TokenKind::KwUndef: ++pos_; return std::make_unique<LiteralExpr>(Value(), t.loc);
+        case TokenKind::Identifier:
+            ++pos_;
+            return std::make_unique<IdentifierExpr>(Symbol::intern(t.text), t.loc);
+        case TokenKind::LParen: {
+            ++pos_;
+            ExprPtr e = parseExpr();
+            expect(TokenKind::RParen, "to close the parenthesis");
+            return e;
+        }
+        case TokenKind::LBracket: return parseBracket();
+        default: unexpected("where an expression was expected");
+    }
+}
+
+ExprPtr Parser::parseElement() {
+    NestingGuard guard(*this);
+    SourceLoc loc = cur().loc;
+    switch (cur().kind) {
+        case TokenKind::KwFor: {
+            ++pos_;
+            expect(TokenKind::LParen, "after 'for'");
+            ArgumentList first = parseArguments(TokenKind::RParen);
+            if (accept(TokenKind::Semicolon)) {
+                auto f = std::make_unique<LcForCExpr>(loc);
+                f->init = std::move(first);
+                f->cond = parseExpr();
+                expect(TokenKind::Semicolon, "after the loop condition");
+                f->update = parseArguments(TokenKind::RParen);
+                expect(TokenKind::RParen, "to close the for header");
+                f->body = parseElement();
+                return f;
+            }
+            expect(TokenKind::RParen, "to close the for header");
+            auto f = std::make_unique<LcForExpr>(loc);
+            f->vars = std::move(first);
+            f->body = parseElement();
+            return f;
+        }
+        case TokenKind::KwEach: {
+            ++pos_;
+            auto e = std::make_unique<LcEachExpr>(loc);
+            e->body = parseElement();
+            return e;
+        }
+        case TokenKind::KwIf: {
+            ++pos_;
+            auto i = std::make_unique<LcIfExpr>(loc);
+            expect(TokenKind::LParen, "after 'if'");
+            i->cond = parseExpr();
+            expect(TokenKind::RParen, "to close the if condition");
+            i->thenExpr = parseElement();
+            if (accept(TokenKind::KwElse)) i->elseExpr = parseElement();
+            return i;
+        }
+        case TokenKind::KwLet: {
+            // `let(...)` followed by a comprehension element is an LcLet, otherwise a let
+            // expression
+            ExprPtr e = parsePrefix(ExprKind::Let);
+            auto &p = static_cast<PrefixExpr &>(*e);
+            ExprPtr body = parseElement();
+            if (body->isListComprehension()) {
+                auto l = std::make_unique<LcLetExpr>(loc);
+                l->args = std::move(p.args);
+                l->body = std::move(body);
+                return l;
+            }
+            p.body = std::move(body);
+            return e;
+        }
+        case TokenKind::LParen: {
+            TokenKind next = peekTok().kind;
+            if (next == TokenKind::KwFor || next == TokenKind::KwEach || next == TokenKind::KwIf) {
+                ++pos_;
+                ExprPtr e = parseElement();
+                expect(TokenKind::RParen, "to close the parenthesis");
+                return e;
+            }
+            return parseExpr();
+        }
+        default: return parseExpr();
+    }
+}
+
+ExprPtr Parser::parseBracket() {
+    auto v = std::make_unique<VectorExpr>(cur().loc);
+    ++pos_;
+    if (accept(TokenKind::RBracket)) {
+        v->constant = std::make_unique<Value>(Value::vector(std::vector<Value>()));
+        return v;
+    }
+    ExprPtr first = parseElement();
+    if (!first->isListComprehension() && at(TokenKind::Colon)) {
+        auto r = std::make_unique<RangeExpr>(v->loc);
+        ++pos_;
+        r->begin = std::move(first);
+        ExprPtr second = parseExpr();
+        if (accept(TokenKind::Colon)) {
+            r->step = std::move(second);
+            r->end = parseExpr();
+        } else {
+            r->end = std::move(second);
+        }
+        expect(TokenKind::RBracket, "to close the range");
+        return r;
+    }
+    v->elements.push_back(std::move(first));
+    while (accept(TokenKind::Comma)) {
+        if (at(TokenKind::RBracket)) break;  // trailing comma
+        v->elements.push_back(parseElement());
+    }
+    expect(TokenKind::RBracket, "to close the vector");
+    // Vectors of literals are built once
+    bool allConstant = true;
+    for (const auto &e : v->elements) {
+        bool c = e->kind == ExprKind::Literal ||
+                 (e->kind == ExprKind::Vector && static_cast<VectorExpr &>(*e).constant);
+        if (!c) allConstant = false;
+    }
+    if (allConstant) {
+        std::vector<Value> items;
+        items.reserve(v->elements.size());
+        for (const auto &e : v->elements)
+            items.push_back(e->kind == ExprKind::Literal ? static_cast<LiteralExpr &>(*e).value
+                                                         : *static_cast<VectorExpr &>(*e).constant);
+        v->constant = std::make_unique<Value>(Value::vector(std::move(items)));
+    }
+    return v;
+}
+
+}  // namespace
+
+void addAssignment(Scope &scope, Symbol name, ExprPtr expr, const SourceLoc &loc,
+                   DiagnosticSink *diag, bool quiet) {
+    for (auto &a : scope.assignments) {
+        if (a.name != name) continue;
+        // One slot per name: keep the first position, take the last expression
+        if (!quiet && diag && a.loc.fileName() == loc.fileName())
+            diag->warning(loc, name.str() + " was assigned on line " + std::to_string(a.loc.line) +
+                                   " but was overwritten");
+        a.expr = std::move(expr);
+        return;
+    }
+    scope.assignments.push_back({name, std::move(expr), loc});
+}
+
+SourceLoader::SourceLoader(std::vector<std::string> libraryPaths, DiagnosticSink &diag)
+    : libraryPaths_(std::move(libraryPaths)), diag_(diag) {}
+
+std::string SourceLoader::resolve(const std::string &name, const std::string &fromDir) const {
+    auto usable = [](const fs::path &p) {
+        std::error_code ec;
+        return fs::is_regular_file(p, ec);
+    };
+    fs::path n(name);
+    if (n.is_absolute()) return usable(n) ? n.lexically_normal().string() : std::string();
+    std::vector<std::string> dirs;
+    dirs.push_back(fromDir);
+    dirs.insert(dirs.end(), libraryPaths_.begin(), libraryPaths_.end());
+    for (const auto &d : dirs) {
+        if (d.empty()) continue;
+        fs::path p = fs::path(d) / n;
+        if (usable(p)) return p.lexically_normal().string();
+    }
+    return {};
+}
+
+std::string SourceLoader::read(const std::string &path, const SourceLoc &loc) const {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw ParseError(loc, "can't open file '" + path + "'");
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+std::shared_ptr<SourceFile> SourceLoader::loadUsed(const std::string &path, const SourceLoc &loc) {
+    auto it = used_.find(path);
+    if (it != used_.end()) return it->second;
+    auto file = std::make_shared<SourceFile>();
+    file->path = path;
+    used_[path] = file;
+    std::string text = read(path, loc);
+    auto name = std::make_shared<const std::string>(path);
+    Lexer lexer(std::move(text), name, &diag_);
+    Parser parser(lexer.tokenize(), *this, *file, 0);
+    parser.parseStatements(file->top);
+    return file;
+}
+
+std::vector<std::string> defaultLibraryPaths(const std::vector<std::string> &extra) {
+    std::vector<std::string> paths = extra;
+    if (const char *env = std::getenv("OPENSCADPATH")) {
+        std::string s = env;
+        size_t start = 0;
+        while (start <= s.size()) {
+            size_t colon = s.find(':', start);
+            if (colon == std::string::npos) colon = s.size();
+            if (colon > start) paths.push_back(s.substr(start, colon - start));
+            start = colon + 1;
+        }
+    }
+    if (*SCADRAY_LIBRARY_DIR) paths.push_back(SCADRAY_LIBRARY_DIR);
+    paths.push_back(kOpenScadLibraryDir);
+    return paths;
+}
+
+std::shared_ptr<SourceFile> parseSource(const std::string &text, const std::string &file,
+                                        SourceLoader &loader) {
+    auto root = std::make_shared<SourceFile>();
+    root->path = file;
+    auto name = std::make_shared<const std::string>(file);
+    Lexer lexer(text, name, &loader.diag());
+    Parser parser(lexer.tokenize(), loader, *root, 0);
+    parser.parseStatements(root->top);
+    return root;
+}
+
+ExprPtr parseExpressionText(const std::string &text, const std::string &file,
+                            SourceLoader &loader) {
+    SourceFile scratch;
+    auto name = std::make_shared<const std::string>(file);
+    Lexer lexer(text, name, &loader.diag());
+    Parser parser(lexer.tokenize(), loader, scratch, 0);
+    return parser.parseWholeExpression();
+}
+
+}  // namespace rt::scad

@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: MIT
+// Recursive-descent parser for OpenSCAD 2021.01 with include<> splicing and use<> loading.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/ir/diagnostics.h"
+#include "importers/scad/ast.h"
+#include "importers/scad/token.h"
+
+namespace rt::scad {
+
+/// Finds, reads and caches source files for include<> and use<>.
+class SourceLoader {
+  public:
+    /// `libraryPaths` are searched after the including file's folder, in order.
+    SourceLoader(std::vector<std::string> libraryPaths, DiagnosticSink &diag);
+
+    /// Resolves `name` as written in include<>/use<> against `fromDir`, then the library
+    /// paths; empty when no readable file exists.
+    std::string resolve(const std::string &name, const std::string &fromDir) const;
+    /// Reads a whole file; throws ParseError at `loc` when it cannot be read.
+    std::string read(const std::string &path, const SourceLoc &loc) const;
+
+    /// Parses a used library once (by path) and returns it; cycles return the file being parsed.
+    std::shared_ptr<SourceFile> loadUsed(const std::string &path, const SourceLoc &loc);
+    const std::map<std::string, std::shared_ptr<SourceFile>> &usedFiles() const { return used_; }
+
+    const std::vector<std::string> &libraryPaths() const { return libraryPaths_; }
+    DiagnosticSink &diag() { return diag_; }
+
+  private:
+    std::vector<std::string> libraryPaths_;
+    DiagnosticSink &diag_;
+    std::map<std::string, std::shared_ptr<SourceFile>> used_;
+};
+
+/// Search path of include<>/use<> after the including file's folder: the options' folders,
+/// then $OPENSCADPATH (colon-separated), then scadray's library folder, then OpenSCAD's.
+std::vector<std::string> defaultLibraryPaths(const std::vector<std::string> &extra);
+
+/// Parses a whole file's text. `file` is its path as shown in diagnostics and the anchor of
+/// relative include<>/use<> lookups.
+std::shared_ptr<SourceFile> parseSource(const std::string &text, const std::string &file,
+                                        SourceLoader &loader);
+
+/// Parses one expression (for -D overrides); throws ParseError on trailing text.
+ExprPtr parseExpressionText(const std::string &text, const std::string &file, SourceLoader &loader);
+
+/// Adds `name = expr` to a scope with OpenSCAD's one-slot-per-name rule; warns when an
+/// assignment of the same file is overwritten unless `quiet`.
+void addAssignment(Scope &scope, Symbol name, ExprPtr expr, const SourceLoc &loc,
+                   DiagnosticSink *diag, bool quiet = false);
+
+}  // namespace rt::scad

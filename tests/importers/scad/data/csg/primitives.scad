@@ -1,0 +1,27 @@
+// Primitive argument forms and resolution rules.
+cube();
+cube(2);
+cube([1, 2, 3], true);
+cube(size = [1, 2, 3], center = 1);
+cube([1, 2]);
+sphere();
+sphere(2);
+sphere(d = 3);
+sphere(r = 1, d = 4);
+cylinder();
+cylinder(5);
+cylinder(5, 2);
+cylinder(5, 2, 1);
+cylinder(h = 4, r = 1, center = true);
+cylinder(h = 2, d = 3);
+cylinder(r = 1, r1 = 2);
+cylinder(d = 1, r2 = 0, h = 2);
+cylinder(h = 3, d1 = 4, d2 = 2);
+cylinder(h = 3, r1 = 0, r2 = 2);
+cylinder(h = 3, r = 2, $fn = 6);
+sphere(r = 1, $fn = 3.5);
+sphere(r = 10, $fa = 0.001, $fs = 0.001);
+cube(-1);
+sphere(0);
+cylinder(h = 0);
+cylinder(h = 1, r = 0);

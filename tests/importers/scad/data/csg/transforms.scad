@@ -1,0 +1,23 @@
+// Transform forms: each becomes a multmatrix in OpenSCAD's .csg export.
+translate([1, 2, 3]) cube(1);
+translate([4, 5]) cube([1, 2, 3]);
+rotate([90, 0, 0]) cube([1, 2, 3]);
+rotate([90, 0, 0]) rotate([0, 0, 90]) cube([1, 2, 3]);
+rotate([30, 45, 60]) cube([1, 2, 3]);
+rotate([10]) sphere(1);
+rotate([10, 20]) sphere(1);
+rotate(45) cube(2);
+rotate(a = 120, v = [1, 1, 1]) cube([1, 2, 3]);
+rotate(90, [1, 1]) cube([1, 2, 3]);
+rotate(33, [0, 0, 0]) cube([1, 2, 3]);
+scale(2) sphere(1);
+scale([1, 2]) cube(1);
+scale([1, 2, 3]) cylinder(h = 2, r = 1);
+mirror([1, 0, 0]) translate([1, 0, 0]) cube(1);
+mirror([1, 1, 0]) cube([1, 2, 3]);
+mirror() cube([1, 2, 3]);
+multmatrix([[1, 0, 0, 1], [0, 1, 0, 2], [0, 0, 1, 3]]) cube(1);
+multmatrix([[2, 0, 0, 2], [0, 2, 0, 0], [0, 0, 2, 0], [0, 0, 0, 2]]) cube(1);
+multmatrix([[1, 0.5, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]) cube(1);
+translate(5) cube(1);
+translate([1, 2, 3]) rotate([0, 90, 0]) scale([2, 1, 1]) translate([-1, 0, 0]) cylinder(h = 3, r1 = 1, r2 = 0.5);

@@ -1,0 +1,27 @@
+// Functions: recursion, tail calls, literals, closures, let/assert/echo expressions.
+function sumr(n) = n == 0 ? 0 : n + sumr(n - 1);
+function sumt(n, acc = 0) = n == 0 ? acc : sumt(n - 1, acc + n);
+echo(sumr(3000), sumt(100000));
+function fact(n) = n <= 1 ? 1 : n * fact(n - 1);
+echo(fact(10), fact(20));
+add = function(a, b = 2) a + b;
+echo(add(1), add(1, 5), add(b = 3, a = 1));
+function compose(f, g) = function(x) f(g(x));
+inc = function(x) x + 1;
+dbl = function(x) x * 2;
+echo(compose(inc, dbl)(5), compose(dbl, inc)(5));
+function adder(n) = function(x) x + n;
+a5 = adder(5);
+echo(a5(1), adder(10)(1));
+echo(let(a = 1, b = a + 1) a + b, let(v = [1, 2]) v * v);
+echo(echo("inner") 5);
+function fib(n) = n < 2 ? n : fib(n - 1) + fib(n - 2);
+echo([for (i = [0:10]) fib(i)]);
+function even(n) = n == 0 ? true : odd(n - 1);
+function odd(n) = n == 0 ? false : even(n - 1);
+echo(even(10001), odd(7));
+function $dyn() = $fn;
+echo(f = function(x) x * 2, g = function(a, b = 1) [a, b]);
+function h() = $fn;
+echo(h($fn = 3), h());
+echo(is_undef(nosuchvar));

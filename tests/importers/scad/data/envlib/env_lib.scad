@@ -1,0 +1,2 @@
+// Found through $OPENSCADPATH.
+function fromenv() = "env";

@@ -1,0 +1,2 @@
+// Found through ImportOptions::libraryPaths.
+function extra() = "extra";

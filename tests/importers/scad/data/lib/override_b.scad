@@ -1,0 +1,2 @@
+// Two used libraries defining the same module: the later `use` wins.
+module who() echo("b");

@@ -1,0 +1,350 @@
+// SPDX-License-Identifier: MIT
+// Evaluator tests: OpenSCAD 2021.01 scoping rules (openscad-subset.md sections 4 and 7),
+// recursion, comprehensions, include/use, and the limits on runaway programs.
+#include "importers/scad/evaluator.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdlib>
+
+#include "importers/scad/parser.h"
+#include "importers/scad/test_support.h"
+
+namespace rt::scad::test {
+namespace {
+
+using Echoes = std::vector<std::string>;
+
+Echoes echoes(const std::string &src) { return importText(src).echoes(); }
+
+TEST(Scoping, LastExpressionIsEvaluatedAtFirstPosition) {
+    Imported r = importText("a = 1;\necho(a);\na = 2;\n");
+    EXPECT_EQ(r.echoes(), Echoes{"2"});
+    Diagnostic w = r.warning("overwritten");
+    EXPECT_EQ(w.message, "a was assigned on line 1 but was overwritten");
+    EXPECT_EQ(w.loc.line, 3);
+    EXPECT_EQ(w.loc.col, 1);
+}
+
+TEST(Scoping, ForwardVariableReferenceIsUndefWithWarning) {
+    Imported r = importText("b = c + 1;\nc = 10;\necho(b, c);");
+    EXPECT_EQ(r.echoes(), Echoes{"undef, 10"});
+    Diagnostic w = r.warning("unknown variable");
+    EXPECT_EQ(w.message, "Ignoring unknown variable 'c'");
+    EXPECT_EQ(w.loc.toString(), dataDir() + "/inline.scad:1:5");
+    EXPECT_TRUE(r.hasWarning("undefined operation (undefined + number)"));
+}
+
+TEST(Scoping, ModuleBodySeesOuterValueBeforeItsOwnAssignment) {
+    EXPECT_EQ(echoes("x = 1; module m() { y = x; echo(y); x = 2; } m();"), Echoes{"1"});
+}
+
+TEST(Scoping, IfBodyAssignmentsAreLocal) {
+    EXPECT_EQ(echoes("x = 3; if (true) { x = 100; echo(x); } echo(x);"), (Echoes{"100", "3"}));
+}
+
+TEST(Scoping, AssignmentsRunBeforeInstantiations) {
+    // echo() is an instantiation: it sees the value assigned after it
+    EXPECT_EQ(echoes("echo(v); v = 5;"), Echoes{"5"});
+}
+
+TEST(Scoping, TopLevelBlockDoesNotOpenAScope) {
+    EXPECT_EQ(echoes("x = 1; { x = 2; } echo(x);"), Echoes{"2"});
+}
+
+TEST(Scoping, DollarVariableReachesChildrenOfModuleCall) {
+    EXPECT_EQ(echoes("module m() children(); m($fn = 7) echo($fn);"), Echoes{"7"});
+    EXPECT_EQ(echoes("module m() echo($fn); m($fn = 7); m();"), (Echoes{"7", "0"}));
+    // Dynamic, not lexical: a function sees the caller's binding
+    EXPECT_EQ(echoes("function f() = $fa; module m() echo(f()); m($fa = 3);"), Echoes{"3"});
+}
+
+TEST(Scoping, DollarArgumentsOfTransformsReachChildrenButCsgIgnoresThem) {
+    EXPECT_EQ(echoes("translate([1, 0, 0], $fn = 5) echo($fn);"), Echoes{"5"});
+    EXPECT_EQ(echoes("union($fn = 5) echo($fn);"), Echoes{"0"});
+    EXPECT_EQ(echoes("difference($fn = 5) { echo($fn); }"), Echoes{"0"});
+    Imported r = importText("translate([0, 0, 0], $fn = 9) sphere(1); union($fn = 9) sphere(1);");
+    auto prims = primitives(*r.scene.root);
+    ASSERT_EQ(prims.size(), 2u);
+    EXPECT_EQ(prims[0].node->fragments.fn, 9);
+    EXPECT_EQ(prims[1].node->fragments.fn, 0);
+}
+
+TEST(Scoping, DefaultsAreEvaluatedInTheDefiningScope) {
+    // y's default sees the global x (assigned before any instantiation), not the parameter x
+    EXPECT_EQ(echoes("module m(x = 5, y = x * 2) echo(x, y); m(1); x = 7;"), Echoes{"1, 14"});
+    EXPECT_EQ(echoes("function f(a, b = a) = b; echo(f(1));"), Echoes{"undef"});
+}
+
+TEST(Scoping, FunctionValueShadowsFunctionDefinition) {
+    EXPECT_EQ(echoes("function f(x) = x + 1; f = function(x) x * 10; echo(f(1));"), Echoes{"10"});
+    // A non-function variable does not hide the definition
+    EXPECT_EQ(echoes("function g(x) = x + 1; g = 3; echo(g(1), g);"), Echoes{"2, 3"});
+}
+
+TEST(Scoping, ChildBlockAssignmentsBelongToTheCaller) {
+    // They are evaluated before the module body, so the module's $q is not visible yet
+    EXPECT_EQ(echoes("module m() { $q = 5; children(); } m() { r = $q; echo(r); }"),
+              Echoes{"undef"});
+    EXPECT_EQ(echoes("module m() { x = 5; children(); } m() { y = 2; echo(y); }"), Echoes{"2"});
+    // and arguments are evaluated in that frame too (UserModule::instantiate)
+    EXPECT_EQ(echoes("y = 1; module m(w) echo(w); m(y) { y = 5; }"), Echoes{"5"});
+}
+
+TEST(Scoping, ModuleBodyAssignmentOverridesParameter) {
+    EXPECT_EQ(echoes("module m(v) { echo(v); v = 5; } m(1);"), Echoes{"5"});
+}
+
+TEST(Scoping, UnknownNamedArgumentWarnsButIsBound) {
+    Imported r = importText("module m(a) echo(a, b); m(1, b = 2);");
+    EXPECT_EQ(r.echoes(), Echoes{"1, 2"});
+    EXPECT_TRUE(r.hasWarning("variable b not specified as parameter"));
+    // `$` names are exempt
+    Imported s = importText("module m(a) echo($x); m(1, $x = 3);");
+    EXPECT_EQ(s.echoes(), Echoes{"3"});
+    EXPECT_FALSE(s.hasWarning("not specified"));
+}
+
+TEST(Scoping, PositionalAndNamedArgumentsBindLikeOpenScad) {
+    EXPECT_EQ(echoes("function g(a, b) = [a, b]; echo(g(b = 1, 2), g(1, a = 2));"),
+              Echoes{"[2, 1], [2, undef]"});
+    Imported r = importText("module m(a) echo(a); m(1, 2);");
+    EXPECT_TRUE(r.hasWarning("Too many unnamed arguments supplied"));
+}
+
+TEST(Scoping, NestedDefinitionsAreLexical) {
+    EXPECT_EQ(echoes("module outer() { module inner() echo(\"in\"); inner(); } outer();"),
+              Echoes{"\"in\""});
+    EXPECT_THROW(importText("module outer() { module inner() cube(); } inner();"), EvalError);
+}
+
+TEST(Scoping, ChildrenCountsChildStatementsAndIsLexical) {
+    EXPECT_EQ(echoes("module m() echo($children); m() { cube(); for (i = [0:2]) cube(); }"),
+              Echoes{"2"});
+    // Inside the children, $children is the one of the module whose body wrote the call
+    EXPECT_EQ(echoes("module n() { echo(c = $children); children(0); }\n"
+                     "module w() { n() { echo(inner = $children); } }\n"
+                     "w() { cube(); cube(); }"),
+              (Echoes{"c = 1", "inner = 2"}));
+}
+
+TEST(Children, SelectionForms) {
+    std::string lib = "module pick(s) children(s); module all() children();\n";
+    EXPECT_EQ(echoes(lib + "pick(1) { echo(0); echo(1); echo(2); }"), Echoes{"1"});
+    EXPECT_EQ(echoes(lib + "pick(1.9) { echo(0); echo(1); echo(2); }"), Echoes{"1"});
+    EXPECT_EQ(echoes(lib + "pick([0, 2]) { echo(0); echo(1); echo(2); }"), (Echoes{"0", "2"}));
+    EXPECT_EQ(echoes(lib + "pick([1:2]) { echo(0); echo(1); echo(2); }"), (Echoes{"1", "2"}));
+    EXPECT_EQ(echoes(lib + "all() { echo(0); echo(1); }"), (Echoes{"0", "1"}));
+    Imported r = importText(lib + "pick(5) echo(0); pick(-1) echo(0); pick(\"a\") echo(0);");
+    EXPECT_TRUE(r.echoes().empty());
+    EXPECT_TRUE(r.hasWarning("Children index (5) out of bounds (1 children)"));
+    EXPECT_TRUE(r.hasWarning("Negative children index (-1) not allowed"));
+    EXPECT_TRUE(r.hasWarning("Bad parameter type (\"a\") for children"));
+}
+
+TEST(Children, TopLevelChildrenIsNothing) {
+    Imported r = importText("children(); difference() { children(); sphere(1); }");
+    ASSERT_EQ(r.scene.root->children.size(), 1u);
+    const ir::Node &diff = *r.scene.root->children[0];
+    ASSERT_EQ(diff.children.size(), 1u);  // children() at top level is null: sphere is the minuend
+    EXPECT_EQ(diff.children[0]->kind, ir::NodeKind::Primitive);
+}
+
+TEST(Recursion, DeepNonTailRecursion) {
+    EXPECT_EQ(echoes("function sumr(n) = n == 0 ? 0 : n + sumr(n - 1); echo(sumr(3000));"),
+              Echoes{"4.5015e+6"});
+    EXPECT_EQ(echoes("module r(n) { if (n > 0) r(n - 1); else echo(\"bottom\"); } r(2000);"),
+              Echoes{"\"bottom\""});
+}
+
+TEST(Recursion, TailCallsInTernaryBranchesRunIteratively) {
+    EXPECT_EQ(echoes("function sumt(n, acc = 0) = n == 0 ? acc : sumt(n - 1, acc + n);"
+                     "echo(sumt(100000));"),
+              Echoes{"5.00005e+9"});
+    // Mutual tail recursion through let() as well
+    EXPECT_EQ(echoes("function ev(n) = n == 0 ? true : let(m = n - 1) od(m);"
+                     "function od(n) = n == 0 ? false : ev(n - 1); echo(ev(200001));"),
+              Echoes{"false"});
+}
+
+TEST(Recursion, RunawayRecursionIsALocatedError) {
+    try {
+        importText("function f(n) = f(n + 1) + 1;\nx = f(0);");
+        FAIL() << "expected EvalError";
+    } catch (const EvalError &e) {
+        EXPECT_NE(std::string(e.what()).find("recursion too deep calling function 'f'"),
+                  std::string::npos);
+        EXPECT_EQ(e.loc().line, 1);
+        EXPECT_EQ(e.loc().col, 17);
+    }
+    try {
+        importText("module m(n) { cube(); m(n + 1); }\nm(0);");
+        FAIL() << "expected EvalError";
+    } catch (const EvalError &e) {
+        EXPECT_NE(std::string(e.what()).find("recursion too deep calling module 'm'"),
+                  std::string::npos);
+    }
+}
+
+/// Evaluates with explicit limits (on this thread), for budgets too slow to reach by default.
+ir::Scene evaluateWithLimits(const std::string &src, const EvalLimits &limits) {
+    DiagnosticSink diag;
+    SourceLoader loader({}, diag);
+    auto file = parseSource(src, "limits.scad", loader);
+    Evaluator evaluator(diag, limits);
+    return evaluator.evaluate(*file, loader);
+}
+
+TEST(Recursion, RunawayTailLoopHitsTheStepBudget) {
+    EvalLimits limits;
+    limits.maxSteps = 100000;
+    try {
+        evaluateWithLimits("function f(n) = f(n + 1);\nx = f(0);", limits);
+        FAIL() << "expected EvalError";
+    } catch (const EvalError &e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "evaluation too long: more than 100000 steps (calls, loop iterations and "
+                  "module instances); runaway loop or recursion?");
+        EXPECT_EQ(e.loc().toString(), "limits.scad:1:17");
+    }
+    // Loops count too
+    EXPECT_THROW(evaluateWithLimits("for (i = [0:999], j = [0:999]) echo();", limits), EvalError);
+    EXPECT_NO_THROW(evaluateWithLimits("for (i = [0:99], j = [0:99]) echo();", limits));
+}
+
+TEST(Limits, HugeListsAndStringsAreLocatedErrors) {
+    EXPECT_THROW(importText("x = [for (i = [0:99999]) [for (j = [0:99999]) j]];"), EvalError);
+    EXPECT_THROW(importText("function g(s) = g(str(s, s)); x = g(\"ab\");"), EvalError);
+    EXPECT_THROW(importText("x = [for (i = 0; i < 1e9; i = i + 1) i];"), EvalError);
+    try {
+        importText("x = [for (i = [0:99999]) [for (j = [0:99999]) j]];");
+    } catch (const EvalError &e) {
+        EXPECT_NE(std::string(e.what()).find("too many elements"), std::string::npos);
+    }
+}
+
+TEST(Limits, TooManyGeometryNodesIsALocatedError) {
+    try {
+        importText("for (i = [0:9998]) for (j = [0:9998]) cube();");
+        FAIL() << "expected EvalError";
+    } catch (const EvalError &e) {
+        EXPECT_NE(std::string(e.what()).find("too many geometry nodes"), std::string::npos);
+        EXPECT_EQ(e.loc().line, 1);
+    }
+}
+
+TEST(Limits, ModuleForOverTenThousandRangeElementsIsSkipped) {
+    Imported r = importText("for (i = [0:9999]) cube(); for (i = [0:9998]) cube();");
+    EXPECT_TRUE(r.hasWarning("Bad range parameter in for statement: too many elements (10000)"));
+    EXPECT_EQ(r.scene.root->primitiveCount(), 9999u);
+    // List comprehensions allow up to a million
+    EXPECT_EQ(echoes("echo(len([for (i = [0:999998]) 0]), [for (i = [0:1e6]) i]);"),
+              Echoes{"999999, []"});
+}
+
+TEST(Comprehensions, AllElementForms) {
+    EXPECT_EQ(echoes("echo([for (i = [0:3]) if (i % 2) i else -i]);"), Echoes{"[0, 1, -2, 3]"});
+    EXPECT_EQ(echoes("echo([for (i = [0:1], j = [0:1]) [i, j]]);"),
+              Echoes{"[[0, 0], [0, 1], [1, 0], [1, 1]]"});
+    EXPECT_EQ(echoes("echo([for (i = 0, j = 1; i < 3; i = i + 1, j = j * 2) [i, j]]);"),
+              Echoes{"[[0, 1], [1, 2], [2, 4]]"});
+    EXPECT_EQ(echoes("echo([for (i = [1:3]) let(a = i * 2) if (a > 2) a]);"), Echoes{"[4, 6]"});
+    EXPECT_EQ(echoes("echo([each [1, 2], each \"ab\", each [0:2], 7]);"),
+              Echoes{"[1, 2, \"a\", \"b\", 0, 1, 2, 7]"});
+    EXPECT_EQ(echoes("echo([for (i = [0:2]) for (j = [0:i]) j]);"), Echoes{"[0, 0, 1, 0, 1, 2]"});
+    EXPECT_EQ(echoes("echo([for (c = \"hé\") c], [for (x = 5) x], [for (x = undef) x]);"),
+              Echoes{"[\"h\", \"é\"], [5], []"});
+}
+
+TEST(Comprehensions, ClosuresCaptureTheLoopFrame) {
+    // OpenSCAD reuses one frame per loop variable, so every closure sees the last value
+    EXPECT_EQ(echoes("fs = [for (i = [0:2]) function(y) y + i]; echo(fs[0](10), fs[2](10));"),
+              Echoes{"12, 12"});
+}
+
+TEST(Functions, LiteralsClosuresAndPrefixExpressions) {
+    EXPECT_EQ(echoes("add = function(a, b = 2) a + b; echo(add(1), add(b = 3, a = 1));"),
+              Echoes{"3, 4"});
+    EXPECT_EQ(echoes("function adder(n) = function(x) x + n; echo(adder(10)(1));"), Echoes{"11"});
+    EXPECT_EQ(echoes("echo(let(a = 1, b = a + 1) a + b);"), Echoes{"3"});
+    EXPECT_EQ(echoes("x = echo(\"side\") 5; echo(x);"), (Echoes{"\"side\"", "5"}));
+    EXPECT_EQ(echoes("echo(function(x) x * 2);"), Echoes{"function(x) (x * 2)"});
+}
+
+TEST(IncludeUse, IncludeIsTextualAndMainOverridesLibraryValues) {
+    Imported r = importText("include <lib/inc_lib.scad>\nsize = 3;\nlibcube();\necho(libf());");
+    EXPECT_EQ(r.echoes(), (Echoes{"\"inc top\"", "30"}));
+    auto prims = primitives(*r.scene.root);
+    ASSERT_EQ(prims.size(), 1u);
+    EXPECT_EQ(std::get<ir::BoxPrim>(prims[0].node->shape).max, Vec3(3, 3, 3));
+    // No overwrite warning across files
+    EXPECT_FALSE(r.hasWarning("overwritten"));
+}
+
+TEST(IncludeUse, UseImportsOnlyModulesAndFunctions) {
+    Imported r = importText("use <lib/use_lib.scad>\nusedmod();\necho(usedf(1));\necho(libvar);");
+    // The library's own top-level echo and usedmod() call are not instantiated
+    EXPECT_EQ(r.echoes(), (Echoes{"libvar = 7, nested = \"nested\"", "8", "undef"}));
+    EXPECT_TRUE(r.hasWarning("Ignoring unknown variable 'libvar'"));
+    // The library's own `use` is not visible to its users
+    EXPECT_THROW(importText("use <lib/use_lib.scad>\necho(nestedf());"), EvalError);
+}
+
+TEST(IncludeUse, LaterUseWins) {
+    EXPECT_EQ(echoes("use <lib/override_a.scad>\nuse <lib/override_b.scad>\nwho();"),
+              Echoes{"\"b\""});
+    EXPECT_EQ(echoes("use <lib/override_a.scad>\nuse <lib/override_b.scad>\nmodule who() "
+                     "echo(\"own\");\nwho();"),
+              Echoes{"\"own\""});
+}
+
+TEST(IncludeUse, SearchPathOrder) {
+    ImportOptions opts;
+    opts.libraryPaths.push_back(dataDir() + "/extra");
+    EXPECT_EQ(importText("use <extra_lib.scad>\necho(extra());", "", opts).echoes(),
+              Echoes{"\"extra\""});
+    setenv("OPENSCADPATH", (dataDir() + "/nonexistent:" + dataDir() + "/envlib").c_str(), 1);
+    Echoes e = importText("use <env_lib.scad>\necho(fromenv());").echoes();
+    unsetenv("OPENSCADPATH");
+    EXPECT_EQ(e, Echoes{"\"env\""});
+    // scadray.scad is found in SCADRAY_LIBRARY_DIR (the project's scenes folder)
+    Imported r = importText("use <scadray.scad>\nbackground(color = \"red\");");
+    EXPECT_EQ(r.scene.settings.background, Rgb(1, 0, 0));
+    EXPECT_FALSE(r.hasWarning("metadata module"));
+}
+
+TEST(IncludeUse, DefinesOverrideTopLevelAssignments) {
+    ImportOptions opts;
+    opts.defines = {{"a", "5"}, {"b", "[1, 2] * 2"}};
+    Imported r = importText("a = 1; echo(a, b);", "", opts);
+    EXPECT_EQ(r.echoes(), Echoes{"5, [2, 4]"});
+    EXPECT_FALSE(r.hasWarning("overwritten"));
+}
+
+TEST(Echo, NamedArgumentsAndValueFormatting) {
+    EXPECT_EQ(echoes("echo(a = 1, \"s\", [1, \"x\"], undef, v = [0:2]);"),
+              Echoes{"a = 1, \"s\", [1, \"x\"], undef, v = [0 : 1 : 2]"});
+    Imported r = importText("echo(1);");
+    ASSERT_EQ(r.diag.all().size(), 1u);
+    EXPECT_EQ(r.diag.all()[0].severity, Severity::Note);
+    EXPECT_EQ(r.diag.all()[0].message, "ECHO: 1");
+    EXPECT_EQ(r.diag.all()[0].loc.line, 1);
+}
+
+TEST(EvaluatorPerformance, HundredThousandPrimitives) {
+    auto start = std::chrono::steady_clock::now();
+    Imported r = importText(
+        "for (i = [0:99], j = [0:99], k = [0:9]) translate([i, j, k]) color([i / 100, j / 100, "
+        "0.5])"
+        " cube(0.5);");
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(r.scene.root->primitiveCount(), 100000u);
+    EXPECT_EQ(r.scene.materials.size(), 10000u);
+    // Well under a second in RelWithDebInfo; generous here for loaded or Debug builds
+    EXPECT_LT(seconds, 5.0);
+}
+
+}  // namespace
+}  // namespace rt::scad::test

@@ -1,0 +1,278 @@
+// SPDX-License-Identifier: MIT
+// Cross-checks against the installed OpenSCAD 2021.01 binary: echo output of language probes,
+// and the IR of .scad files against the IR of OpenSCAD's own .csg export of them.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "importers/scad/test_support.h"
+
+namespace rt::scad::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool haveOpenScad() { return std::system("command -v openscad >/dev/null 2>&1") == 0; }
+
+#define REQUIRE_OPENSCAD()                                                                   \
+    do {                                                                                     \
+        if (!haveOpenScad()) GTEST_SKIP() << "openscad is not on PATH; cross-check skipped"; \
+    } while (0)
+
+struct RunResult {
+    int exitCode = -1;
+    std::string stderrText;
+};
+
+/// Runs `openscad -o out in` (with extra environment) and captures stderr.
+RunResult runOpenScad(const std::string &in, const std::string &out, const std::string &env = "") {
+    std::string errFile = out + ".stderr";
+    std::string cmd =
+        env + " openscad -o '" + out + "' '" + in + "' 2>'" + errFile + "' >/dev/null";
+    RunResult r;
+    int status = std::system(cmd.c_str());
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream e(errFile);
+    std::stringstream ss;
+    ss << e.rdbuf();
+    r.stderrText = ss.str();
+    return r;
+}
+
+std::string tempDir() {
+    fs::path p = fs::temp_directory_path() / ("scadray_xcheck_" + std::to_string(getpid()));
+    fs::create_directories(p);
+    return p.string();
+}
+
+std::vector<std::string> echoLines(const std::string &file) {
+    std::ifstream in(file);
+    std::vector<std::string> out;
+    std::string line;
+    while (std::getline(in, line))
+        if (line.rfind("ECHO: ", 0) == 0) out.push_back(line.substr(6));
+    return out;
+}
+
+std::vector<fs::path> filesIn(const std::string &dir) {
+    std::vector<fs::path> out;
+    for (const auto &e : fs::directory_iterator(dir))
+        if (e.path().extension() == ".scad") out.push_back(e.path());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+/// Compares the echo lines of OpenSCAD and of our importer for one file.
+void expectSameEchoes(const fs::path &f, const std::string &tmp) {
+    SCOPED_TRACE(f.string());
+    std::string out = tmp + "/" + f.stem().string() + ".echo";
+    RunResult r = runOpenScad(f.string(), out);
+    ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+    std::vector<std::string> expected = echoLines(out);
+    DiagnosticSink diag;
+    importScad(f.string(), diag);
+    std::vector<std::string> ours;
+    for (const auto &d : diag.all())
+        if (d.message.rfind("ECHO: ", 0) == 0) ours.push_back(d.message.substr(6));
+    ASSERT_EQ(ours.size(), expected.size());
+    for (size_t i = 0; i < ours.size(); ++i) EXPECT_EQ(ours[i], expected[i]) << "echo #" << i;
+}
+
+TEST(OpenScadCrossCheck, EchoOutputMatches) {
+    REQUIRE_OPENSCAD();
+    std::string tmp = tempDir();
+    auto files = filesIn(dataDir() + "/echo");
+    ASSERT_GE(files.size(), 8u);
+    for (const auto &f : files) expectSameEchoes(f, tmp);
+}
+
+/// OpenSCAD's installed example files that do not need uninstalled libraries (MCAD).
+std::vector<fs::path> installedExamples() {
+    std::vector<fs::path> out;
+    const std::string examples = "/usr/share/openscad/examples";
+    if (!fs::is_directory(examples)) return out;
+    for (const auto &dir : fs::directory_iterator(examples)) {
+        if (!dir.is_directory()) continue;
+        for (const auto &f : filesIn(dir.path().string())) {
+            std::ifstream in(f);
+            std::stringstream text;
+            text << in.rdbuf();
+            if (text.str().find("MCAD/") == std::string::npos) out.push_back(f);
+        }
+    }
+    return out;
+}
+
+TEST(OpenScadCrossCheck, InstalledExamplesEchoTheSame) {
+    REQUIRE_OPENSCAD();
+    auto files = installedExamples();
+    if (files.empty()) GTEST_SKIP() << "OpenSCAD's examples are not installed";
+    std::string tmp = tempDir() + "/examples_echo";
+    fs::create_directories(tmp);
+    for (const auto &f : files) expectSameEchoes(f, tmp);
+    EXPECT_GE(files.size(), 40u);
+}
+
+/// A node of the canonical form: groups with children are spliced into their parent, empty
+/// groups stay (they are real operands, e.g. a difference()'s minuend); primitives carry their
+/// world matrix and resolved material.
+struct Canon {
+    ir::NodeKind kind;
+    Mat4 world;
+    /// 1 + the sum of the largest entries of the transforms above: the .csg rounds each
+    /// matrix to 6 digits, so world entries carry that much absolute error (cancelling
+    /// translations can leave 1e-5 next to 0).
+    double magnitude;
+    const ir::Node *node;
+    bool highlight;
+    std::vector<Canon> children;
+};
+
+void canonicalize(const ir::Node &n, const Mat4 &parentWorld, std::vector<Canon> &out,
+                  double magnitude = 1) {
+    Mat4 world = parentWorld;
+    if (n.kind == ir::NodeKind::Transform) {
+        world = parentWorld * n.matrix;
+        double largest = 0;
+        for (const auto &row : n.matrix.m)
+            for (double e : row) largest = std::max(largest, std::fabs(e));
+        magnitude += largest;
+    }
+    std::vector<Canon> kids;
+    for (const auto &c : n.children) canonicalize(*c, world, kids, magnitude);
+    bool splice = (n.kind == ir::NodeKind::Group || n.kind == ir::NodeKind::Transform) &&
+                  !n.children.empty() && !n.highlight;
+    if (splice) {
+        for (auto &k : kids) out.push_back(std::move(k));
+        return;
+    }
+    ir::NodeKind kind = n.kind == ir::NodeKind::Transform ? ir::NodeKind::Group : n.kind;
+    out.push_back({kind, world, magnitude, &n, n.highlight, std::move(kids)});
+}
+
+bool near(double a, double b) {
+    return std::fabs(a - b) <= 1e-5 * std::max({1.0, std::fabs(a), std::fabs(b)});
+}
+
+void expectSameShape(const ir::PrimShape &a, const ir::PrimShape &b, const std::string &where) {
+    ASSERT_EQ(a.index(), b.index()) << where;
+    if (auto *s = std::get_if<ir::SpherePrim>(&a)) {
+        EXPECT_TRUE(near(s->radius, std::get<ir::SpherePrim>(b).radius)) << where;
+    } else if (auto *x = std::get_if<ir::BoxPrim>(&a)) {
+        const auto &y = std::get<ir::BoxPrim>(b);
+        for (int i = 0; i < 3; ++i) {
+            EXPECT_TRUE(near(x->min[i], y.min[i])) << where;
+            EXPECT_TRUE(near(x->max[i], y.max[i])) << where;
+        }
+    } else {
+        const auto &c = std::get<ir::CylinderPrim>(a), &d = std::get<ir::CylinderPrim>(b);
+        EXPECT_TRUE(near(c.z0, d.z0) && near(c.z1, d.z1) && near(c.r1, d.r1) && near(c.r2, d.r2))
+            << where;
+    }
+}
+
+void expectSameTree(const Canon &a, const ir::Scene &sa, const Canon &b, const ir::Scene &sb,
+                    const std::string &path) {
+    std::string where =
+        path + " (" + a.node->loc.toString() + " vs " + b.node->loc.toString() + ")";
+    ASSERT_EQ(static_cast<int>(a.kind), static_cast<int>(b.kind)) << where;
+    ASSERT_EQ(a.children.size(), b.children.size()) << where;
+    EXPECT_EQ(a.highlight, b.highlight) << where;
+    if (a.kind == ir::NodeKind::Primitive) {
+        double tolerance = 1e-5 * std::max(a.magnitude, b.magnitude);
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j)
+                EXPECT_NEAR(a.world.m[i][j], b.world.m[i][j],
+                            tolerance * std::max(1.0, std::fabs(a.world.m[i][j])))
+                    << where << " matrix[" << i << "][" << j << "] " << a.world.m[i][j] << " vs "
+                    << b.world.m[i][j];
+        expectSameShape(a.node->shape, b.node->shape, where);
+        // The .csg records $fn/$fa/$fs for round primitives only
+        if (!std::holds_alternative<ir::BoxPrim>(a.node->shape)) {
+            EXPECT_TRUE(near(a.node->fragments.fn, b.node->fragments.fn)) << where;
+            EXPECT_TRUE(near(a.node->fragments.fa, b.node->fragments.fa)) << where;
+            EXPECT_TRUE(near(a.node->fragments.fs, b.node->fragments.fs)) << where;
+        }
+        const ir::Material &ma = sa.materials.at(a.node->material);
+        const ir::Material &mb = sb.materials.at(b.node->material);
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(ma.color[c], mb.color[c], 1 / 255.0) << where << " colour";
+        EXPECT_NEAR(ma.transmit, mb.transmit, 1 / 255.0) << where << " transmit";
+    }
+    for (size_t i = 0; i < a.children.size(); ++i)
+        expectSameTree(a.children[i], sa, b.children[i], sb, path + "/" + std::to_string(i));
+}
+
+/// Imports `scad` and OpenSCAD's .csg export of it and compares the two IRs.
+void crossCheckFile(const fs::path &scad, const std::string &tmp) {
+    SCOPED_TRACE(scad.string());
+    std::string csg = tmp + "/" + scad.stem().string() + ".csg";
+    RunResult r = runOpenScad(scad.string(), csg);
+    ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+    DiagnosticSink d1, d2;
+    ir::Scene original = importScad(scad.string(), d1);
+    ir::Scene exported = importScad(csg, d2);
+    std::vector<Canon> a, b;
+    for (const auto &c : original.root->children) canonicalize(*c, Mat4(), a);
+    for (const auto &c : exported.root->children) canonicalize(*c, Mat4(), b);
+    EXPECT_EQ(original.root->primitiveCount(), exported.root->primitiveCount());
+    ASSERT_EQ(a.size(), b.size());
+    for (size_t i = 0; i < a.size(); ++i)
+        expectSameTree(a[i], original, b[i], exported, "root/" + std::to_string(i));
+}
+
+TEST(OpenScadCrossCheck, IrMatchesIrOfOpenScadCsgExport) {
+    REQUIRE_OPENSCAD();
+    std::string tmp = tempDir();
+    auto files = filesIn(dataDir() + "/csg");
+    ASSERT_GE(files.size(), 5u);
+    size_t primitivesChecked = 0;
+    for (const auto &f : files) {
+        crossCheckFile(f, tmp);
+        DiagnosticSink diag;
+        primitivesChecked += importScad(f.string(), diag).root->primitiveCount();
+    }
+    EXPECT_GT(primitivesChecked, 100u);
+}
+
+TEST(OpenScadCrossCheck, InstalledExamplesMatchTheirCsgExport) {
+    REQUIRE_OPENSCAD();
+    // Modules we skip are skipped on both sides alike
+    auto files = installedExamples();
+    if (files.empty()) GTEST_SKIP() << "OpenSCAD's examples are not installed";
+    std::string tmp = tempDir() + "/examples_csg";
+    fs::create_directories(tmp);
+    for (const auto &f : files) crossCheckFile(f, tmp);
+    EXPECT_GE(files.size(), 40u);
+}
+
+}  // namespace
+}  // namespace rt::scad::test
+
+namespace rt::scad::test {
+namespace {
+
+TEST(OpenScadCrossCheck, MetadataLibraryIsCleanOpenScad) {
+    REQUIRE_OPENSCAD();
+    // Every metadata module with every parameter named: OpenSCAD must accept it silently
+    std::string tmp = tempDir();
+    std::string env = "OPENSCADPATH='" + std::string(SCADRAY_SOURCE_DIR) + "/scenes'";
+    RunResult r = runOpenScad(dataDir() + "/metadata_scene.scad", tmp + "/metadata.csg", env);
+    EXPECT_EQ(r.exitCode, 0) << r.stderrText;
+    EXPECT_EQ(r.stderrText.find("WARNING"), std::string::npos) << r.stderrText;
+    EXPECT_EQ(r.stderrText.find("ERROR"), std::string::npos) << r.stderrText;
+    // And the export still holds the geometry under material()
+    std::ifstream csg(tmp + "/metadata.csg");
+    std::stringstream ss;
+    ss << csg.rdbuf();
+    EXPECT_NE(ss.str().find("sphere("), std::string::npos);
+}
+
+}  // namespace
+}  // namespace rt::scad::test
