@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: MIT
+// End-to-end tests of the scadray binary: every scene renders, bad input gives a located error
+// with a non-zero exit code, and no output file appears (or an old one survives) on failure.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/image/image_io.h"
+
+namespace rt {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+    int exitCode;
+    std::string err;
+    std::string out;
+};
+
+class Cli : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        dir = fs::temp_directory_path() /
+              (std::string("scadray_cli_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+    }
+    void TearDown() override { fs::remove_all(dir); }
+
+    CliRun run(const std::string &args) {
+        std::string cmd = std::string(SCADRAY_BINARY) + " " + args + " >" + (dir / "stdout").string() +
+                          " 2>" + (dir / "stderr").string();
+        int status = std::system(cmd.c_str());
+        CliRun r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "stderr"), slurp(dir / "stdout")};
+        return r;
+    }
+    std::string write(const std::string &name, const std::string &text) {
+        fs::path p = dir / name;
+        std::ofstream(p) << text;
+        return p.string();
+    }
+    static std::string slurp(const fs::path &p) {
+        std::ifstream in(p);
+        std::stringstream ss;
+        ss << in.rdbuf();
+        return ss.str();
+    }
+    static std::string scene(const std::string &name) {
+        return std::string(SCADRAY_SOURCE_DIR) + "/scenes/" + name;
+    }
+    fs::path dir;
+};
+
+TEST_F(Cli, EverySceneRenders) {
+    for (const auto &e : fs::directory_iterator(std::string(SCADRAY_SOURCE_DIR) + "/scenes")) {
+        if (e.path().extension() != ".scad" || e.path().filename() == "scadray.scad") continue;
+        SCOPED_TRACE(e.path().string());
+        std::string out = (dir / (e.path().stem().string() + ".png")).string();
+        CliRun r = run("render -q -W 64 -H 48 " + e.path().string() + " -o " + out);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+        ASSERT_TRUE(fs::exists(out));
+        Image img = readImage(out);
+        EXPECT_EQ(img.width(), 64);
+        // Not a blank picture: some pixel differs from the top-left one
+        bool varied = false;
+        for (int y = 0; y < img.height() && !varied; ++y)
+            for (int x = 0; x < img.width() && !varied; ++x)
+                varied = std::abs(img.at(x, y).g - img.at(0, 0).g) > 0.05;
+        EXPECT_TRUE(varied);
+    }
+}
+
+TEST_F(Cli, SummaryReportsRaysAndTime) {
+    std::string out = (dir / "a.png").string();
+    CliRun r = run("render -W 32 -H 24 " + scene("glass.scad") + " -o " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("rays:"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("refraction"), std::string::npos);
+    EXPECT_NE(r.err.find(" s\n"), std::string::npos);
+}
+
+TEST_F(Cli, SyntaxErrorIsLocatedAndWritesNothing) {
+    std::string in = write("bad.scad", "cube(1);\nsphere(r=2;\n");
+    std::string out = (dir / "bad.png").string();
+    CliRun r = run("render " + in + " -o " + out);
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.err.find("bad.scad:2:"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("error"), std::string::npos);
+    EXPECT_NE(r.err.find("sphere(r=2;"), std::string::npos) << "excerpt of the offending line";
+    EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(Cli, UnknownModuleIsAnError) {
+    std::string in = write("unknown.scad", "translate([1,0,0])\n  frobnicate(3);\n");
+    CliRun r = run("render " + in + " -o " + (dir / "u.png").string());
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.err.find("unknown.scad:2:3"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("frobnicate"), std::string::npos);
+    EXPECT_FALSE(fs::exists(dir / "u.png"));
+}
+
+TEST_F(Cli, FailureKeepsAnExistingOutput) {
+    std::string out = (dir / "keep.png").string();
+    ASSERT_EQ(run("render -q -W 16 -H 16 " + scene("csg_part.scad") + " -o " + out).exitCode, 0);
+    auto size = fs::file_size(out);
+    std::string in = write("broken.scad", "cube(");
+    EXPECT_EQ(run("render " + in + " -o " + out).exitCode, 1);
+    EXPECT_EQ(fs::file_size(out), size);
+}
+
+TEST_F(Cli, BadOptionsAndFiles) {
+    EXPECT_EQ(run("render " + scene("glass.scad") + " -W 0 -o x.png").exitCode, 2);
+    EXPECT_EQ(run("render " + scene("glass.scad") + " -s 3 -o x.png").exitCode, 2);
+    EXPECT_EQ(run("render " + scene("glass.scad") + " --bits 12 -o x.png").exitCode, 2);
+    EXPECT_EQ(run("frobnicate").exitCode, 2);
+    CliRun missing = run("render " + (dir / "nope.scad").string());
+    EXPECT_EQ(missing.exitCode, 1);
+    EXPECT_NE(missing.err.find("no such file"), std::string::npos);
+    CliRun type = run("render " + write("x.txt", "cube(1);"));
+    EXPECT_EQ(type.exitCode, 1);
+    CliRun format = run("render -q " + scene("glass.scad") + " -W 8 -H 8 -o " + (dir / "x.bmpx").string());
+    EXPECT_EQ(format.exitCode, 1);
+    EXPECT_FALSE(fs::exists(dir / "x.bmpx"));
+}
+
+TEST_F(Cli, PlainScadGetsCameraAndLights) {
+    std::string in = write("plain.scad", "difference() { cube(10, center=true); sphere(6.5, $fn=48); }\n");
+    std::string out = (dir / "plain.exr").string();
+    CliRun r = run("render -W 48 -H 36 " + in + " -o " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("no camera()"), std::string::npos);
+    EXPECT_NE(r.err.find("no lights"), std::string::npos);
+    Image img = readImage(out);
+    // The model is centred: the centre pixel shows OpenSCAD's yellow, lit
+    Rgb c = img.at(24, 18);
+    EXPECT_GT(c.r, c.b * 2);
+    EXPECT_GT(c.g, c.b);
+}
+
+TEST_F(Cli, DumpPrintsTheIr) {
+    std::string in = write("d.scad", "translate([1,2,3]) cube(2);\n");
+    CliRun r = run("dump " + in);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("transform [[1, 0, 0, 1], [0, 1, 0, 2], [0, 0, 1, 3]]"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("box min [0, 0, 0] max [2, 2, 2]"), std::string::npos);
+    EXPECT_NE(r.out.find("camera automatic"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace rt

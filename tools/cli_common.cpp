@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: MIT
+// Scene loading and diagnostic printing for the CLI.
+#include "tools/cli_common.h"
+
+#include <filesystem>
+#include <iostream>
+#include <stdexcept>
+
+#include "core/ir/scene_defaults.h"
+#include "importers/scad/scad_importer.h"
+
+namespace rt::cli {
+
+void attachPrinter(DiagnosticSink &diag, bool quiet) {
+    diag.setListener([quiet](const Diagnostic &d) {
+        if (quiet && d.severity == Severity::Note) return;
+        std::cerr << formatDiagnostic(d, d.severity != Severity::Note) << "\n";
+    });
+}
+
+ir::Scene loadScene(const std::string &path, DiagnosticSink &diag, const LoadOptions &opts) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (!fs::exists(path, ec)) throw std::runtime_error(path + ": error: no such file");
+    if (fs::is_directory(path, ec)) throw std::runtime_error(path + ": error: is a folder");
+    std::string ext = fs::path(path).extension().string();
+    for (auto &ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    ir::Scene scene;
+    if (ext == ".scad") {
+        scad::ImportOptions io;
+        io.libraryPaths = opts.libraryPaths;
+        io.defines = opts.defines;
+        scene = scad::importScad(path, diag, io);
+    } else {
+        throw std::runtime_error(path + ": error: unknown scene type '" + ext +
+                                 "' (scadray reads .scad)");
+    }
+    ir::completeScene(scene, diag);
+    return scene;
+}
+
+std::pair<std::string, std::string> parseDefine(const std::string &text) {
+    auto eq = text.find('=');
+    if (eq == std::string::npos || eq == 0)
+        throw std::invalid_argument("-D expects name=value, got '" + text + "'");
+    return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+}  // namespace rt::cli

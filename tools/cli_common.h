@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: MIT
+// Shared pieces of the scadray command line: loading a scene by file type, printing
+// diagnostics, and the exit codes.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/ir/diagnostics.h"
+#include "core/ir/scene_ir.h"
+
+namespace rt::cli {
+
+/// Exit codes: 0 success, 1 a problem with the input or the render, 2 bad command-line usage.
+constexpr int kExitOk = 0;
+constexpr int kExitInputError = 1;
+constexpr int kExitUsage = 2;
+
+struct LoadOptions {
+    std::vector<std::string> libraryPaths;
+    std::vector<std::pair<std::string, std::string>> defines;
+    bool quiet = false;
+};
+
+/// Prints warnings (and notes unless quiet) to stderr as they are reported.
+void attachPrinter(DiagnosticSink &diag, bool quiet);
+
+/// Reads a scene by extension (.scad) and completes it (automatic camera, default lights).
+/// Throws LocatedError for problems in the file, std::runtime_error for others.
+ir::Scene loadScene(const std::string &path, DiagnosticSink &diag, const LoadOptions &opts);
+
+/// Parses "name=expr" for -D.
+std::pair<std::string, std::string> parseDefine(const std::string &text);
+
+}  // namespace rt::cli

@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: MIT
+// `scadray render`: scene file -> ray-traced image.
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "core/image/image_io.h"
+#include "core/render/render_scene.h"
+#include "core/render/renderer.h"
+#include "tools/cli_common.h"
+#include "tools/commands.h"
+
+namespace rt::cli {
+
+namespace {
+
+struct RenderArgs {
+    std::string input, output;
+    int width = 640, height = 480, samples = 1, threads = 0, bits = 8;
+    uint64_t seed = 0;
+    bool linear = false, quiet = false;
+    std::vector<std::string> defines, libs;
+};
+
+std::string formatCount(int64_t n) {
+    char buf[32];
+    if (n >= 10'000'000)
+        std::snprintf(buf, sizeof buf, "%.1fM", n / 1e6);
+    else if (n >= 10'000)
+        std::snprintf(buf, sizeof buf, "%.1fk", n / 1e3);
+    else
+        std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(n));
+    return buf;
+}
+
+int runRender(const RenderArgs &a) {
+    LoadOptions lo;
+    lo.quiet = a.quiet;
+    lo.libraryPaths = a.libs;
+    for (const auto &d : a.defines) lo.defines.push_back(parseDefine(d));
+    RenderOptions ro;
+    ro.width = a.width;
+    ro.height = a.height;
+    ro.samplesPerPixel = a.samples;
+    ro.threads = a.threads;
+    ro.seed = a.seed;
+    validateRenderOptions(ro);  // fail on bad options before reading the scene
+    std::string output = a.output;
+    if (output.empty()) output = std::filesystem::path(a.input).stem().string() + ".png";
+
+    DiagnosticSink diag;
+    attachPrinter(diag, a.quiet);
+    ir::Scene scene = loadScene(a.input, diag, lo);
+    auto rs = RenderScene::compile(scene, diag);
+
+    bool tty = !a.quiet && isatty(STDERR_FILENO);
+    if (tty)
+        ro.progress = [](double f) {
+            std::fprintf(stderr, "\rrendering %3d%%", static_cast<int>(f * 100));
+            std::fflush(stderr);
+        };
+    RenderResult r = renderImage(*rs, ro);
+    if (tty) std::fprintf(stderr, "\r              \r");
+
+    WriteOptions wo;
+    wo.pngDepth = a.bits == 16 ? PngDepth::Bits16 : PngDepth::Bits8;
+    wo.linearPng = a.linear;
+    writeImage(r.image, output, wo);
+
+    if (!a.quiet) {
+        const RayStats &s = r.stats;
+        std::fprintf(stderr,
+                     "scadray: %s: %dx%d, %d spp, %d objects (%zu primitives), %d threads, "
+                     "%.3f s\n",
+                     output.c_str(), a.width, a.height, a.samples,
+                     static_cast<int>(rs->stats().objects), rs->stats().primitives, r.threads,
+                     r.seconds);
+        std::fprintf(stderr,
+                     "  rays: %s total (%s camera, %s shadow, %s reflection, %s refraction, "
+                     "%s transmission, %s internal reflection), %.2f Mrays/s\n",
+                     formatCount(s.totalRays()).c_str(), formatCount(s.camera).c_str(),
+                     formatCount(s.shadow).c_str(), formatCount(s.reflection).c_str(),
+                     formatCount(s.refraction).c_str(), formatCount(s.transmission).c_str(),
+                     formatCount(s.internalReflection).c_str(),
+                     s.totalRays() / std::max(r.seconds, 1e-9) / 1e6);
+        std::fprintf(stderr, "  csg: %s span merges, %s pruned subtrees; non-finite pixels: %lld\n",
+                     formatCount(s.spanOps).c_str(), formatCount(s.prunedSubtrees).c_str(),
+                     static_cast<long long>(s.nonFinite));
+    }
+    return kExitOk;
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App &app, std::function<int()> &action) {
+    auto args = std::make_shared<RenderArgs>();
+    CLI::App *cmd = app.add_subcommand("render", "Ray-trace a scene to an image (.png or .exr)");
+    cmd->add_option("scene", args->input, "Scene file (.scad)")->required();
+    cmd->add_option("-o,--output", args->output,
+                    "Output image; .png (sRGB) or .exr (linear float). Default: <scene>.png");
+    cmd->add_option("-W,--width", args->width, "Image width in pixels")->capture_default_str();
+    cmd->add_option("-H,--height", args->height, "Image height in pixels")->capture_default_str();
+    cmd->add_option("-s,--samples", args->samples,
+                    "Samples per pixel, a square (1, 4, 9, 16, ...); 1 = pixel centres")
+        ->capture_default_str();
+    cmd->add_option("--seed", args->seed, "Seed of the sample pattern")->capture_default_str();
+    cmd->add_option("-t,--threads", args->threads, "Render threads (0 = all cores)")
+        ->capture_default_str();
+    cmd->add_option("--bits", args->bits, "PNG bits per channel")
+        ->check(CLI::IsMember({8, 16}))
+        ->capture_default_str();
+    cmd->add_flag("--linear", args->linear, "Write PNG values linear instead of sRGB");
+    cmd->add_option("-D,--define", args->defines, "Override a top-level variable: name=value");
+    cmd->add_option("-L,--library", args->libs, "Extra folder searched by include<> and use<>");
+    cmd->add_flag("-q,--quiet", args->quiet, "Only warnings and errors");
+    cmd->callback([args, &action]() { action = [args]() { return runRender(*args); }; });
+}
+
+}  // namespace rt::cli

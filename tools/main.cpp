@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+// scadray command line: the only place that catches errors and maps them to exit codes.
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "core/ir/diagnostics.h"
+#include "tools/cli_common.h"
+#include "tools/commands.h"
+
+int main(int argc, char **argv) {
+    using namespace rt;
+    CLI::App app{"scadray: ray-trace OpenSCAD scenes and convert them for POV-Ray"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "scadray 0.1.0");
+    std::function<int()> action;
+    cli::addRenderCommand(app, action);
+    cli::addDumpCommand(app, action);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError &e) {
+        int rc = app.exit(e);
+        return rc == 0 ? cli::kExitOk : cli::kExitUsage;
+    }
+    try {
+        return action ? action() : cli::kExitUsage;
+    } catch (const LocatedError &e) {
+        std::cerr << formatDiagnostic(e.diagnostic()) << "\n";
+        return cli::kExitInputError;
+    } catch (const std::invalid_argument &e) {
+        std::cerr << "scadray: error: " << e.what() << "\n";
+        return cli::kExitUsage;
+    } catch (const std::bad_alloc &) {
+        std::cerr << "scadray: error: out of memory\n";
+        return cli::kExitInputError;
+    } catch (const std::exception &e) {
+        std::cerr << "scadray: error: " << e.what() << "\n";
+        return cli::kExitInputError;
+    }
+}
