@@ -2,6 +2,7 @@
 // Scene loading and diagnostic printing for the CLI.
 #include "tools/cli_common.h"
 
+#include <CLI/CLI.hpp>
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
@@ -10,6 +11,20 @@
 #include "importers/scad/scad_importer.h"
 
 namespace rt::cli {
+
+void SceneArgs::addTo(CLI::App &cmd) {
+    cmd.add_option("scene", input, "Scene file (.scad)")->required();
+    cmd.add_option("-D,--define", defines, "Override a top-level variable: name=value");
+    cmd.add_option("-L,--library", libraries, "Extra folder searched by include<> and use<>");
+}
+
+LoadOptions SceneArgs::loadOptions(bool quiet) const {
+    LoadOptions lo;
+    lo.quiet = quiet;
+    lo.libraryPaths = libraries;
+    for (const auto &d : defines) lo.defines.push_back(parseDefine(d));
+    return lo;
+}
 
 void attachPrinter(DiagnosticSink &diag, bool quiet) {
     diag.setListener([quiet](const Diagnostic &d) {

@@ -10,6 +10,10 @@
 #include "core/ir/diagnostics.h"
 #include "core/ir/scene_ir.h"
 
+namespace CLI {
+class App;
+}
+
 namespace rt::cli {
 
 /// Exit codes: 0 success, 1 a problem with the input or the render, 2 bad command-line usage.
@@ -21,6 +25,17 @@ struct LoadOptions {
     std::vector<std::string> libraryPaths;
     std::vector<std::pair<std::string, std::string>> defines;
     bool quiet = false;
+};
+
+/// The scene argument and the options every scene-reading subcommand takes (-D, -L).
+struct SceneArgs {
+    std::string input;
+    std::vector<std::string> defines, libraries;
+
+    /// Registers the positional scene and -D/-L on a subcommand.
+    void addTo(CLI::App &cmd);
+    /// Throws std::invalid_argument for a malformed -D.
+    LoadOptions loadOptions(bool quiet) const;
 };
 
 /// Prints warnings (and notes unless quiet) to stderr as they are reported.

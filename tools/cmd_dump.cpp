@@ -11,19 +11,10 @@ namespace rt::cli {
 
 namespace {
 
-struct DumpArgs {
-    std::string input;
-    std::vector<std::string> defines, libs;
-};
-
-int runDump(const DumpArgs &a) {
-    LoadOptions lo;
-    lo.quiet = true;
-    lo.libraryPaths = a.libs;
-    for (const auto &d : a.defines) lo.defines.push_back(parseDefine(d));
+int runDump(const SceneArgs &a) {
     DiagnosticSink diag;
     attachPrinter(diag, true);
-    ir::Scene scene = loadScene(a.input, diag, lo);
+    ir::Scene scene = loadScene(a.input, diag, a.loadOptions(true));
     std::cout << ir::dump(scene);
     return kExitOk;
 }
@@ -31,11 +22,9 @@ int runDump(const DumpArgs &a) {
 }  // namespace
 
 void addDumpCommand(CLI::App &app, std::function<int()> &action) {
-    auto args = std::make_shared<DumpArgs>();
+    auto args = std::make_shared<SceneArgs>();
     CLI::App *cmd = app.add_subcommand("dump", "Print the scene IR (after defaults) as text");
-    cmd->add_option("scene", args->input, "Scene file (.scad)")->required();
-    cmd->add_option("-D,--define", args->defines, "Override a top-level variable: name=value");
-    cmd->add_option("-L,--library", args->libs, "Extra folder searched by include<> and use<>");
+    args->addTo(*cmd);
     cmd->callback([args, &action]() { action = [args]() { return runDump(*args); }; });
 }
 

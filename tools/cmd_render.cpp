@@ -18,11 +18,11 @@ namespace rt::cli {
 namespace {
 
 struct RenderArgs {
-    std::string input, output;
+    SceneArgs scene;
+    std::string output;
     int width = 640, height = 480, samples = 1, threads = 0, bits = 8;
     uint64_t seed = 0;
     bool linear = false, quiet = false;
-    std::vector<std::string> defines, libs;
 };
 
 std::string formatCount(int64_t n) {
@@ -37,10 +37,7 @@ std::string formatCount(int64_t n) {
 }
 
 int runRender(const RenderArgs &a) {
-    LoadOptions lo;
-    lo.quiet = a.quiet;
-    lo.libraryPaths = a.libs;
-    for (const auto &d : a.defines) lo.defines.push_back(parseDefine(d));
+    LoadOptions lo = a.scene.loadOptions(a.quiet);
     RenderOptions ro;
     ro.width = a.width;
     ro.height = a.height;
@@ -49,11 +46,11 @@ int runRender(const RenderArgs &a) {
     ro.seed = a.seed;
     validateRenderOptions(ro);  // fail on bad options before reading the scene
     std::string output = a.output;
-    if (output.empty()) output = std::filesystem::path(a.input).stem().string() + ".png";
+    if (output.empty()) output = std::filesystem::path(a.scene.input).stem().string() + ".png";
 
     DiagnosticSink diag;
     attachPrinter(diag, a.quiet);
-    ir::Scene scene = loadScene(a.input, diag, lo);
+    ir::Scene scene = loadScene(a.scene.input, diag, lo);
     auto rs = RenderScene::compile(scene, diag);
 
     bool tty = !a.quiet && isatty(STDERR_FILENO);
@@ -98,7 +95,7 @@ int runRender(const RenderArgs &a) {
 void addRenderCommand(CLI::App &app, std::function<int()> &action) {
     auto args = std::make_shared<RenderArgs>();
     CLI::App *cmd = app.add_subcommand("render", "Ray-trace a scene to an image (.png or .exr)");
-    cmd->add_option("scene", args->input, "Scene file (.scad)")->required();
+    args->scene.addTo(*cmd);
     cmd->add_option("-o,--output", args->output,
                     "Output image; .png (sRGB) or .exr (linear float). Default: <scene>.png");
     cmd->add_option("-W,--width", args->width, "Image width in pixels")->capture_default_str();
@@ -113,8 +110,6 @@ void addRenderCommand(CLI::App &app, std::function<int()> &action) {
         ->check(CLI::IsMember({8, 16}))
         ->capture_default_str();
     cmd->add_flag("--linear", args->linear, "Write PNG values linear instead of sRGB");
-    cmd->add_option("-D,--define", args->defines, "Override a top-level variable: name=value");
-    cmd->add_option("-L,--library", args->libs, "Extra folder searched by include<> and use<>");
     cmd->add_flag("-q,--quiet", args->quiet, "Only warnings and errors");
     cmd->callback([args, &action]() { action = [args]() { return runRender(*args); }; });
 }

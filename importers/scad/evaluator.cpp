@@ -953,20 +953,23 @@ ir::NodePtr Evaluator::moduleLet(const ModuleInstantiation &inst, const FramePtr
     return node;
 }
 
-ir::NodePtr Evaluator::moduleEcho(const ModuleInstantiation &inst, const FramePtr &f) {
-    evalEcho(inst.args, f, inst.loc);
+/// echo() and assert() with children act as a group; without children they produce nothing
+/// (null, not empty: a difference() skips them when choosing its minuend).
+ir::NodePtr Evaluator::childrenGroupOrNull(const ModuleInstantiation &inst, const FramePtr &f) {
     if (inst.children.empty()) return nullptr;
     ir::NodePtr node = newNode(ir::NodeKind::Group, inst.loc);
     instantiateChildren(inst, f, node->children);
     return node;
 }
 
+ir::NodePtr Evaluator::moduleEcho(const ModuleInstantiation &inst, const FramePtr &f) {
+    evalEcho(inst.args, f, inst.loc);
+    return childrenGroupOrNull(inst, f);
+}
+
 ir::NodePtr Evaluator::moduleAssert(const ModuleInstantiation &inst, const FramePtr &f) {
     evalAssert(inst.args, f, inst.loc);
-    if (inst.children.empty()) return nullptr;
-    ir::NodePtr node = newNode(ir::NodeKind::Group, inst.loc);
-    instantiateChildren(inst, f, node->children);
-    return node;
+    return childrenGroupOrNull(inst, f);
 }
 
 ir::NodePtr Evaluator::moduleChildren(const ModuleInstantiation &inst, const FramePtr &f) {

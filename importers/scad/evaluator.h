@@ -150,6 +150,7 @@ class Evaluator {
     void instantiateChildren(const ModuleInstantiation &inst, const FramePtr &caller,
                              std::vector<ir::NodePtr> &out, const Scope *scope = nullptr);
     ir::NodePtr newNode(ir::NodeKind kind, const SourceLoc &loc);
+    ir::NodePtr childrenGroupOrNull(const ModuleInstantiation &inst, const FramePtr &f);
     ir::NodePtr groupOf(ir::NodeKind kind, const SourceLoc &loc, std::vector<ir::NodePtr> children);
 
     // Control modules (evaluator.cpp)
