@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/ir/ir_validate.h"
 #include "core/math/float_util.h"
 
 namespace rt::ir {
@@ -34,6 +35,7 @@ Camera cameraFromViewport(const Vec3 &vpt, const Vec3 &vpr, double vpd, double v
 }
 
 void completeScene(Scene &scene, DiagnosticSink &diag) {
+    validateScene(scene, diag);
     if (!scene.camera) {
         Bounds3 b = worldBounds(*scene.root);
         Vec3 centre(0);

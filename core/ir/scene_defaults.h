@@ -25,7 +25,8 @@ Camera cameraFromViewport(const Vec3 &vpt, const Vec3 &vpr, double vpd, double v
 /// Fills what the scene leaves out: when there is no camera, one that frames the model's bounds
 /// from OpenSCAD's default view direction (viewall + autocenter); when there are no lights, a key
 /// light with shadows and a shadowless fill placed relative to the camera. An empty scene gets a
-/// camera looking at the origin. Notes what it added to `diag`.
+/// camera looking at the origin. Notes what it added to `diag`. Validates the scene first
+/// (ir::validateScene): out-of-range or non-finite input is a located SceneError.
 void completeScene(Scene &scene, DiagnosticSink &diag);
 
 }  // namespace rt::ir

@@ -105,6 +105,17 @@ TEST_F(Cli, UnknownModuleIsAnError) {
     EXPECT_FALSE(fs::exists(dir / "u.png"));
 }
 
+TEST_F(Cli, AbsurdSizesAreLocatedErrors) {
+    std::string in = write("huge.scad", "cube(1);\ntranslate([0,0,1]) sphere(1e300);\n");
+    CliRun r = run("render " + in + " -o " + (dir / "h.png").string());
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.err.find("huge.scad:2:20: error"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "h.png"));
+    std::string big = write("big.scad", "cube(1);");
+    EXPECT_EQ(run("render " + big + " -W 100000 -o " + (dir / "b.png").string()).exitCode, 2);
+    EXPECT_EQ(run("render " + big + " -s 1000000 -o " + (dir / "b.png").string()).exitCode, 2);
+}
+
 TEST_F(Cli, FailureKeepsAnExistingOutput) {
     std::string out = (dir / "keep.png").string();
     ASSERT_EQ(run("render -q -W 16 -H 16 " + scene("csg_part.scad") + " -o " + out).exitCode, 0);

@@ -47,6 +47,7 @@ TEST(SceneDefaults, AutomaticCameraFramesTheModel) {
 
 TEST(SceneDefaults, KeepsWhatTheSceneSets) {
     ir::Scene s;
+    s.root->children.push_back(sphere(1, s.addMaterial(ir::Material())));
     s.camera = lookAt(Vec3(1, 2, 3), Vec3(0), 50);
     s.lights.push_back(pointLight(Vec3(5)));
     DiagnosticSink diag;

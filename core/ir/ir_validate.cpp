@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: MIT
+// Range and finiteness checks of the IR.
+#include "core/ir/ir_validate.h"
+
+#include <cmath>
+
+#include "core/math/transform.h"
+
+namespace rt::ir {
+
+namespace {
+
+std::string number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+std::string vec(const Vec3 &v) {
+    return "[" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + "]";
+}
+
+bool inRange(const Vec3 &p) {
+    return p.isFinite() && std::abs(p.x) <= kMaxCoordinate && std::abs(p.y) <= kMaxCoordinate &&
+           std::abs(p.z) <= kMaxCoordinate;
+}
+
+/// Walks the tree with composed transforms and checks every primitive's world bounds.
+void checkNode(const Node &node, const Mat4 &m, int *primitives) {
+    Mat4 here = node.kind == NodeKind::Transform ? m * node.matrix : m;
+    if (node.kind == NodeKind::Transform && !here.isFinite())
+        throw SceneError(node.loc, "transform has non-finite entries");
+    if (node.kind == NodeKind::Primitive) {
+        ++*primitives;
+        Bounds3 b = Transform(here, Mat4()).bounds(primitiveBounds(node.shape));
+        if (!inRange(b.min) || !inRange(b.max))
+            throw SceneError(node.loc, "object extends to " + vec(b.min) + " .. " + vec(b.max) +
+                                           ", beyond the supported range of ±" +
+                                           number(kMaxCoordinate));
+        double extent = maxComponent(b.diagonal());
+        if (!(extent >= kMinExtent))
+            throw SceneError(node.loc, "object size " + number(extent) +
+                                           " is below the supported minimum of " +
+                                           number(kMinExtent));
+    }
+    for (const auto &c : node.children) checkNode(*c, here, primitives);
+}
+
+}  // namespace
+
+void validateScene(const Scene &scene, DiagnosticSink &diag) {
+    int primitives = 0;
+    checkNode(*scene.root, Mat4(), &primitives);
+    if (primitives == 0)
+        diag.warning(scene.root->loc, "the scene has no geometry; the image shows only the "
+                                      "background");
+    for (const Light &l : scene.lights) {
+        if (!inRange(l.position))
+            throw SceneError(l.loc, "light position " + vec(l.position) +
+                                        " is not finite or beyond ±" + number(kMaxCoordinate));
+        if (!l.color.isFinite()) throw SceneError(l.loc, "light colour is not finite");
+    }
+    if (scene.camera) {
+        const Camera &c = *scene.camera;
+        if (!inRange(c.location) || !inRange(c.lookAt) || !c.sky.isFinite())
+            throw SceneError(c.loc, "camera vectors are not finite or beyond ±" +
+                                        number(kMaxCoordinate));
+        if (!(c.fov > 0 && c.fov < 180))
+            throw SceneError(c.loc, "camera field of view " + number(c.fov) +
+                                        " is not between 0 and 180 degrees");
+    }
+    for (const Material &m : scene.materials)
+        if (!m.color.isFinite() || !std::isfinite(m.filter) || !std::isfinite(m.transmit) ||
+            !std::isfinite(m.interior.ior))
+            throw SceneError(m.loc, "material has non-finite values");
+}
+
+}  // namespace rt::ir

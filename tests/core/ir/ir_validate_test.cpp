@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: MIT
+// Scene validation: absurd sizes and non-finite values are located errors; empty scenes warn.
+#include <gtest/gtest.h>
+
+#include "core/ir/ir_validate.h"
+#include "support/scene_builder.h"
+
+namespace rt {
+namespace {
+
+using namespace rt::test;
+
+SourceLoc at(int line) { return SourceLoc(std::make_shared<const std::string>("s.scad"), line, 3); }
+
+TEST(IrValidate, AcceptsOrdinaryAndExtremeButRepresentableScenes) {
+    ir::Scene s;
+    int m = s.addMaterial(ir::Material());
+    s.root->children.push_back(translated(Vec3(1e6, -1e6, 0), sphere(1e-6, m)));
+    s.root->children.push_back(box(Vec3(-1e99), Vec3(1e99), m));
+    DiagnosticSink diag;
+    EXPECT_NO_THROW(ir::validateScene(s, diag));
+    EXPECT_EQ(diag.all().size(), 0u);
+}
+
+TEST(IrValidate, HugeObjectIsALocatedError) {
+    ir::Scene s;
+    auto b = box(Vec3(0), Vec3(1e150), s.addMaterial(ir::Material()));
+    b->loc = at(7);
+    s.root->children.push_back(std::move(b));
+    DiagnosticSink diag;
+    try {
+        ir::validateScene(s, diag);
+        FAIL() << "expected SceneError";
+    } catch (const SceneError &e) {
+        EXPECT_EQ(e.loc().line, 7);
+        EXPECT_NE(std::string(e.what()).find("beyond the supported range"), std::string::npos);
+    }
+}
+
+TEST(IrValidate, TinyObjectOrScaleIsALocatedError) {
+    ir::Scene s;
+    auto t = transformed(Mat4::scale(Vec3(1e-120)), sphere(1, s.addMaterial(ir::Material())));
+    t->children[0]->loc = at(2);
+    s.root->children.push_back(std::move(t));
+    DiagnosticSink diag;
+    EXPECT_THROW(ir::validateScene(s, diag), SceneError);
+}
+
+TEST(IrValidate, NonFiniteLightsCameraAndMaterials) {
+    DiagnosticSink diag;
+    {
+        ir::Scene s;
+        s.root->children.push_back(sphere(1, s.addMaterial(ir::Material())));
+        s.lights.push_back(pointLight(Vec3(NAN, 0, 0)));
+        EXPECT_THROW(ir::validateScene(s, diag), SceneError);
+    }
+    {
+        ir::Scene s;
+        s.root->children.push_back(sphere(1, s.addMaterial(ir::Material())));
+        s.camera = lookAt(Vec3(0, -10, 0), Vec3(0), 200);
+        EXPECT_THROW(ir::validateScene(s, diag), SceneError);
+    }
+    {
+        ir::Scene s;
+        ir::Material bad;
+        bad.interior.ior = INFINITY;
+        s.root->children.push_back(sphere(1, s.addMaterial(bad)));
+        EXPECT_THROW(ir::validateScene(s, diag), SceneError);
+    }
+}
+
+TEST(IrValidate, EmptySceneWarns) {
+    ir::Scene s;
+    DiagnosticSink diag;
+    ir::validateScene(s, diag);
+    EXPECT_EQ(diag.countContaining("no geometry"), 1);
+}
+
+}  // namespace
+}  // namespace rt
