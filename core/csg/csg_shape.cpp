@@ -78,8 +78,10 @@ void CsgShape::evaluate(int index, const Ray &ray, double w0, double w1, SpanLis
                 ++scratch.prunedSubtrees;
                 return;
             }
-            w0 = std::max(w0, out.front().in.t);
-            w1 = std::min(w1, out.back().out.t);
+            // Narrow to the result so far, with the tie tolerance as slack so an operand that
+            // only touches it is still merged and its coincident faces are noticed
+            w0 = std::max(w0, out.front().in.t - tieEpsilon(ray.o, out.front().in.t));
+            w1 = std::min(w1, out.back().out.t + tieEpsilon(ray.o, out.back().out.t));
         }
         if (first) {
             evaluate(child, ray, w0, w1, out, scratch);
@@ -101,7 +103,8 @@ void CsgShape::evaluate(int index, const Ray &ray, double w0, double w1, SpanLis
         SpanOp op = node.op == Op::Union          ? SpanOp::Union
                     : node.op == Op::Intersection ? SpanOp::Intersection
                                                   : SpanOp::Difference;
-        combineSpans(out, *operand, op, *merged);
+        combineSpans(out, *operand, op, *merged, tieEpsilon(ray.o, out.front().in.t),
+                     &scratch.cancelledTie);
         ++scratch.spanOps;
         out.swap(*merged);
     }

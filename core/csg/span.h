@@ -3,7 +3,11 @@
 // each end, as in the lecture notes behind the project.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
+
+#include "core/math/vec3.h"
 
 namespace rt {
 
@@ -15,7 +19,19 @@ struct Crossing {
     double t = 0;
     const PrimitiveInstance *leaf = nullptr;
     int face = 0;
+    /// Another surface was within the tie tolerance of this one (coincident faces): which of
+    /// them a renderer shows is a convention, so comparisons mask such pixels.
+    bool tie = false;
 };
+
+/// Two crossings closer than this, relative to the magnitude of the ray's coordinates, count
+/// as a tie: a hundred thousand times the rounding error of a double at that magnitude.
+constexpr double kTieTolerance = 1e-11;
+
+/// Tie tolerance for crossings near t along a ray from `o`.
+inline double tieEpsilon(const Vec3 &o, double t) {
+    return kTieTolerance * (std::max({std::abs(o.x), std::abs(o.y), std::abs(o.z)}) + std::abs(t) + 1e-300);
+}
 
 /// The closed interval [in.t, out.t] of the ray line inside a solid; in.t < out.t.
 struct Span {

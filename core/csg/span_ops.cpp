@@ -41,10 +41,12 @@ int rankOf(const Crossing &c) { return c.leaf ? c.leaf->tieRank : 0; }
 
 }  // namespace
 
-void combineSpans(const SpanList &a, const SpanList &b, SpanOp op, SpanList &out) {
+void combineSpans(const SpanList &a, const SpanList &b, SpanOp op, SpanList &out,
+                  double tieEps, double *cancelledTie) {
     out.clear();
     CrossingCursor ca(a), cb(b);
     bool inA = false, inB = false, inside = false;
+    double lastA = -kInfinity, lastB = -kInfinity;  // t of each list's previous crossing
     Span open;
     while (!ca.done() || !cb.done()) {
         double t = std::min(ca.t(), cb.t());
@@ -61,7 +63,15 @@ void combineSpans(const SpanList &a, const SpanList &b, SpanOp op, SpanList &out
             newB = cb.insideAfter();
             cb.advance();
         }
+        // Nearest crossing of each list on either side of t, for the tie flag
+        double nearA = std::min(t - lastA, ca.t() - t), nearB = std::min(t - lastB, cb.t() - t);
+        if (xa) lastA = t;
+        if (xb) lastB = t;
         bool now = evaluate(op, newA, newB);
+        // Crossings of both operands at (or within tieEps of) the same t: their order decides
+        // the result, and rounding decides their order
+        bool nearTie = (xa && (xb || nearB <= tieEps)) || (xb && (xa || nearA <= tieEps));
+        if (now == inside && nearTie && cancelledTie) *cancelledTie = std::min(*cancelledTie, t);
         if (now != inside) {
             // Which crossing is the result's surface: one that alone would cause this change
             bool aCauses = xa && evaluate(op, newA, inB) == now;
@@ -77,10 +87,12 @@ void combineSpans(const SpanList &a, const SpanList &b, SpanOp op, SpanList &out
                 winner = xb;
             else  // only the two together change the state: rank decides
                 winner = (xa && xb) ? (rankOf(*xb) < rankOf(*xa) ? xb : xa) : (xa ? xa : xb);
+            Crossing boundary = *winner;
+            boundary.tie = boundary.tie || nearTie;
             if (now) {
-                open.in = *winner;
+                open.in = boundary;
             } else {
-                open.out = *winner;
+                open.out = boundary;
                 out.push_back(open);
             }
             inside = now;

@@ -18,6 +18,12 @@ enum class SpanOp { Union, Intersection, Difference };
 /// subtrahend that only touches it does not cut it); in a union or intersection the one whose
 /// material sorts first by value (PrimitiveInstance::tieRank) wins, the first operand's only if
 /// the ranks are equal, so swapping their operands never changes the picture.
-void combineSpans(const SpanList &a, const SpanList &b, SpanOp op, SpanList &out);
+/// A boundary of the result that has a crossing of the other operand within `tieEps` (exactly
+/// coincident or only rounding apart) is flagged as a tie. Crossings of both operands within
+/// `tieEps` that leave no boundary in the result (a subtrahend face flush with the minuend's,
+/// two solids meeting in a plane) lower `*cancelledTie` to their t when given: rounded
+/// differently, they would have left a surface there.
+void combineSpans(const SpanList &a, const SpanList &b, SpanOp op, SpanList &out,
+                  double tieEps = 0, double *cancelledTie = nullptr);
 
 }  // namespace rt

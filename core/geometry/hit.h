@@ -17,6 +17,9 @@ struct SurfaceInteraction {
     Vec3 n;                                    ///< unit geometric normal, out of the primitive
     const PrimitiveInstance *leaf = nullptr;   ///< primitive whose surface was hit
     const Shape *object = nullptr;             ///< top-level object (owner of the interior)
+    /// Another surface lies within the tie tolerance of this hit (coincident faces, or a
+    /// surface at the ray's origin): renderers may legitimately disagree on what is seen.
+    bool tie = false;
 };
 
 /// How far spawned origins sit beyond the error bound of the hit point. The bound covers the

@@ -16,20 +16,26 @@ SpanList &SpanScratch::acquire() {
 bool Shape::firstCrossing(const Ray &ray, double tMin, double tMax, Crossing *c,
                           SpanScratch &scratch) const {
     ScratchList list(scratch);
+    scratch.cancelledTie = kInfinity;
     spans(ray, tMin, tMax, *list, scratch);
+    const Crossing *found = nullptr;
     for (const Span &s : *list) {
-        if (s.in.t >= tMax) return false;
+        if (s.in.t >= tMax) break;
         if (s.in.t > tMin) {
-            *c = s.in;
-            return true;
+            found = &s.in;
+            break;
         }
         if (s.out.t > tMin) {
-            if (s.out.t >= tMax) return false;
-            *c = s.out;
-            return true;
+            if (s.out.t < tMax) found = &s.out;
+            break;
         }
     }
-    return false;
+    if (!found) return false;
+    *c = *found;
+    // Coincident faces that cancelled in front of this surface (or at it) are a tie too
+    double eps = tieEpsilon(ray.o, c->t);
+    if (scratch.cancelledTie > tMin - eps && scratch.cancelledTie <= c->t + eps) c->tie = true;
+    return true;
 }
 
 namespace {

@@ -18,6 +18,8 @@ class SpanScratch {
     void release() { --used_; }
     long long spanOps = 0;         ///< span-list merges performed
     long long prunedSubtrees = 0;  ///< CSG subtrees skipped by bounds or by the pruning rules
+    /// Smallest t of coincident crossings that cancelled during the current evaluation.
+    double cancelledTie = kInfinity;
 
   private:
     std::vector<std::unique_ptr<SpanList>> pool_;

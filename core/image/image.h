@@ -34,4 +34,19 @@ class Image {
     std::vector<float> data_;
 };
 
+/// A rendered image as an estimate, with what a statistical comparison needs to know about it.
+struct ImageEstimate {
+    Image mean;
+    /// Variance of each pixel's mean, from independent batches (Monte Carlo renders); empty
+    /// for deterministic images.
+    Image variance;
+    int batches = 0;  ///< number of batches behind `variance`
+    /// Max - min of the sub-samples averaged into each pixel (supersampled references); large
+    /// on silhouettes, shadow edges and coplanar speckle. Empty when unknown.
+    Image spread;
+    /// Fraction of each pixel's samples that met coincident surfaces (scadray renders); such
+    /// pixels show a convention, not geometry, and are masked. Empty when unknown.
+    Image ties;
+};
+
 }  // namespace rt

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/ir/ir_simplify.h"
 #include "core/ir/ir_validate.h"
 #include "core/math/float_util.h"
 
@@ -36,6 +37,7 @@ Camera cameraFromViewport(const Vec3 &vpt, const Vec3 &vpr, double vpd, double v
 
 void completeScene(Scene &scene, DiagnosticSink &diag) {
     validateScene(scene, diag);
+    pruneEmpty(scene, diag);
     if (!scene.camera) {
         Bounds3 b = worldBounds(*scene.root);
         Vec3 centre(0);

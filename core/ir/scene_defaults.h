@@ -26,7 +26,8 @@ Camera cameraFromViewport(const Vec3 &vpt, const Vec3 &vpr, double vpd, double v
 /// from OpenSCAD's default view direction (viewall + autocenter); when there are no lights, a key
 /// light with shadows and a shadowless fill placed relative to the camera. An empty scene gets a
 /// camera looking at the origin. Notes what it added to `diag`. Validates the scene first
-/// (ir::validateScene): out-of-range or non-finite input is a located SceneError.
+/// (ir::validateScene: out-of-range or non-finite input is a located SceneError) and prunes
+/// subtrees without volume (ir::pruneEmpty), so every consumer sees the same solids.
 void completeScene(Scene &scene, DiagnosticSink &diag);
 
 }  // namespace rt::ir

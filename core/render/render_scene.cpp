@@ -188,20 +188,41 @@ bool RenderScene::intersect(const Ray &ray, double tMin, double tMax, SurfaceInt
                             SpanScratch &scratch) const {
     Crossing best;
     const Shape *bestObject = nullptr;
+    bool tie = false;
     double closest = tMax;
+    double cancelled = kInfinity;  // nearest coincident faces that cancelled in any object
+    // Objects whose first crossing lies just beyond the closest one are still visited, so a
+    // coincident face of another object is noticed as a tie
     bvh_.traverse(ray, tMin, &closest, [&](uint32_t index, double *tFar) {
         Crossing c;
         const Shape *obj = objects_[index].get();
-        if (obj->firstCrossing(ray, tMin, *tFar, &c, scratch)) {
-            *tFar = c.t;
+        scratch.cancelledTie = kInfinity;
+        bool found = obj->firstCrossing(ray, tMin, *tFar, &c, scratch);
+        if (scratch.cancelledTie > tMin) cancelled = std::min(cancelled, scratch.cancelledTie);
+        if (!found) return false;
+        double eps = tieEpsilon(ray.o, c.t);
+        if (!bestObject || c.t < best.t) {
+            tie = bestObject && best.t - c.t <= eps;
             best = c;
             bestObject = obj;
+            *tFar = std::min(tMax, c.t + eps);
+        } else {
+            tie = tie || c.t - best.t <= eps;
         }
         return false;
     });
-    if (!bestObject) return false;
+    if (!bestObject || best.t >= tMax) {
+        si->tie = cancelled < tMax;  // a miss can still pass coincident faces
+        return false;
+    }
     *si = best.leaf->surfaceAt(ray, best);
     si->object = bestObject;
+    // Coincident faces that cancelled in front of the hit (a face of zero thickness that another
+    // renderer may show) make it a tie as well
+    tie = tie || cancelled <= best.t + tieEpsilon(ray.o, best.t);
+    // A surface right at the origin of a secondary ray is a tie too (POV-Ray skips hits
+    // closer than its MIN_ISECT_DEPTH)
+    si->tie = tie || best.tie || best.t <= tieEpsilon(ray.o, 0);
     return true;
 }
 

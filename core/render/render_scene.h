@@ -27,7 +27,8 @@ class RenderScene {
     /// have a camera). Singular transforms and empty operands are dropped with a located warning.
     static std::unique_ptr<RenderScene> compile(const ir::Scene &scene, DiagnosticSink &diag);
 
-    /// Closest surface crossing with tMin < t < tMax.
+    /// Closest surface crossing with tMin < t < tMax. On a miss only si->tie is set: whether the
+    /// ray passed coincident faces that cancelled (a zero-thickness face).
     bool intersect(const Ray &ray, double tMin, double tMax, SurfaceInteraction *si,
                    SpanScratch &scratch) const;
 

@@ -2,6 +2,7 @@
 // Tile scheduling across threads and per-pixel sampling.
 #include "core/render/renderer.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -29,6 +30,9 @@ void validateRenderOptions(const RenderOptions &o) {
         throw std::invalid_argument("samples per pixel must be a square (1, 4, 9, 16, ...) for "
                                     "stratified sampling; got " +
                                     std::to_string(o.samplesPerPixel));
+    if (o.batches < 1 || o.batches > kMaxBatches)
+        throw std::invalid_argument("batches must be between 1 and " + std::to_string(kMaxBatches));
+    if (!(o.sampleClamp >= 0)) throw std::invalid_argument("sample clamp must not be negative");
     if (o.threads < 0) throw std::invalid_argument("thread count must not be negative");
     if (o.tileSize < 1) throw std::invalid_argument("tile size must be positive");
 }
@@ -50,6 +54,8 @@ RenderResult renderImage(const RenderScene &scene, const RenderOptions &opts) {
 
     RenderResult result;
     result.image = Image(opts.width, opts.height);
+    if (opts.batches > 1) result.variance = Image(opts.width, opts.height);
+    result.ties = Image(opts.width, opts.height);
     result.threads = threads;
     std::atomic<int> nextTile{0}, doneTiles{0};
     std::mutex mutex;
@@ -65,18 +71,37 @@ RenderResult renderImage(const RenderScene &scene, const RenderOptions &opts) {
             for (int y = y0; y < y1; ++y)
                 for (int x = x0; x < x1; ++x) {
                     uint64_t pixel = uint64_t(y) * opts.width + x;
-                    Rgb sum(0);
-                    for (int s = 0; s < opts.samplesPerPixel; ++s) {
-                        double fx = 0.5, fy = 0.5;
-                        if (opts.samplesPerPixel > 1) {
-                            // Jittered stratum s of a strata x strata grid
-                            Rng rng = Rng::forSample(pixel, s, opts.seed);
-                            fx = ((s % strata) + rng.uniform()) / strata;
-                            fy = ((s / strata) + rng.uniform()) / strata;
+                    // Welford's running mean and sum of squares over batch means
+                    Rgb mean(0), m2(0);
+                    int tiedSamples = 0;
+                    for (int b = 0; b < opts.batches; ++b) {
+                        Rgb sum(0);
+                        for (int s = 0; s < opts.samplesPerPixel; ++s) {
+                            double fx = 0.5, fy = 0.5;
+                            if (opts.samplesPerPixel > 1 || opts.batches > 1) {
+                                // Jittered stratum s of a strata x strata grid, per batch
+                                Rng rng = Rng::forSample(
+                                    pixel, uint64_t(b) * opts.samplesPerPixel + s, opts.seed);
+                                fx = ((s % strata) + rng.uniform()) / strata;
+                                fy = ((s / strata) + rng.uniform()) / strata;
+                            }
+                            ctx.tie = false;
+                            Rgb c = integrator.li(camera.generateRay(x + fx, y + fy), ctx);
+                            tiedSamples += ctx.tie;
+                            if (opts.sampleClamp > 0)
+                                for (int ch = 0; ch < 3; ++ch)
+                                    c[ch] = std::clamp(c[ch], 0.0, opts.sampleClamp);
+                            sum += c;
                         }
-                        sum += integrator.li(camera.generateRay(x + fx, y + fy), ctx);
+                        Rgb batchMean = sum * invSamples;
+                        Rgb delta = batchMean - mean;
+                        mean += delta / double(b + 1);
+                        m2 += delta * (batchMean - mean);
                     }
-                    result.image.set(x, y, sum * invSamples);
+                    result.image.set(x, y, mean);
+                    result.ties.set(x, y, Rgb(double(tiedSamples) / (opts.batches * opts.samplesPerPixel)));
+                    if (opts.batches > 1)
+                        result.variance.set(x, y, m2 / double(opts.batches - 1) / double(opts.batches));
                 }
             doneTiles.fetch_add(1);
         }

@@ -19,6 +19,13 @@ struct RenderOptions {
     /// centre exactly, as POV-Ray without antialiasing.
     int samplesPerPixel = 1;
     uint64_t seed = 0;
+    /// Independent batches of samplesPerPixel samples each; with more than one, the result
+    /// carries the variance of each pixel's mean, estimated from the batch means.
+    int batches = 1;
+    /// Clamp each sample's radiance to [0, sampleClamp] before averaging (0 = off), as an image
+    /// file that clips at 1 does to each of its pixels: used when comparing with POV-Ray's
+    /// supersampled PNG references.
+    double sampleClamp = 0;
     /// Worker threads; 0 = every hardware thread.
     int threads = 0;
     int tileSize = 16;
@@ -28,6 +35,11 @@ struct RenderOptions {
 
 struct RenderResult {
     Image image;
+    /// Variance of each pixel's mean when batches > 1, else empty.
+    Image variance;
+    /// Fraction of each pixel's samples whose path met coincident surfaces (a tie), in all
+    /// three channels.
+    Image ties;
     RayStats stats;
     double seconds = 0;
     int threads = 0;
@@ -36,6 +48,7 @@ struct RenderResult {
 /// Largest accepted image side and sample count, so absurd sizes fail fast and clearly.
 constexpr int kMaxImageSide = 32768;
 constexpr int kMaxSamplesPerPixel = 65536;
+constexpr int kMaxBatches = 1024;
 
 /// Throws std::invalid_argument for bad options (sizes, non-square sample counts).
 void validateRenderOptions(const RenderOptions &opts);

@@ -42,7 +42,9 @@ Rgb WhittedIntegrator::trace(const Ray &ray, int level, double weight, const Int
     const ir::Settings &s = scene_.settings();
     if (level >= s.maxTraceLevel || weight < s.adcBailout) return Rgb(0);
     SurfaceInteraction si;
-    if (!scene_.intersect(ray, 0, kInfinity, &si, ctx.scratch)) return s.background;
+    bool hit = scene_.intersect(ray, 0, kInfinity, &si, ctx.scratch);
+    ctx.tie = ctx.tie || si.tie;
+    if (!hit) return s.background;
     return shade(ray, si, continued ? level : level + 1, weight, stack, ctx);
 }
 
@@ -181,10 +183,15 @@ Rgb WhittedIntegrator::shadowFilter(const SurfaceInteraction &si, const Vec3 &li
     while (true) {
         ++ctx.stats.shadow;
         SurfaceInteraction hit;
-        if (!scene_.intersect(ray, 0, remaining, &hit, ctx.scratch)) return filter;
+        bool blocked = scene_.intersect(ray, 0, remaining, &hit, ctx.scratch);
+        ctx.tie = ctx.tie || hit.tie;
+        if (!blocked) return filter;
         const ir::Material &m = scene_.material(hit.leaf->material());
         if (hit.object->opaque || !m.isTransparent()) return Rgb(0);
         filter *= m.color * m.filter + Rgb(m.transmit);
+        // The shadow ray starts with the interior list of the ray that hit the shaded point; at
+        // each crossing light fades over the segment inside that solid, then the crossing
+        // enters or leaves it (POV-Ray ComputeShadowTexture, ComputeShadowMedia)
         if (inside.contains(hit.object)) {
             filter *= interiorFade(interiorOf(hit.object), hit.t, true);
             inside.remove(hit.object);

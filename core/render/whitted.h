@@ -16,6 +16,9 @@ namespace rt {
 struct TraceContext {
     RayStats stats;
     SpanScratch scratch;
+    /// Set when the current sample's path met a tie (coincident surfaces); the renderer clears
+    /// it per sample and reports the fraction of such samples per pixel.
+    bool tie = false;
 };
 
 class WhittedIntegrator {
@@ -38,6 +41,7 @@ class WhittedIntegrator {
     Rgb localColour(const Ray &ray, const SurfaceInteraction &si, const Vec3 &N,
                     const ir::Material &m, const InteriorStack &stack, TraceContext &ctx) const;
     /// Filtered light reaching si from a point light (1 = unoccluded), POV-Ray section 1.4.
+    /// `stack` is the interior list of the ray that hit si.
     Rgb shadowFilter(const SurfaceInteraction &si, const Vec3 &lightPos,
                      const InteriorStack &stack, TraceContext &ctx) const;
     /// n_transmitted / n_incident at a surface of `object`, as POV-Ray's ComputeRelativeIOR.
