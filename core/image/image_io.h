@@ -27,8 +27,20 @@ double srgbDecode(double encoded);
 /// with the reason on failure; the target is then left as it was.
 void writeImage(const Image &img, const std::string &path, const WriteOptions &opts = {});
 
+/// Writes an estimate as OpenEXR: channels R, G, B (the mean), var.R/G/B, spread.R/G/B and
+/// ties.R/G/B when present, and the batch count as the header attribute "scadray:batches".
+void writeEstimate(const ImageEstimate &est, const std::string &path);
+
+/// Reads an image written by writeEstimate, or any image (then only the mean is filled).
+ImageEstimate readEstimate(const std::string &path, bool assumeLinear = false);
+
+/// Box-filters each k x k block into one pixel; `spread` receives max - min over the block and
+/// the ring of sub-samples bordering it.
+ImageEstimate downsample(const Image &img, int k);
+
 /// Reads an image as linear float RGB. 8/16-bit files are decoded with the sRGB curve unless
-/// `assumeLinear` (e.g. POV-Ray's File_Gamma=1.0 output). Throws std::runtime_error.
+/// they declare themselves linear (gAMA 1.0, as POV-Ray's File_Gamma=1.0 output and scadray's
+/// --linear PNGs do) or `assumeLinear` is set. Throws std::runtime_error.
 Image readImage(const std::string &path, bool assumeLinear = false);
 
 }  // namespace rt
