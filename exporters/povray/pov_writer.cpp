@@ -1,0 +1,295 @@
+// SPDX-License-Identifier: MIT
+// IR -> POV-Ray SDL.
+#include "exporters/povray/pov_writer.h"
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "exporters/povray/pov_format.h"
+
+namespace rt::pov {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string where(const SourceLoc &loc) {
+    if (!loc.isValid()) return "";
+    return fs::path(*loc.file).filename().string() + ":" + std::to_string(loc.line) + ":" +
+           std::to_string(loc.col);
+}
+
+std::string materialName(int index) { return "Material_" + std::to_string(index); }
+
+/// A node that CSG treats as its only child: groups, unions and transforms of one child.
+bool passesThrough(const ir::Node &n) {
+    return n.kind != ir::NodeKind::Primitive && n.children.size() == 1;
+}
+
+const ir::Node *firstPrimitive(const ir::Node &n) {
+    if (n.kind == ir::NodeKind::Primitive) return &n;
+    for (const auto &c : n.children)
+        if (const ir::Node *p = firstPrimitive(*c)) return p;
+    return nullptr;
+}
+
+class Writer {
+  public:
+    explicit Writer(const ir::Scene &scene) : scene_(scene) {}
+
+    std::string run(const std::string &sourceName) {
+        collectMaterials(*scene_.root);
+        header(sourceName);
+        settings();
+        camera();
+        lights();
+        materials();
+        os_ << "// Objects\n";
+        topLevel(*scene_.root, Mat4());
+        return os_.str();
+    }
+
+  private:
+    void collectMaterials(const ir::Node &n) {
+        if (n.kind == ir::NodeKind::Primitive) used_.insert(n.material);
+        for (const auto &c : n.children) collectMaterials(*c);
+    }
+
+    void header(const std::string &sourceName) {
+        os_ << "// Exported by scadray from " << sourceName << "\n"
+            << "// The scene is right-handed with +Z up, as OpenSCAD's. Geometry is written in\n"
+            << "// its own coordinates; the camera's negative `right` vector makes POV-Ray's\n"
+            << "// look_at construction right-handed too.\n"
+            << "// Render: povray " << "<this file> +W640 +H480 -A +FN16 File_Gamma=1.0 -D -V -GR\n"
+            << "// (or the .ini written beside it).\n"
+            << "#version 3.7;\n\n";
+    }
+
+    void settings() {
+        const ir::Settings &s = scene_.settings;
+        os_ << "global_settings {\n"
+            << "    assumed_gamma 1.0\n"
+            << "    ambient_light " << rgb(s.ambientLight) << "\n"
+            << "    max_trace_level " << s.maxTraceLevel << "\n"
+            << "    adc_bailout " << num(s.adcBailout) << "\n"
+            << "}\n\n"
+            << "background { " << rgb(s.background) << " }\n\n";
+    }
+
+    void camera() {
+        if (!scene_.camera) throw std::logic_error("writeSdl needs a complete scene (camera)");
+        const ir::Camera &c = *scene_.camera;
+        std::string angle = num(c.fov);
+        if (c.fovAxis == ir::FovAxis::Vertical)
+            angle = "degrees(2 * atan(tan(radians(" + num(c.fov) +
+                    " / 2)) * image_width / image_height))";
+        os_ << comment(c.loc, c.source == ir::CameraSource::Automatic
+                                  ? "camera: automatic, framing the model from OpenSCAD's default view"
+                                  : "camera")
+            << "camera {\n"
+            << "    perspective\n"
+            << "    location " << vec(c.location) << "\n"
+            << "    look_at " << vec(c.lookAt) << "\n"
+            << "    sky " << vec(c.sky) << "\n"
+            << "    up <0, 1, 0>\n"
+            << "    right <-image_width / image_height, 0, 0>\n"
+            << "    angle " << angle << "\n"
+            << "}\n\n";
+    }
+
+    void lights() {
+        for (const ir::Light &l : scene_.lights) {
+            os_ << comment(l.loc, "light") << "light_source {\n"
+                << "    " << vec(l.position) << ", " << rgb(l.color) << "\n";
+            if (l.fadePower > 0 && l.fadeDistance != 0)
+                os_ << "    fade_distance " << num(l.fadeDistance) << "\n"
+                    << "    fade_power " << num(l.fadePower) << "\n";
+            if (l.shadowless) os_ << "    shadowless\n";
+            os_ << "}\n";
+        }
+        os_ << "\n";
+    }
+
+    void materials() {
+        os_ << "// Materials: every pigment and finish value explicit (POV-Ray's defaults differ)\n";
+        for (int i : used_) {
+            const ir::Material &m = scene_.materials[i];
+            const ir::Finish &f = m.finish;
+            os_ << comment(m.loc, "") << "#declare " << materialName(i) << " = texture {\n"
+                << "    pigment { rgbft <" << num(m.color.r) << ", " << num(m.color.g) << ", "
+                << num(m.color.b) << ", " << num(m.filter) << ", " << num(m.transmit) << "> }\n"
+                << "    finish {\n"
+                << "        ambient " << num(f.ambient) << "\n"
+                << "        emission " << rgb(f.emission) << "\n"
+                << "        diffuse " << num(f.diffuse) << "\n"
+                << "        brilliance " << num(f.brilliance) << "\n"
+                << "        phong " << num(f.phong) << "\n"
+                << "        phong_size " << num(f.phongSize) << "\n"
+                << "        specular " << num(f.specular) << "\n"
+                << "        roughness " << num(f.roughness) << "\n"
+                << "        metallic " << num(f.metallic) << "\n"
+                << "        reflection {\n"
+                << "            " << rgb(f.reflectionMin) << ", " << rgb(f.reflectionMax) << "\n"
+                << "            fresnel " << (f.fresnel ? "on" : "off") << "\n"
+                << "            falloff " << num(f.reflectionFalloff) << "\n"
+                << "            exponent " << num(f.reflectionExponent) << "\n"
+                << "        }\n";
+            if (f.conserveEnergy) os_ << "        conserve_energy\n";
+            os_ << "    }\n}\n";
+        }
+        os_ << "\n";
+    }
+
+    static std::string comment(const SourceLoc &loc, const std::string &what) {
+        std::string w = where(loc);
+        if (w.empty() && what.empty()) return "";
+        return "// " + what + (what.empty() || w.empty() ? "" : ": ") + w + "\n";
+    }
+
+    void line(int indent, const std::string &text) {
+        os_ << std::string(4 * indent, ' ') << text << "\n";
+    }
+
+    std::string interior(const ir::Interior &in) {
+        std::string s = "interior { ior " + num(in.ior);
+        if (in.fadeDistance != 0)
+            s += " fade_distance " + num(in.fadeDistance) + " fade_power " + num(in.fadePower) +
+                 " fade_color " + rgb(in.fadeColor);
+        return s + " }";
+    }
+
+    /// Top level: the same flattening as render::compile; each solid becomes one object.
+    void topLevel(const ir::Node &n, const Mat4 &m) {
+        switch (n.kind) {
+            case ir::NodeKind::Group:
+                for (const auto &c : n.children) topLevel(*c, m);
+                return;
+            case ir::NodeKind::Transform:
+                for (const auto &c : n.children) topLevel(*c, m * n.matrix);
+                return;
+            default: break;
+        }
+        // One solid, with the interior of its first primitive
+        const ir::Node *first = firstPrimitive(n);
+        if (!first) return;
+        solid(n, m, 0, interior(scene_.materials[first->material].interior), isTransparent(n));
+        os_ << "\n";
+    }
+
+    bool isTransparent(const ir::Node &n) const {
+        if (n.kind == ir::NodeKind::Primitive) return scene_.materials[n.material].isTransparent();
+        for (const auto &c : n.children)
+            if (isTransparent(*c)) return true;
+        return false;
+    }
+
+    /// Writes a solid whose transform relative to its parent is `m`. `objectInterior` is set
+    /// only on the top-level object, whose children share it. Unions of a transparent object
+    /// are `merge` (no internal surfaces, which transparency would show); those of an opaque
+    /// object stay `union`, because POV-Ray's merge also drops coplanar faces of touching
+    /// solids, which OpenSCAD models are full of, while internal faces of an opaque solid are
+    /// never the first surface a ray meets.
+    void solid(const ir::Node &n, const Mat4 &m, int indent, const std::string &objectInterior,
+               bool merge) {
+        const ir::Node *cur = &n;
+        Mat4 cm = m;
+        while (passesThrough(*cur)) {
+            if (cur->kind == ir::NodeKind::Transform) cm = cm * cur->matrix;
+            cur = cur->children.front().get();
+        }
+        // A transform of several children is a union of them, placed by its matrix
+        if (cur->kind == ir::NodeKind::Transform) cm = cm * cur->matrix;
+        std::string tail;
+        if (!objectInterior.empty()) tail += "\n" + std::string(4 * (indent + 1), ' ') + objectInterior;
+        if (!cm.isIdentity()) tail += "\n" + std::string(4 * (indent + 1), ' ') + transform(cm);
+        if (cur->kind == ir::NodeKind::Primitive) {
+            std::string shape;
+            if (const auto *s = std::get_if<ir::SpherePrim>(&cur->shape))
+                shape = "sphere { <0, 0, 0>, " + num(s->radius);
+            else if (const auto *b = std::get_if<ir::BoxPrim>(&cur->shape))
+                shape = "box { " + vec(b->min) + ", " + vec(b->max);
+            else {
+                const auto &c = std::get<ir::CylinderPrim>(cur->shape);
+                shape = "cone { <0, 0, " + num(c.z0) + ">, " + num(c.r1) + ", <0, 0, " +
+                        num(c.z1) + ">, " + num(c.r2);
+            }
+            std::string w = where(cur->loc);
+            line(indent, shape + "  texture { " + materialName(cur->material) + " }" + tail +
+                             " }" + (w.empty() ? "" : "  // " + w));
+            return;
+        }
+        std::string op;
+        switch (cur->kind) {
+            case ir::NodeKind::Intersection: op = "intersection"; break;
+            case ir::NodeKind::Difference: op = "difference"; break;
+            default: op = merge ? "merge" : "union"; break;
+        }
+        std::string w = where(cur->loc);
+        line(indent, op + " {" + (w.empty() ? "" : "  // " + w));
+        for (const auto &c : cur->children) solid(*c, Mat4(), indent + 1, "", merge);
+        if (!tail.empty()) os_ << tail.substr(1) << "\n";
+        line(indent, "}");
+    }
+
+    const ir::Scene &scene_;
+    std::set<int> used_;
+    std::ostringstream os_;
+};
+
+}  // namespace
+
+std::string writeSdl(const ir::Scene &scene, const std::string &sourceName) {
+    return Writer(scene).run(sourceName);
+}
+
+std::string writeIni(const IniOptions &o) {
+    std::ostringstream os;
+    os << "; scadray: render " << o.povFile << " headless, quietly and deterministically\n"
+       << "Input_File_Name=" << o.povFile << "\n"
+       << "Output_File_Name=" << o.outputFile << "\n"
+       << "Width=" << o.width * o.supersample << "\n"
+       << "Height=" << o.height * o.supersample << "\n"
+       << "; No adaptive antialiasing: supersample by size and box-downsample instead\n"
+       << "Antialias=Off\n"
+       << "; 16-bit PNG with linear values, for comparisons\n"
+       << "Output_File_Type=N\n"
+       << "Bits_Per_Color=16\n"
+       << "File_Gamma=1.0\n"
+       << "Display=Off\n"
+       << "Verbose=Off\n"
+       << "Render_Console=Off\n"
+       << "Pause_When_Done=Off\n";
+    if (o.threads > 0) os << "Work_Threads=" << o.threads << "\n";
+    return os.str();
+}
+
+void writeTextFile(const std::string &path, const std::string &text) {
+    fs::path target(path);
+    fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+    if (!fs::is_directory(dir))
+        throw std::runtime_error("output folder '" + dir.string() + "' does not exist");
+    fs::path tmp = dir / ("." + target.filename().string() + ".partial-" + std::to_string(::getpid()));
+    {
+        std::ofstream out(tmp, std::ios::binary);
+        out << text;
+        out.flush();
+        if (!out) {
+            std::error_code ec;
+            fs::remove(tmp, ec);
+            throw std::runtime_error("cannot write '" + path + "'");
+        }
+    }
+    std::error_code ec;
+    fs::rename(tmp, target, ec);
+    if (ec) {
+        fs::remove(tmp, ec);
+        throw std::runtime_error("cannot write '" + path + "': " + ec.message());
+    }
+}
+
+}  // namespace rt::pov
