@@ -8,9 +8,18 @@ namespace CLI {
 class App;
 }
 
+namespace rt {
+struct CompareOptions;
+}
+
 namespace rt::cli {
 
 void addRenderCommand(CLI::App &app, std::function<int()> &action);
 void addDumpCommand(CLI::App &app, std::function<int()> &action);
+void addExportCommand(CLI::App &app, std::function<int()> &action);
+void addCompareCommand(CLI::App &app, std::function<int()> &action);
+void addCheckCommand(CLI::App &app, std::function<int()> &action);
+/// The comparison options shared by `compare` and `check`.
+void addCompareOptions(CLI::App &cmd, CompareOptions &o);
 
 }  // namespace rt::cli

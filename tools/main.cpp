@@ -15,6 +15,9 @@ int main(int argc, char **argv) {
     std::function<int()> action;
     cli::addRenderCommand(app, action);
     cli::addDumpCommand(app, action);
+    cli::addExportCommand(app, action);
+    cli::addCompareCommand(app, action);
+    cli::addCheckCommand(app, action);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError &e) {
