@@ -24,12 +24,12 @@ struct ExportArgs {
 int runExport(const ExportArgs &a) {
     if (a.width < 1 || a.height < 1 || a.supersample < 1)
         throw std::invalid_argument("image size and supersampling must be positive");
-    DiagnosticSink diag;
-    attachPrinter(diag, a.quiet);
-    ir::Scene scene = loadScene(a.scene.input, diag, a.scene.loadOptions(a.quiet));
     fs::path pov = a.output.empty() ? fs::path(a.scene.input).stem().concat(".pov") : fs::path(a.output);
     if (pov.extension() != ".pov")
         throw std::invalid_argument("the output of export must end in .pov");
+    DiagnosticSink diag;
+    attachPrinter(diag, a.quiet);
+    ir::Scene scene = loadScene(a.scene.input, diag, a.scene.loadOptions(a.quiet));
     std::string sdl = pov::writeSdl(scene, fs::path(a.scene.input).filename().string());
     pov::IniOptions ini;
     ini.povFile = pov.filename().string();

@@ -154,6 +154,55 @@ TEST_F(Cli, PlainScadGetsCameraAndLights) {
     EXPECT_GT(c.g, c.b);
 }
 
+TEST_F(Cli, ExportWritesPovAndIni) {
+    std::string pov = (dir / "lecture.pov").string();
+    CliRun r = run("export " + scene("lecture_csg.scad") + " -o " + pov + " -W 200 -H 100");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::string text = slurp(pov), ini = slurp(dir / "lecture.ini");
+    EXPECT_NE(text.find("#version 3.7;"), std::string::npos);
+    EXPECT_NE(text.find("difference {"), std::string::npos);
+    EXPECT_NE(ini.find("Input_File_Name=lecture.pov"), std::string::npos);
+    EXPECT_NE(ini.find("Width=200"), std::string::npos);
+    // Bad input: located error, nothing written
+    std::string bad = write("bad.scad", "cube(1);\nfrob();\n");
+    CliRun e = run("export " + bad + " -o " + (dir / "bad.pov").string());
+    EXPECT_EQ(e.exitCode, 1);
+    EXPECT_NE(e.err.find("bad.scad:2:1"), std::string::npos) << e.err;
+    EXPECT_FALSE(fs::exists(dir / "bad.pov"));
+    EXPECT_FALSE(fs::exists(dir / "bad.ini"));
+    EXPECT_EQ(run("export " + bad + " -o " + (dir / "x.txt").string()).exitCode, 2);
+}
+
+TEST_F(Cli, CompareExitCodes) {
+    std::string a = (dir / "a.exr").string(), b = (dir / "b.exr").string();
+    ASSERT_EQ(run("render -q -W 64 -H 48 -s 4 " + scene("csg_part.scad") + " -o " + a).exitCode, 0);
+    ASSERT_EQ(run("render -q -W 64 -H 48 -s 4 --seed 7 " + scene("csg_part.scad") + " -o " + b).exitCode, 0);
+    CliRun same = run("compare " + a + " " + b);
+    EXPECT_EQ(same.exitCode, 0) << same.out;
+    EXPECT_NE(same.out.find("PASS"), std::string::npos);
+    EXPECT_NE(same.out.find("RMSE"), std::string::npos);
+    std::string other = (dir / "other.exr").string();
+    ASSERT_EQ(run("render -q -W 64 -H 48 " + scene("mirrors.scad") + " -o " + other).exitCode, 0);
+    CliRun diff = run("compare " + other + " " + a + " --heat-map " + (dir / "heat.png").string());
+    EXPECT_EQ(diff.exitCode, 1) << diff.out;
+    EXPECT_NE(diff.out.find("DIFFERENT"), std::string::npos);
+    EXPECT_TRUE(fs::exists(dir / "heat.png"));
+    std::string small = (dir / "small.exr").string();
+    ASSERT_EQ(run("render -q -W 32 -H 24 " + scene("mirrors.scad") + " -o " + small).exitCode, 0);
+    EXPECT_EQ(run("compare " + small + " " + a).exitCode, 2);
+    EXPECT_EQ(run("compare " + (dir / "missing.exr").string() + " " + a).exitCode, 2);
+}
+
+TEST_F(Cli, CheckWithoutPovRayIsAClearError) {
+    // PATH without povray: the check cannot run, and says why
+    std::string cmd = "env PATH=/nonexistent " + std::string(SCADRAY_BINARY) + " check " +
+                      scene("csg_part.scad") + " -o " + (dir / "chk").string() + " 2>" +
+                      (dir / "err").string();
+    int status = std::system(cmd.c_str());
+    EXPECT_EQ(WEXITSTATUS(status), 2);
+    EXPECT_NE(slurp(dir / "err").find("povray"), std::string::npos);
+}
+
 TEST_F(Cli, DumpPrintsTheIr) {
     std::string in = write("d.scad", "translate([1,2,3]) cube(2);\n");
     CliRun r = run("dump " + in);
