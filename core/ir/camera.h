@@ -12,7 +12,13 @@ enum class FovAxis { Horizontal, Vertical };
 /// Where the camera came from, for the render plan and the exporter's comments.
 enum class CameraSource { Explicit, ViewportVariables, Automatic };
 
+enum class Projection { Perspective, Orthographic };
+
 struct Camera {
+    Projection projection = Projection::Perspective;
+    /// Orthographic only: width and height of the view in world units (the image's aspect
+    /// decides which of them is used: the vertical one is kept, as in glTF viewers).
+    double orthoHeight = 2;
     Vec3 location{0, -10, 5};
     Vec3 lookAt{0, 0, 0};
     Vec3 sky{0, 0, 1};

@@ -51,6 +51,8 @@ void dumpNode(const Node &n, int indent, std::ostringstream &os) {
                 os << "sphere r " << formatNumber(s->radius);
             else if (const auto *b = std::get_if<BoxPrim>(&n.shape))
                 os << "box min " << vec(b->min) << " max " << vec(b->max);
+            else if (const auto *m = std::get_if<MeshPrim>(&n.shape))
+                os << "mesh " << m->mesh;
             else {
                 const auto &c = std::get<CylinderPrim>(n.shape);
                 os << "cylinder z0 " << formatNumber(c.z0) << " z1 " << formatNumber(c.z1)
@@ -92,13 +94,23 @@ std::string dump(const Scene &scene) {
        << "\n";
     if (scene.camera) {
         const Camera &c = *scene.camera;
-        os << "camera " << cameraSourceName(c.source) << " location " << vec(c.location)
+        os << "camera " << cameraSourceName(c.source)
+           << (c.projection == Projection::Orthographic ? " orthographic height " + formatNumber(c.orthoHeight) : "")
+           << " location " << vec(c.location)
            << " look_at " << vec(c.lookAt) << " sky " << vec(c.sky) << " fov "
            << formatNumber(c.fov) << (c.fovAxis == FovAxis::Horizontal ? " horizontal" : " vertical")
            << where(c.loc) << "\n";
     }
     for (const Light &l : scene.lights)
-        os << "light point position " << vec(l.position) << " color " << rgb(l.color)
+        os << "light "
+           << (l.kind == Light::Kind::Point ? "point" : l.kind == Light::Kind::Spot ? "spot" : "directional")
+           << " position " << vec(l.position)
+           << (l.kind != Light::Kind::Point ? " direction " + vec(l.direction) : "")
+           << (l.kind == Light::Kind::Spot ? " radius " + formatNumber(l.spotRadius) + " falloff " +
+                                                 formatNumber(l.spotFalloff) + " tightness " +
+                                                 formatNumber(l.spotTightness)
+                                           : "")
+           << " color " << rgb(l.color)
            << " fade_distance " << formatNumber(l.fadeDistance) << " fade_power "
            << formatNumber(l.fadePower) << " shadowless " << boolean(l.shadowless) << where(l.loc)
            << "\n";
@@ -118,8 +130,21 @@ std::string dump(const Scene &scene) {
            << " emission " << rgb(f.emission) << " ior " << formatNumber(m.interior.ior)
            << " fade_distance " << formatNumber(m.interior.fadeDistance) << " fade_power "
            << formatNumber(m.interior.fadePower) << " fade_color " << rgb(m.interior.fadeColor)
+           << (m.baseColorTexture >= 0 ? " texture " + std::to_string(m.baseColorTexture) : "")
            << where(m.loc) << "\n";
     }
+    for (size_t i = 0; i < scene.meshes.size(); ++i) {
+        const Mesh &m = *scene.meshes[i];
+        MeshTopology t = analyzeMesh(m);
+        os << "mesh " << i << " \"" << m.name << "\" vertices " << m.positions.size()
+           << " triangles " << m.triangles.size() << " normals " << boolean(!m.normals.empty())
+           << " uvs " << boolean(!m.uvs.empty()) << " closed " << boolean(t.closed())
+           << " oriented " << boolean(t.oriented()) << " bounds " << vec(m.bounds().min) << " "
+           << vec(m.bounds().max) << where(m.loc) << "\n";
+    }
+    for (size_t i = 0; i < scene.textures.size(); ++i)
+        os << "texture " << i << " \"" << scene.textures[i]->name << "\" " << scene.textures[i]->width
+           << "x" << scene.textures[i]->height << "\n";
     const ImportStats &st = scene.stats;
     os << "dropped background_parts " << st.backgroundParts << " disabled_parts "
        << st.disabledParts << " skipped_modules " << st.skippedModules << "\n";

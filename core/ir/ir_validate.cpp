@@ -26,13 +26,19 @@ bool inRange(const Vec3 &p) {
 }
 
 /// Walks the tree with composed transforms and checks every primitive's world bounds.
-void checkNode(const Node &node, const Mat4 &m, int *primitives) {
+void checkNode(const Scene &scene, const Node &node, const Mat4 &m, int *primitives) {
     Mat4 here = node.kind == NodeKind::Transform ? m * node.matrix : m;
     if (node.kind == NodeKind::Transform && !here.isFinite())
         throw SceneError(node.loc, "transform has non-finite entries");
     if (node.kind == NodeKind::Primitive) {
         ++*primitives;
-        Bounds3 b = Transform(here, Mat4()).bounds(primitiveBounds(node.shape));
+        if (const auto *mp = std::get_if<MeshPrim>(&node.shape))
+            if (mp->mesh < 0 || mp->mesh >= static_cast<int>(scene.meshes.size()) || !scene.meshes[mp->mesh])
+                throw SceneError(node.loc, "mesh reference " + std::to_string(mp->mesh) +
+                                               " is not in the scene (internal error)");
+        if (node.material < 0 || node.material >= static_cast<int>(scene.materials.size()))
+            throw SceneError(node.loc, "primitive has no valid material (internal error)");
+        Bounds3 b = Transform(here, Mat4()).bounds(primitiveBounds(node.shape, &scene));
         if (!inRange(b.min) || !inRange(b.max))
             throw SceneError(node.loc, "object extends to " + vec(b.min) + " .. " + vec(b.max) +
                                            ", beyond the supported range of ±" +
@@ -43,14 +49,16 @@ void checkNode(const Node &node, const Mat4 &m, int *primitives) {
                                            " is below the supported minimum of " +
                                            number(kMinExtent));
     }
-    for (const auto &c : node.children) checkNode(*c, here, primitives);
+    for (const auto &c : node.children) checkNode(scene, *c, here, primitives);
 }
 
 }  // namespace
 
 void validateScene(const Scene &scene, DiagnosticSink &diag) {
+    for (const MeshPtr &mesh : scene.meshes)
+        if (mesh) validateMesh(*mesh);
     int primitives = 0;
-    checkNode(*scene.root, Mat4(), &primitives);
+    checkNode(scene, *scene.root, Mat4(), &primitives);
     if (primitives == 0)
         diag.warning(scene.root->loc, "the scene has no geometry; the image shows only the "
                                       "background");
@@ -59,20 +67,30 @@ void validateScene(const Scene &scene, DiagnosticSink &diag) {
             throw SceneError(l.loc, "light position " + vec(l.position) +
                                         " is not finite or beyond ±" + number(kMaxCoordinate));
         if (!l.color.isFinite()) throw SceneError(l.loc, "light colour is not finite");
+        if (l.kind != Light::Kind::Point && !(l.direction.isFinite() && length(l.direction) > 0))
+            throw SceneError(l.loc, "light direction must be a finite non-zero vector");
+        if (l.kind == Light::Kind::Spot &&
+            !(l.spotRadius >= 0 && l.spotFalloff > 0 && l.spotFalloff <= 90 && l.spotRadius <= l.spotFalloff))
+            throw SceneError(l.loc, "spot light needs 0 <= radius <= falloff <= 90 degrees");
     }
     if (scene.camera) {
         const Camera &c = *scene.camera;
         if (!inRange(c.location) || !inRange(c.lookAt) || !c.sky.isFinite())
             throw SceneError(c.loc, "camera vectors are not finite or beyond ±" +
                                         number(kMaxCoordinate));
-        if (!(c.fov > 0 && c.fov < 180))
+        if (c.projection == Projection::Orthographic && !(c.orthoHeight > 0 && std::isfinite(c.orthoHeight)))
+            throw SceneError(c.loc, "orthographic camera needs a positive view height");
+        if (c.projection == Projection::Perspective && !(c.fov > 0 && c.fov < 180))
             throw SceneError(c.loc, "camera field of view " + number(c.fov) +
                                         " is not between 0 and 180 degrees");
     }
-    for (const Material &m : scene.materials)
+    for (const Material &m : scene.materials) {
         if (!m.color.isFinite() || !std::isfinite(m.filter) || !std::isfinite(m.transmit) ||
-            !std::isfinite(m.interior.ior))
+            !std::isfinite(m.interior.ior) || !m.finish.emission.isFinite())
             throw SceneError(m.loc, "material has non-finite values");
+        if (m.baseColorTexture >= static_cast<int>(scene.textures.size()))
+            throw SceneError(m.loc, "material refers to a missing texture (internal error)");
+    }
 }
 
 }  // namespace rt::ir

@@ -52,6 +52,8 @@ struct Material {
     double transmit = 0;  ///< light passing through untinted
     Finish finish;
     Interior interior;
+    /// Index into Scene::textures whose RGB multiplies `color`, or -1.
+    int baseColorTexture = -1;
     SourceLoc loc;  ///< where it was first defined (not part of equality)
 
     /// Every field that decides how the material looks, as one tuple: equality dedupes
@@ -65,7 +67,8 @@ struct Material {
                                f.metallic, rmax.r, rmax.g, rmax.b, rmin.r, rmin.g, rmin.b,
                                f.reflectionFalloff, f.reflectionExponent, f.fresnel,
                                f.conserveEnergy, e.r, e.g, e.b, interior.ior,
-                               interior.fadeDistance, interior.fadePower, fc.r, fc.g, fc.b);
+                               interior.fadeDistance, interior.fadePower, fc.r, fc.g, fc.b,
+                               baseColorTexture);
     }
     bool sameAppearance(const Material &o) const { return appearanceKey() == o.appearanceKey(); }
     bool isTransparent() const { return filter > 0 || transmit > 0; }

@@ -30,7 +30,13 @@ struct CylinderPrim {
     double r1 = 1, r2 = 1;
 };
 
-using PrimShape = std::variant<SpherePrim, BoxPrim, CylinderPrim>;
+/// A triangle mesh of Scene::meshes, placed by the node's transforms. Closed meshes are solids
+/// (they can take part in CSG); open ones are surfaces only.
+struct MeshPrim {
+    int mesh = -1;
+};
+
+using PrimShape = std::variant<SpherePrim, BoxPrim, CylinderPrim, MeshPrim>;
 
 /// OpenSCAD's $fn/$fa/$fs at the primitive, for the tessellated comparison mode.
 struct Fragments {

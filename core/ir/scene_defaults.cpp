@@ -39,7 +39,7 @@ void completeScene(Scene &scene, DiagnosticSink &diag) {
     validateScene(scene, diag);
     pruneEmpty(scene, diag);
     if (!scene.camera) {
-        Bounds3 b = worldBounds(*scene.root);
+        Bounds3 b = worldBounds(*scene.root, Mat4(), &scene);
         Vec3 centre(0);
         double radius = 1;
         if (!b.isEmpty() && b.isFinite()) {

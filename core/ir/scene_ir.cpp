@@ -95,7 +95,12 @@ int Scene::addMaterial(const Material &m) {
     return index;
 }
 
-Bounds3 primitiveBounds(const PrimShape &shape) {
+Bounds3 primitiveBounds(const PrimShape &shape, const Scene *scene) {
+    if (const auto *m = std::get_if<MeshPrim>(&shape)) {
+        if (!scene || m->mesh < 0 || m->mesh >= static_cast<int>(scene->meshes.size()))
+            return Bounds3();
+        return scene->meshes[m->mesh]->bounds();
+    }
     if (const auto *s = std::get_if<SpherePrim>(&shape))
         return Bounds3(Vec3(-s->radius), Vec3(s->radius));
     if (const auto *b = std::get_if<BoxPrim>(&shape)) return Bounds3(b->min, b->max);
@@ -104,31 +109,31 @@ Bounds3 primitiveBounds(const PrimShape &shape) {
     return Bounds3(Vec3(-r, -r, c.z0), Vec3(r, r, c.z1));
 }
 
-Bounds3 worldBounds(const Node &node, const Mat4 &parentFromNode) {
+Bounds3 worldBounds(const Node &node, const Mat4 &parentFromNode, const Scene *scene) {
     switch (node.kind) {
         case NodeKind::Primitive: {
             Transform t(parentFromNode, Mat4());  // inverse unused by bounds()
-            return t.bounds(primitiveBounds(node.shape));
+            return t.bounds(primitiveBounds(node.shape, scene));
         }
         case NodeKind::Transform: {
             Mat4 m = parentFromNode * node.matrix;
             Bounds3 b;
-            for (const auto &c : node.children) b = unionBounds(b, worldBounds(*c, m));
+            for (const auto &c : node.children) b = unionBounds(b, worldBounds(*c, m, scene));
             return b;
         }
         case NodeKind::Intersection: {
             if (node.children.empty()) return Bounds3();
             Bounds3 b = Bounds3::infinite();
-            for (const auto &c : node.children) b = intersectBounds(b, worldBounds(*c, parentFromNode));
+            for (const auto &c : node.children) b = intersectBounds(b, worldBounds(*c, parentFromNode, scene));
             return b.isEmpty() ? Bounds3() : b;
         }
         case NodeKind::Difference:
             return node.children.empty() ? Bounds3()
-                                         : worldBounds(*node.children.front(), parentFromNode);
+                                         : worldBounds(*node.children.front(), parentFromNode, scene);
         case NodeKind::Group:
         case NodeKind::Union: {
             Bounds3 b;
-            for (const auto &c : node.children) b = unionBounds(b, worldBounds(*c, parentFromNode));
+            for (const auto &c : node.children) b = unionBounds(b, worldBounds(*c, parentFromNode, scene));
             return b;
         }
     }

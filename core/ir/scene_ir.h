@@ -16,6 +16,7 @@
 #include "core/ir/camera.h"
 #include "core/ir/light.h"
 #include "core/ir/material.h"
+#include "core/ir/mesh.h"
 #include "core/ir/node.h"
 #include "core/math/bounds3.h"
 
@@ -39,6 +40,8 @@ struct ImportStats {
 struct Scene {
     NodePtr root = Node::makeGroup(NodeKind::Group, {});
     std::vector<Material> materials;
+    std::vector<MeshPtr> meshes;      ///< referenced by MeshPrim::mesh
+    std::vector<TexturePtr> textures; ///< referenced by Material::baseColorTexture
     std::vector<Light> lights;
     std::optional<Camera> camera;
     Settings settings;
@@ -55,9 +58,10 @@ struct Scene {
 
 /// World-space bounds of a subtree placed by `parentFromNode` (CSG-aware: an intersection is
 /// bounded by the overlap of its children, a difference by its first child).
-Bounds3 worldBounds(const Node &node, const Mat4 &parentFromNode = Mat4());
+Bounds3 worldBounds(const Node &node, const Mat4 &parentFromNode = Mat4(),
+                    const Scene *scene = nullptr);
 
-/// Object-space bounds of a primitive.
-Bounds3 primitiveBounds(const PrimShape &shape);
+/// Object-space bounds of a primitive (meshes are looked up in `scene`).
+Bounds3 primitiveBounds(const PrimShape &shape, const Scene *scene = nullptr);
 
 }  // namespace rt::ir

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+// glTF 2.0 (.gltf, .glb) importer: node hierarchy, meshes, materials, textures, cameras and
+// KHR_lights_punctual into the IR, with glTF's Y-up placed Z-up ((x, y, z) -> (x, -z, y)).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "core/ir/diagnostics.h"
+#include "core/ir/scene_ir.h"
+
+namespace rt::gltf {
+
+struct ImportOptions {
+    /// World units per glTF unit (metres); 1000 places a metre model in a millimetre world.
+    double unitScale = 1.0;
+    /// Scene to show; -1 = the file's `scene`, else scene 0.
+    int sceneIndex = -1;
+};
+
+/// Reads a whole file as a scene: geometry, materials, textures, the first camera in traversal
+/// order (if any) as scene.camera, and the punctual lights. Problems in the file are
+/// ParseError/SceneError located at the file (with the JSON path of the culprit in the message).
+ir::Scene importGltf(const std::string &path, DiagnosticSink &diag, const ImportOptions &opts = {});
+
+/// For `import("model.glb")` in a .scad file: adds the file's meshes (and, unless
+/// `materialOverride` is set, its materials and textures) to `scene`, and returns a Group node
+/// placing them, Z-up, with `loc` (the import() call) on every node. Cameras and lights in the
+/// file are ignored with a note.
+ir::NodePtr importGltfInto(ir::Scene &scene, const std::string &path, const SourceLoc &loc,
+                           DiagnosticSink &diag, std::optional<int> materialOverride,
+                           const ImportOptions &opts = {});
+
+}  // namespace rt::gltf
