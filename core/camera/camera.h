@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Perspective pinhole camera with POV-Ray 3.7's look_at construction (povray-semantics.md
-// section 3), right-handed: a film position maps to the same ray POV-Ray traces for it.
+// Perspective pinhole or orthographic camera with POV-Ray 3.7's look_at construction
+// (povray-semantics.md section 3), right-handed: a film position maps to the same ray POV-Ray
+// traces for it. Orthographic rays start on the film rectangle (right x up) through the
+// location and all run along the view direction.
 #pragma once
 
 #include "core/ir/camera.h"
@@ -19,6 +21,7 @@ class Camera {
     const Vec3 &position() const { return origin_; }
 
   private:
+    bool orthographic_ = false;
     Vec3 origin_, direction_, right_, up_;
     double invWidth_, invHeight_;
 };

@@ -6,7 +6,7 @@
 
 namespace rt {
 
-int CsgShape::addLeaf(std::unique_ptr<PrimitiveInstance> leaf) {
+int CsgShape::addLeaf(std::unique_ptr<LeafShape> leaf) {
     Node n;
     n.op = Op::Leaf;
     n.bounds = leaf->worldBounds();
@@ -38,8 +38,8 @@ int CsgShape::addOp(Op op, std::vector<int> children) {
     return static_cast<int>(nodes_.size()) - 1;
 }
 
-std::unique_ptr<PrimitiveInstance> CsgShape::releaseOnlyLeaf() {
-    std::unique_ptr<PrimitiveInstance> leaf = std::move(leaves_.front());
+std::unique_ptr<LeafShape> CsgShape::releaseOnlyLeaf() {
+    std::unique_ptr<LeafShape> leaf = std::move(leaves_.front());
     leaves_.clear();
     nodes_.clear();
     return leaf;
@@ -65,8 +65,7 @@ void CsgShape::evaluate(int index, const Ray &ray, double w0, double w1, SpanLis
         return;
     }
     if (node.op == Op::Leaf) {
-        Span s;
-        if (node.leaf->lineSpan(ray, &s)) out.push_back(s);
+        node.leaf->lineSpans(ray, out);
         return;
     }
     ScratchList operand(scratch), merged(scratch);

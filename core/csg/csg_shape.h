@@ -16,7 +16,7 @@ class CsgShape final : public Shape {
     enum class Op { Leaf, Union, Intersection, Difference };
 
     /// Builder: add nodes bottom-up; the last node added is the root.
-    int addLeaf(std::unique_ptr<PrimitiveInstance> leaf);
+    int addLeaf(std::unique_ptr<LeafShape> leaf);
     int addOp(Op op, std::vector<int> children);
 
     Bounds3 worldBounds() const override { return nodes_.empty() ? Bounds3() : nodes_.back().bounds; }
@@ -25,16 +25,16 @@ class CsgShape final : public Shape {
     bool inside(const Vec3 &p) const override;
     size_t primitiveCount() const override { return leaves_.size(); }
 
-    const std::vector<std::unique_ptr<PrimitiveInstance>> &leaves() const { return leaves_; }
+    const std::vector<std::unique_ptr<LeafShape>> &leaves() const { return leaves_; }
     /// Hands over the primitive of a tree that has exactly one; the shape is empty afterwards.
-    std::unique_ptr<PrimitiveInstance> releaseOnlyLeaf();
+    std::unique_ptr<LeafShape> releaseOnlyLeaf();
 
   private:
     struct Node {
         Op op = Op::Leaf;
         Bounds3 bounds;
         std::vector<int> children;
-        const PrimitiveInstance *leaf = nullptr;
+        const LeafShape *leaf = nullptr;
     };
 
     void evaluate(int node, const Ray &ray, double w0, double w1, SpanList &out,
@@ -42,7 +42,7 @@ class CsgShape final : public Shape {
     bool insideNode(int node, const Vec3 &p) const;
 
     std::vector<Node> nodes_;
-    std::vector<std::unique_ptr<PrimitiveInstance>> leaves_;
+    std::vector<std::unique_ptr<LeafShape>> leaves_;
 };
 
 }  // namespace rt

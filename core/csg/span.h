@@ -11,13 +11,13 @@
 
 namespace rt {
 
-class PrimitiveInstance;
+class LeafShape;
 
 /// One surface crossing along a ray: parameter t, the primitive whose surface it is, and which
 /// face of that primitive (used to compute the normal of the winning hit only).
 struct Crossing {
     double t = 0;
-    const PrimitiveInstance *leaf = nullptr;
+    const LeafShape *leaf = nullptr;
     int face = 0;
     /// Another surface was within the tie tolerance of this one (coincident faces): which of
     /// them a renderer shows is a convention, so comparisons mask such pixels.

@@ -16,7 +16,7 @@ enum class SpanOp { Union, Intersection, Difference };
 /// (two solids meeting in a plane intersect in nothing). When crossings of both operands at
 /// the same t could each be the result's boundary: in a difference the minuend's face wins (a
 /// subtrahend that only touches it does not cut it); in a union or intersection the one whose
-/// material sorts first by value (PrimitiveInstance::tieRank) wins, the first operand's only if
+/// material sorts first by value (LeafShape::tieRank) wins, the first operand's only if
 /// the ranks are equal, so swapping their operands never changes the picture.
 /// A boundary of the result that has a crossing of the other operand within `tieEps` (exactly
 /// coincident or only rounding apart) is flagged as a tie. Crossings of both operands within

@@ -7,7 +7,7 @@
 
 namespace rt {
 
-class PrimitiveInstance;
+class LeafShape;
 class Shape;
 
 struct SurfaceInteraction {
@@ -15,7 +15,13 @@ struct SurfaceInteraction {
     Vec3 p;                                    ///< hit point, refined onto the surface
     Vec3 pError;                               ///< bound on the absolute error of p
     Vec3 n;                                    ///< unit geometric normal, out of the primitive
-    const PrimitiveInstance *leaf = nullptr;   ///< primitive whose surface was hit
+    /// Unit shading normal: n, or a mesh's interpolated vertex normal (POV-Ray shades smooth
+    /// triangles with it: lighting, reflection and refraction)
+    Vec3 ns;
+    /// Texture coordinates (glTF convention, origin top-left) when the surface has them
+    double u = 0, v = 0;
+    bool hasUv = false;
+    const LeafShape *leaf = nullptr;           ///< primitive or mesh whose surface was hit
     const Shape *object = nullptr;             ///< top-level object (owner of the interior)
     /// Another surface lies within the tie tolerance of this hit (coincident faces, or a
     /// surface at the ray's origin): renderers may legitimately disagree on what is seen.

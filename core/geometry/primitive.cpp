@@ -3,6 +3,7 @@
 #include "core/geometry/primitive.h"
 
 #include <cmath>
+#include <stdexcept>
 #include <utility>
 
 #include "core/math/float_util.h"
@@ -14,8 +15,9 @@ std::unique_ptr<Primitive> Primitive::create(const ir::PrimShape &shape) {
     if (const auto *s = std::get_if<ir::SpherePrim>(&shape))
         return std::make_unique<Sphere>(s->radius);
     if (const auto *b = std::get_if<ir::BoxPrim>(&shape)) return std::make_unique<Box>(b->min, b->max);
-    const auto &c = std::get<ir::CylinderPrim>(shape);
-    return std::make_unique<Cone>(c.z0, c.z1, c.r1, c.r2);
+    if (const auto *c = std::get_if<ir::CylinderPrim>(&shape))
+        return std::make_unique<Cone>(c->z0, c->z1, c->r1, c->r2);
+    throw std::logic_error("Primitive::create: meshes are MeshInstances, not primitives");
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -38,28 +38,14 @@ bool Shape::firstCrossing(const Ray &ray, double tMin, double tMax, Crossing *c,
     return true;
 }
 
-namespace {
-
-double frobenius3(const Mat4 &m) {
-    double s = 0;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) s += m.m[i][j] * m.m[i][j];
-    return std::sqrt(s);
-}
-
-}  // namespace
-
 PrimitiveInstance::PrimitiveInstance(std::unique_ptr<Primitive> prim,
                                      const Transform &worldFromObject, int material)
-    : prim_(std::move(prim)),
+    : LeafShape(material),
+      prim_(std::move(prim)),
       worldFromObject_(worldFromObject),
-      identity_(worldFromObject.isIdentity()),
-      material_(material) {
+      identity_(worldFromObject.isIdentity()) {
     bounds_ = worldFromObject_.bounds(prim_->objectBounds());
-    // ||M||_F ||M^-1||_F / 3 is 1 for rotations and uniform scales and grows with shear and
-    // non-uniform scale, as does the rounding error of mapping points back and forth.
-    conditioning_ = std::max(1.0, frobenius3(worldFromObject_.matrix()) *
-                                      frobenius3(worldFromObject_.inverseMatrix()) / 3);
+    conditioning_ = transformConditioning(worldFromObject_);
 }
 
 bool PrimitiveInstance::lineSpan(const Ray &worldRay, Span *span) const {
@@ -70,10 +56,9 @@ bool PrimitiveInstance::lineSpan(const Ray &worldRay, Span *span) const {
     return true;
 }
 
-void PrimitiveInstance::spans(const Ray &ray, double, double, SpanList &out,
-                              SpanScratch &) const {
+void PrimitiveInstance::lineSpans(const Ray &worldRay, SpanList &out) const {
     Span s;
-    if (lineSpan(ray, &s)) out.push_back(s);
+    if (lineSpan(worldRay, &s)) out.push_back(s);
 }
 
 bool PrimitiveInstance::firstCrossing(const Ray &ray, double tMin, double tMax, Crossing *c,
@@ -112,6 +97,7 @@ SurfaceInteraction PrimitiveInstance::surfaceAt(const Ray &worldRay, const Cross
         si.pError = err * conditioning_;
         si.n = normalize(worldFromObject_.normal(os.normal));
     }
+    si.ns = si.n;
     return si;
 }
 

@@ -7,6 +7,7 @@
 #include "core/csg/span.h"
 #include "core/geometry/hit.h"
 #include "core/geometry/primitive.h"
+#include "core/ir/source_loc.h"
 #include "core/math/transform.h"
 
 namespace rt {
@@ -63,29 +64,47 @@ class Shape {
     bool opaque = true;
 };
 
+/// A solid (or surface) with its world placement and one material, whose crossings carry
+/// surface data: what CSG combines and the tracer shades. An analytic primitive or a mesh.
+class LeafShape : public Shape {
+  public:
+    explicit LeafShape(int material) : material_(material) {}
+
+    /// Spans of the whole world line inside the solid; nothing for an open surface.
+    virtual void lineSpans(const Ray &worldRay, SpanList &out) const = 0;
+    /// Full surface data for a crossing of this leaf by the world ray.
+    virtual SurfaceInteraction surfaceAt(const Ray &worldRay, const Crossing &c) const = 0;
+
+    void spans(const Ray &ray, double, double, SpanList &out, SpanScratch &) const override {
+        lineSpans(ray, out);
+    }
+    size_t primitiveCount() const override { return 1; }
+    int material() const { return material_; }
+    /// Order of this leaf's material by value, for the coincident-face tie-break.
+    int tieRank = 0;
+    /// Where the leaf came from (the primitive, polyhedron or import call), for errors.
+    SourceLoc loc;
+
+  private:
+    int material_;
+};
+
 /// An analytic primitive with its world placement and material.
-class PrimitiveInstance final : public Shape {
+class PrimitiveInstance final : public LeafShape {
   public:
     PrimitiveInstance(std::unique_ptr<Primitive> prim, const Transform &worldFromObject,
                       int material);
 
     Bounds3 worldBounds() const override { return bounds_; }
-    void spans(const Ray &ray, double tMin, double tMax, SpanList &out,
-               SpanScratch &scratch) const override;
+    void lineSpans(const Ray &worldRay, SpanList &out) const override;
     bool firstCrossing(const Ray &ray, double tMin, double tMax, Crossing *c,
                        SpanScratch &scratch) const override;
     bool inside(const Vec3 &p) const override;
-    size_t primitiveCount() const override { return 1; }
+    SurfaceInteraction surfaceAt(const Ray &worldRay, const Crossing &c) const override;
 
     /// The span of the whole world line inside this primitive.
     bool lineSpan(const Ray &worldRay, Span *span) const;
-    /// Full surface data for a crossing of this primitive by the world ray.
-    SurfaceInteraction surfaceAt(const Ray &worldRay, const Crossing &c) const;
-
-    int material() const { return material_; }
     const Transform &worldFromObject() const { return worldFromObject_; }
-    /// Order of this primitive's material by value, for the coincident-face tie-break.
-    int tieRank = 0;
 
   private:
     Ray toObject(const Ray &r) const {
@@ -97,7 +116,6 @@ class PrimitiveInstance final : public Shape {
     bool identity_;
     /// Error growth of a round trip through the transform (condition number estimate, >= 1).
     double conditioning_;
-    int material_;
     Bounds3 bounds_;
 };
 

@@ -2,6 +2,7 @@
 // Affine transform operations with error propagation.
 #include "core/math/transform.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rt {
@@ -49,6 +50,21 @@ Bounds3 Transform::bounds(const Bounds3 &b) const {
     // Pad by the rounding error of the sums so transformed bounds stay conservative.
     Vec3 pad = max(abs(lo), abs(hi)) * gamma(4);
     return Bounds3(lo - pad, hi + pad);
+}
+
+namespace {
+
+double frobenius3(const Mat4 &m) {
+    double s = 0;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) s += m.m[i][j] * m.m[i][j];
+    return std::sqrt(s);
+}
+
+}  // namespace
+
+double transformConditioning(const Transform &t) {
+    return std::max(1.0, frobenius3(t.matrix()) * frobenius3(t.inverseMatrix()) / 3);
 }
 
 }  // namespace rt

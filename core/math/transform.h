@@ -47,4 +47,8 @@ class Transform {
     Mat4 m_, mInv_;
 };
 
+/// How much rounding error grows in a round trip through t and back: ||M||_F ||M^-1||_F / 3,
+/// which is 1 for rotations and uniform scales and grows with shear and non-uniform scale.
+double transformConditioning(const Transform &t);
+
 }  // namespace rt

@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <numeric>
+#include <unordered_map>
 
 #include "core/csg/csg_shape.h"
+#include "core/geometry/triangle_mesh.h"
 
 namespace rt {
 
@@ -57,6 +59,7 @@ class Compiler {
                     out.push_back(csg->releaseOnlyLeaf());
                     return;
                 }
+                requireClosedMeshes(*csg);
                 finishObject(*csg, csg->leaves());
                 ++stats_.csgObjects;
                 out.push_back(std::move(csg));
@@ -76,7 +79,7 @@ class Compiler {
         return false;
     }
 
-    std::unique_ptr<PrimitiveInstance> makeLeaf(const ir::Node &node, const Mat4 &m) {
+    std::unique_ptr<LeafShape> makeLeaf(const ir::Node &node, const Mat4 &m) {
         auto t = Transform::fromMatrix(m);
         if (!t) {
             checkTransform(node, m);
@@ -85,12 +88,44 @@ class Compiler {
         int mat = node.material;
         if (mat < 0 || mat >= static_cast<int>(scene_.materials.size()))
             throw SceneError(node.loc, "primitive has no valid material (internal error)");
-        auto leaf = std::make_unique<PrimitiveInstance>(Primitive::create(node.shape), *t, mat);
+        std::unique_ptr<LeafShape> leaf;
+        if (const auto *mp = std::get_if<ir::MeshPrim>(&node.shape))
+            leaf = std::make_unique<MeshInstance>(triangleMesh(node, mp->mesh), *t, mat);
+        else
+            leaf = std::make_unique<PrimitiveInstance>(Primitive::create(node.shape), *t, mat);
         leaf->tieRank = ranks_[mat];
         leaf->interiorMaterial = mat;
         leaf->opaque = !scene_.materials[mat].isTransparent();
+        leaf->loc = node.loc;
         ++stats_.primitives;
         return leaf;
+    }
+
+    /// The render geometry of an IR mesh, built once and shared by every instance.
+    std::shared_ptr<const TriangleMesh> triangleMesh(const ir::Node &node, int index) {
+        if (index < 0 || index >= static_cast<int>(scene_.meshes.size()) || !scene_.meshes[index])
+            throw SceneError(node.loc, "mesh reference is not in the scene (internal error)");
+        auto &cached = meshes_[index];
+        if (!cached) {
+            cached = std::make_shared<const TriangleMesh>(scene_.meshes[index]);
+            stats_.triangles += cached->triangleCount();
+        }
+        return cached;
+    }
+
+    /// Meshes combined with other solids must bound a volume.
+    static void requireClosedMeshes(const CsgShape &csg) {
+        for (const auto &leaf : csg.leaves()) {
+            const auto *mesh = dynamic_cast<const MeshInstance *>(leaf.get());
+            if (!mesh || mesh->geometry().closed()) continue;
+            const auto &top = mesh->geometry().topology();
+            throw SceneError(leaf->loc,
+                             "mesh '" + mesh->geometry().mesh().name + "' is open (" +
+                                 std::to_string(top.boundaryEdges) + " boundary edges, " +
+                                 std::to_string(top.nonManifoldEdges) +
+                                 " non-manifold edges): only closed meshes bound a solid that "
+                                 "CSG can combine");
+        }
     }
 
     /// Adds the subtree to the CSG shape; returns its node index, or -1 when it has no volume.
@@ -149,7 +184,7 @@ class Compiler {
     }
 
     void finishObject(Shape &object,
-                      const std::vector<std::unique_ptr<PrimitiveInstance>> &leaves) {
+                      const std::vector<std::unique_ptr<LeafShape>> &leaves) {
         // The interior (ior, fade) of a CSG solid is that of its first primitive, which is the
         // minuend's for a difference; the solid blocks shadows only if every surface is opaque.
         object.interiorMaterial = leaves.front()->material();
@@ -161,6 +196,7 @@ class Compiler {
     DiagnosticSink &diag_;
     CompileStats &stats_;
     std::vector<int> ranks_;
+    std::unordered_map<int, std::shared_ptr<const TriangleMesh>> meshes_;
 };
 
 }  // namespace
@@ -169,6 +205,7 @@ std::unique_ptr<RenderScene> RenderScene::compile(const ir::Scene &scene, Diagno
     if (!scene.camera) throw SceneError({}, "scene has no camera (completeScene not applied)");
     std::unique_ptr<RenderScene> rs(new RenderScene());
     rs->materials_ = scene.materials;
+    rs->textures_ = scene.textures;
     rs->lights_ = scene.lights;
     rs->camera_ = *scene.camera;
     rs->settings_ = scene.settings;

@@ -15,7 +15,8 @@ namespace rt {
 
 struct CompileStats {
     size_t objects = 0;         ///< top-level solids
-    size_t primitives = 0;      ///< analytic primitives in them
+    size_t primitives = 0;      ///< primitives and mesh instances in them
+    size_t triangles = 0;       ///< triangles of the distinct meshes
     size_t csgObjects = 0;      ///< solids that need span merging
     size_t emptyDropped = 0;    ///< subtrees with no volume (empty operands, singular transforms)
     int bvhDepth = 0;
@@ -34,6 +35,9 @@ class RenderScene {
 
     const ir::Material &material(int index) const { return materials_[index]; }
     const std::vector<ir::Material> &materials() const { return materials_; }
+    const ir::Texture *texture(int index) const {
+        return index >= 0 && index < static_cast<int>(textures_.size()) ? textures_[index].get() : nullptr;
+    }
     const std::vector<ir::Light> &lights() const { return lights_; }
     const ir::Camera &camera() const { return camera_; }
     const ir::Settings &settings() const { return settings_; }
@@ -49,6 +53,7 @@ class RenderScene {
     std::vector<std::unique_ptr<Shape>> objects_;
     Bvh bvh_;
     std::vector<ir::Material> materials_;
+    std::vector<ir::TexturePtr> textures_;
     std::vector<ir::Light> lights_;
     ir::Camera camera_;
     ir::Settings settings_;

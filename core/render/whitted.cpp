@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/materials/classic_shading.h"
+#include "core/materials/texture_sampler.h"
 
 namespace rt {
 
@@ -16,6 +17,14 @@ constexpr double kShadowEpsilon = 1e-9;
 
 Rgb powRgb(const Rgb &c, double e) {
     return {std::pow(c.r, e), std::pow(c.g, e), std::pow(c.b, e)};
+}
+
+/// POV-Ray's cubic_spline (lighting/point.cpp): 0 below low, 1 above high, smooth between.
+double cubicSpline(double low, double high, double x) {
+    if (x < low) return 0;
+    if (x >= high) return 1;
+    double p = (x - low) / (high - low);
+    return (3 - 2 * p) * p * p;
 }
 
 }  // namespace
@@ -63,14 +72,15 @@ Rgb WhittedIntegrator::shade(const Ray &ray, const SurfaceInteraction &si, int l
     const ir::Material &m = scene_.material(si.leaf->material());
     const ir::Finish &f = m.finish;
     const ir::Settings &settings = scene_.settings();
-    // Shading normal faces the incoming ray
-    Vec3 N = dot(si.n, ray.d) > 0 ? -si.n : si.n;
+    // Shading normal (a smooth mesh's interpolated one) faces the incoming ray
+    Vec3 N = dot(si.ns, ray.d) > 0 ? -si.ns : si.ns;
     double cosI = -dot(ray.d, N);
+    Rgb c = surfaceColour(m, si);
 
-    Rgb colour = localColour(ray, si, N, m, stack, ctx);
+    Rgb colour = localColour(ray, si, N, m, c, stack, ctx);
 
     Reflectivity refl = reflectivity(f, cosI, f.fresnel ? relativeIor(si.object, stack) : 1);
-    Rgb filCol = m.color * m.filter + Rgb(m.transmit);
+    Rgb filCol = c * m.filter + Rgb(m.transmit);
     if (f.conserveEnergy)
         for (int i = 0; i < 3; ++i) filCol[i] *= std::min(1.0, 1 - refl.value[i]);
     double trans = std::min(1.0, std::abs(povGreyscale(filCol)));
@@ -128,25 +138,39 @@ Rgb WhittedIntegrator::shade(const Ray &ray, const SurfaceInteraction &si, int l
     return colour;
 }
 
+Rgb WhittedIntegrator::surfaceColour(const ir::Material &m, const SurfaceInteraction &si) const {
+    const ir::Texture *tex = scene_.texture(m.baseColorTexture);
+    if (!tex || !si.hasUv) return m.color;
+    return m.color * sampleTexture(*tex, si.u, si.v);
+}
+
 Rgb WhittedIntegrator::localColour(const Ray &ray, const SurfaceInteraction &si, const Vec3 &N,
-                                   const ir::Material &m, const InteriorStack &stack,
+                                   const ir::Material &m, const Rgb &c, const InteriorStack &stack,
                                    TraceContext &ctx) const {
     const ir::Finish &f = m.finish;
-    const Rgb &c = m.color;
     double a = 1 - m.filter - m.transmit;  // opacity
     Rgb colour = c * a * (scene_.settings().ambientLight * f.ambient + f.emission);
     if (f.diffuse == 0 && f.phong == 0 && f.specular == 0) return colour;
 
     for (const ir::Light &light : scene_.lights()) {
-        Vec3 toLight = light.position - si.p;
-        double dist = length(toLight);
-        if (!(dist > 0)) continue;
-        Vec3 L = toLight / dist;
+        // Direction to the light and the distance a shadow ray covers (POV-Ray measures a
+        // parallel light's distance along the beam, to the plane through its position)
+        Vec3 L;
+        double dist;
+        if (light.kind == ir::Light::Kind::Directional) {
+            L = -normalize(light.direction);
+            dist = dot(light.position - si.p, L);
+        } else {
+            Vec3 toLight = light.position - si.p;
+            dist = length(toLight);
+            if (!(dist > 0)) continue;
+            L = toLight / dist;
+        }
         // A light behind the surface, as seen from the viewer, does nothing
         double cosNL = dot(N, L);
         if (cosNL < kPovEpsilon) continue;
-        Rgb lc = light.color * lightFade(light, dist);
-        if (!light.shadowless) lc *= shadowFilter(si, light.position, stack, ctx);
+        Rgb lc = light.color * lightAttenuation(light, L, dist);
+        if (!light.shadowless && dist > 0) lc *= shadowFilter(si, L, dist, stack, ctx);
         if (!(std::abs(lc.r) > kPovEpsilon || std::abs(lc.g) > kPovEpsilon ||
               std::abs(lc.b) > kPovEpsilon))
             continue;
@@ -173,12 +197,27 @@ Rgb WhittedIntegrator::localColour(const Ray &ray, const SurfaceInteraction &si,
     return colour;
 }
 
-Rgb WhittedIntegrator::shadowFilter(const SurfaceInteraction &si, const Vec3 &lightPos,
+double WhittedIntegrator::lightAttenuation(const ir::Light &light, const Vec3 &L, double dist) const {
+    double att = 1;
+    if (light.kind == ir::Light::Kind::Spot) {
+        // POV-Ray Attenuate_Light: cos^tightness, then a cubic spline from the falloff cone
+        // (0) to the radius cone (1)
+        double cosTheta = dot(-L, normalize(light.direction));
+        if (!(cosTheta > 0)) return 0;
+        att = std::pow(cosTheta, light.spotTightness);
+        double cosRadius = std::cos(radians(light.spotRadius));
+        double cosFalloff = std::cos(radians(light.spotFalloff));
+        if (cosRadius > 0 && cosTheta < cosRadius) att *= cubicSpline(cosFalloff, cosRadius, cosTheta);
+    }
+    return att * lightFade(light, dist);
+}
+
+Rgb WhittedIntegrator::shadowFilter(const SurfaceInteraction &si, const Vec3 &L, double dist,
                                     const InteriorStack &stack, TraceContext &ctx) const {
     Rgb filter(1);
     InteriorStack inside = stack;
-    Ray ray = spawnRay(si, normalize(lightPos - si.p));
-    double remaining = length(lightPos - ray.o) * (1 - kShadowEpsilon);
+    Ray ray = spawnRay(si, L);
+    double remaining = (dist - dot(ray.o - si.p, L)) * (1 - kShadowEpsilon);
     // March from surface to surface towards the light, filtering at each crossing
     while (true) {
         ++ctx.stats.shadow;
@@ -188,7 +227,7 @@ Rgb WhittedIntegrator::shadowFilter(const SurfaceInteraction &si, const Vec3 &li
         if (!blocked) return filter;
         const ir::Material &m = scene_.material(hit.leaf->material());
         if (hit.object->opaque || !m.isTransparent()) return Rgb(0);
-        filter *= m.color * m.filter + Rgb(m.transmit);
+        filter *= surfaceColour(m, hit) * m.filter + Rgb(m.transmit);
         // The shadow ray starts with the interior list of the ray that hit the shaded point; at
         // each crossing light fades over the segment inside that solid, then the crossing
         // enters or leaves it (POV-Ray ComputeShadowTexture, ComputeShadowMedia)

@@ -37,12 +37,18 @@ class WhittedIntegrator {
               bool continued, TraceContext &ctx) const;
     Rgb shade(const Ray &ray, const SurfaceInteraction &si, int level, double weight,
               const InteriorStack &stack, TraceContext &ctx) const;
-    /// Ambient, emission and the sum over lights of diffuse, phong and specular.
+    /// Ambient, emission and the sum over lights of diffuse, phong and specular; `c` is the
+    /// pigment colour at the hit.
     Rgb localColour(const Ray &ray, const SurfaceInteraction &si, const Vec3 &N,
-                    const ir::Material &m, const InteriorStack &stack, TraceContext &ctx) const;
-    /// Filtered light reaching si from a point light (1 = unoccluded), POV-Ray section 1.4.
-    /// `stack` is the interior list of the ray that hit si.
-    Rgb shadowFilter(const SurfaceInteraction &si, const Vec3 &lightPos,
+                    const ir::Material &m, const Rgb &c, const InteriorStack &stack,
+                    TraceContext &ctx) const;
+    /// Pigment colour at a hit: the material's colour times its texture, if any.
+    Rgb surfaceColour(const ir::Material &m, const SurfaceInteraction &si) const;
+    /// Spotlight cone and fade of a light seen in direction L at shadow distance dist.
+    double lightAttenuation(const ir::Light &light, const Vec3 &L, double dist) const;
+    /// Filtered light reaching si from the direction L over distance dist (1 = unoccluded),
+    /// POV-Ray section 1.4. `stack` is the interior list of the ray that hit si.
+    Rgb shadowFilter(const SurfaceInteraction &si, const Vec3 &L, double dist,
                      const InteriorStack &stack, TraceContext &ctx) const;
     /// n_transmitted / n_incident at a surface of `object`, as POV-Ray's ComputeRelativeIOR.
     double relativeIor(const Shape *object, const InteriorStack &stack) const;

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/image/image_io.h"
 #include "exporters/povray/pov_format.h"
 
 namespace rt::pov {
@@ -40,24 +41,29 @@ const ir::Node *firstPrimitive(const ir::Node &n) {
 
 class Writer {
   public:
-    explicit Writer(const ir::Scene &scene) : scene_(scene) {}
+    Writer(const ir::Scene &scene, std::string assetPrefix, std::vector<TextureFile> *images)
+        : scene_(scene), assetPrefix_(std::move(assetPrefix)), images_(images) {}
 
     std::string run(const std::string &sourceName) {
-        collectMaterials(*scene_.root);
+        collectUsed(*scene_.root);
         header(sourceName);
         settings();
         camera();
         lights();
         materials();
+        meshes();
         os_ << "// Objects\n";
         topLevel(*scene_.root, Mat4());
         return os_.str();
     }
 
   private:
-    void collectMaterials(const ir::Node &n) {
-        if (n.kind == ir::NodeKind::Primitive) used_.insert(n.material);
-        for (const auto &c : n.children) collectMaterials(*c);
+    void collectUsed(const ir::Node &n) {
+        if (n.kind == ir::NodeKind::Primitive) {
+            used_.insert(n.material);
+            if (const auto *m = std::get_if<ir::MeshPrim>(&n.shape)) usedMeshes_.insert(m->mesh);
+        }
+        for (const auto &c : n.children) collectUsed(*c);
     }
 
     void header(const std::string &sourceName) {
@@ -84,6 +90,18 @@ class Writer {
     void camera() {
         if (!scene_.camera) throw std::logic_error("writeSdl needs a complete scene (camera)");
         const ir::Camera &c = *scene_.camera;
+        if (c.projection == ir::Projection::Orthographic) {
+            // POV-Ray's orthographic film is |right| x |up| in world units
+            os_ << comment(c.loc, "camera") << "camera {\n"
+                << "    orthographic\n"
+                << "    location " << vec(c.location) << "\n"
+                << "    look_at " << vec(c.lookAt) << "\n"
+                << "    sky " << vec(c.sky) << "\n"
+                << "    up <0, " << num(c.orthoHeight) << ", 0>\n"
+                << "    right <-" << num(c.orthoHeight) << " * image_width / image_height, 0, 0>\n"
+                << "}\n\n";
+            return;
+        }
         std::string angle = num(c.fov);
         if (c.fovAxis == ir::FovAxis::Vertical)
             angle = "degrees(2 * atan(tan(radians(" + num(c.fov) +
@@ -106,6 +124,15 @@ class Writer {
         for (const ir::Light &l : scene_.lights) {
             os_ << comment(l.loc, "light") << "light_source {\n"
                 << "    " << vec(l.position) << ", " << rgb(l.color) << "\n";
+            if (l.kind == ir::Light::Kind::Spot)
+                os_ << "    spotlight\n"
+                    << "    point_at " << vec(l.position + normalize(l.direction)) << "\n"
+                    << "    radius " << num(l.spotRadius) << "\n"
+                    << "    falloff " << num(l.spotFalloff) << "\n"
+                    << "    tightness " << num(l.spotTightness) << "\n";
+            if (l.kind == ir::Light::Kind::Directional)
+                os_ << "    parallel\n"
+                    << "    point_at " << vec(l.position + normalize(l.direction)) << "\n";
             if (l.fadePower > 0 && l.fadeDistance != 0)
                 os_ << "    fade_distance " << num(l.fadeDistance) << "\n"
                     << "    fade_power " << num(l.fadePower) << "\n";
@@ -120,9 +147,22 @@ class Writer {
         for (int i : used_) {
             const ir::Material &m = scene_.materials[i];
             const ir::Finish &f = m.finish;
-            os_ << comment(m.loc, "") << "#declare " << materialName(i) << " = texture {\n"
-                << "    pigment { rgbft <" << num(m.color.r) << ", " << num(m.color.g) << ", "
-                << num(m.color.b) << ", " << num(m.filter) << ", " << num(m.transmit) << "> }\n"
+            os_ << comment(m.loc, "") << "#declare " << materialName(i) << " = texture {\n";
+            const ir::Texture *tex = m.baseColorTexture >= 0 ? scene_.textures[m.baseColorTexture].get() : nullptr;
+            if (tex) {
+                // The colour factor is baked into a linear 16-bit copy of the texture; uv
+                // coordinates come from the mesh2 (v flipped: POV-Ray's image origin is at the
+                // bottom left)
+                std::string file = assetPrefix_ + "_" + materialName(i) + ".png";
+                if (images_) images_->push_back({file, bakedTexture(*tex, m.color)});
+                os_ << "    uv_mapping\n"
+                    << "    pigment { image_map { png \"" << file << "\" gamma 1.0 interpolate 2 filter all "
+                    << num(m.filter) << " transmit all " << num(m.transmit) << " } }\n";
+            } else {
+                os_ << "    pigment { rgbft <" << num(m.color.r) << ", " << num(m.color.g) << ", "
+                    << num(m.color.b) << ", " << num(m.filter) << ", " << num(m.transmit) << "> }\n";
+            }
+            os_
                 << "    finish {\n"
                 << "        ambient " << num(f.ambient) << "\n"
                 << "        emission " << rgb(f.emission) << "\n"
@@ -141,6 +181,51 @@ class Writer {
                 << "        }\n";
             if (f.conserveEnergy) os_ << "        conserve_energy\n";
             os_ << "    }\n}\n";
+        }
+        os_ << "\n";
+    }
+
+    static Image bakedTexture(const ir::Texture &tex, const Rgb &factor) {
+        Image img(tex.width, tex.height);
+        for (int y = 0; y < tex.height; ++y)
+            for (int x = 0; x < tex.width; ++x) {
+                const float *p = &tex.rgba[4 * (size_t(y) * tex.width + x)];
+                img.set(x, y, Rgb(p[0], p[1], p[2]) * factor);
+            }
+        return img;
+    }
+
+    /// Each mesh once, as mesh2; objects place it. A closed mesh gets an inside_vector, so
+    /// POV-Ray knows its inside (by parity) and it can take part in CSG.
+    void meshes() {
+        if (usedMeshes_.empty()) return;
+        os_ << "// Meshes\n";
+        for (int i : usedMeshes_) {
+            const ir::Mesh &m = *scene_.meshes[i];
+            std::vector<std::array<uint32_t, 3>> faces;
+            for (const auto &t : m.triangles) {
+                const Vec3 &a = m.positions[t[0]], &b = m.positions[t[1]], &c = m.positions[t[2]];
+                if (lengthSquared(cross(b - a, c - a)) > 0) faces.push_back(t);  // POV drops the rest
+            }
+            os_ << comment(m.loc, "mesh '" + m.name + "'") << "#declare Mesh_" << i << " = mesh2 {\n"
+                << "    vertex_vectors {\n        " << m.positions.size();
+            for (const Vec3 &p : m.positions) os_ << ",\n        " << vec(p);
+            os_ << "\n    }\n";
+            if (!m.normals.empty()) {
+                os_ << "    normal_vectors {\n        " << m.normals.size();
+                for (const Vec3 &n : m.normals) os_ << ",\n        " << vec(n);
+                os_ << "\n    }\n";
+            }
+            if (!m.uvs.empty()) {
+                os_ << "    uv_vectors {\n        " << m.uvs.size();
+                for (const auto &uv : m.uvs) os_ << ",\n        <" << num(uv[0]) << ", " << num(1.0 - double(uv[1])) << ">";
+                os_ << "\n    }\n";
+            }
+            os_ << "    face_indices {\n        " << faces.size();
+            for (const auto &t : faces) os_ << ",\n        <" << t[0] << ", " << t[1] << ", " << t[2] << ">";
+            os_ << "\n    }\n";
+            if (ir::analyzeMesh(m).closed()) os_ << "    inside_vector <0.2718281828, 0.5772156649, 0.7071067811>\n";
+            os_ << "}\n";
         }
         os_ << "\n";
     }
@@ -213,6 +298,8 @@ class Writer {
                 shape = "sphere { <0, 0, 0>, " + num(s->radius);
             else if (const auto *b = std::get_if<ir::BoxPrim>(&cur->shape))
                 shape = "box { " + vec(b->min) + ", " + vec(b->max);
+            else if (const auto *mp = std::get_if<ir::MeshPrim>(&cur->shape))
+                shape = "object { Mesh_" + std::to_string(mp->mesh);
             else {
                 const auto &c = std::get<ir::CylinderPrim>(cur->shape);
                 shape = "cone { <0, 0, " + num(c.z0) + ">, " + num(c.r1) + ", <0, 0, " +
@@ -237,14 +324,35 @@ class Writer {
     }
 
     const ir::Scene &scene_;
-    std::set<int> used_;
+    std::string assetPrefix_;
+    std::vector<TextureFile> *images_;
+    std::set<int> used_, usedMeshes_;
     std::ostringstream os_;
 };
 
 }  // namespace
 
-std::string writeSdl(const ir::Scene &scene, const std::string &sourceName) {
-    return Writer(scene).run(sourceName);
+std::string writeSdl(const ir::Scene &scene, const std::string &sourceName,
+                     std::vector<TextureFile> *textures, const std::string &assetPrefix) {
+    return Writer(scene, assetPrefix, textures).run(sourceName);
+}
+
+void exportPov(const ir::Scene &scene, const std::string &povPath, const std::string &sourceName,
+               IniOptions ini) {
+    fs::path pov(povPath);
+    std::vector<TextureFile> textures;
+    std::string sdl = writeSdl(scene, sourceName, &textures, pov.stem().string());
+    ini.povFile = pov.filename().string();
+    fs::path dir = pov.has_parent_path() ? pov.parent_path() : fs::path(".");
+    // Images first, so the .pov never refers to a missing file
+    for (const TextureFile &t : textures) {
+        WriteOptions wo;
+        wo.pngDepth = PngDepth::Bits16;
+        wo.linearPng = true;
+        writeImage(t.image, (dir / t.fileName).string(), wo);
+    }
+    writeTextFile(povPath, sdl);
+    writeTextFile(fs::path(pov).replace_extension(".ini").string(), writeIni(ini));
 }
 
 std::string writeIni(const IniOptions &o) {

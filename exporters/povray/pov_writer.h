@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "core/image/image.h"
 #include "core/ir/scene_ir.h"
 
 namespace rt::pov {
@@ -27,7 +28,21 @@ struct IniOptions {
 /// grouped exactly as the ray tracer groups them: each top-level solid is one POV-Ray object
 /// with one interior (that of its first primitive); unions inside CSG and transparent unions
 /// are `merge`, so no internal surface appears that scadray does not have.
-std::string writeSdl(const ir::Scene &scene, const std::string &sourceName);
+///
+/// Textured materials refer to images named `<assetPrefix>_Material_<n>.png` (the texture with
+/// the material's colour baked in, linear 16-bit); they are appended to `textures` when given.
+struct TextureFile {
+    std::string fileName;
+    Image image;
+};
+std::string writeSdl(const ir::Scene &scene, const std::string &sourceName,
+                     std::vector<TextureFile> *textures = nullptr,
+                     const std::string &assetPrefix = "scene");
+
+/// Writes `povPath`, the .ini beside it (ini.povFile is set from povPath) and the texture
+/// images, each through a temporary file and a rename.
+void exportPov(const ir::Scene &scene, const std::string &povPath, const std::string &sourceName,
+               IniOptions ini);
 
 /// The .ini text: 16-bit linear PNG output, no antialiasing (supersampling by size instead),
 /// no display, no progress lines.

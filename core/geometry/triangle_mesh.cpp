@@ -1,0 +1,253 @@
+// SPDX-License-Identifier: MIT
+// Triangle mesh BVH, watertight intersection, spans by winding number.
+#include "core/geometry/triangle_mesh.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/math/float_util.h"
+
+namespace rt {
+
+namespace {
+
+/// Direction of the inside-test ray: no axis or diagonal, so it rarely runs along mesh edges.
+const Vec3 kInsideDirection = normalize(Vec3(0.2718281828, 0.5772156649, 0.7071067811));
+
+Vec3 permute(const Vec3 &v, int x, int y, int z) { return {v[x], v[y], v[z]}; }
+
+/// Fill convention for a point exactly on an edge (edge function 0): the edge from a to b, in
+/// the sheared plane, owns it only if it points up, or left when horizontal. The same edge seen
+/// from the neighbouring triangle runs the other way, so exactly one of the two owns the point;
+/// at a shared vertex exactly one triangle of the fan does (the top-left rule of
+/// rasterisation). `sign` is the orientation of the triangle in the plane.
+bool ownsEdge(const Vec3 &a, const Vec3 &b, double sign) {
+    double dx = (b.x - a.x) * sign, dy = (b.y - a.y) * sign;
+    return dy > 0 || (dy == 0 && dx < 0);
+}
+
+}  // namespace
+
+TriangleMesh::TriangleMesh(ir::MeshPtr mesh) : mesh_(std::move(mesh)) {
+    const ir::Mesh &m = *mesh_;
+    std::vector<Bounds3> triBounds;
+    triBounds.reserve(m.triangles.size());
+    smooth_.resize(m.triangles.size(), false);
+    for (size_t i = 0; i < m.triangles.size(); ++i) {
+        const auto &t = m.triangles[i];
+        Bounds3 b = Bounds3::point(m.positions[t[0]]);
+        b = unionBounds(b, m.positions[t[1]]);
+        b = unionBounds(b, m.positions[t[2]]);
+        triBounds.push_back(b);
+        bounds_ = unionBounds(bounds_, b);
+        if (!m.normals.empty())
+            smooth_[i] = !(m.normals[t[0]] == m.normals[t[1]] && m.normals[t[1]] == m.normals[t[2]]);
+    }
+    bvh_ = Bvh(triBounds);
+    topology_ = ir::analyzeMesh(m);
+}
+
+size_t TriangleMesh::extraBytes() const {
+    return bvh_.nodes().capacity() * sizeof(Bvh::Node) + bvh_.itemOrder().capacity() * sizeof(uint32_t) +
+           smooth_.capacity() / 8;
+}
+
+bool TriangleMesh::intersectTriangle(const Ray &r, uint32_t triangle, Hit *hit) const {
+    const auto &idx = mesh_->triangles[triangle];
+    const Vec3 &p0 = mesh_->positions[idx[0]], &p1 = mesh_->positions[idx[1]],
+               &p2 = mesh_->positions[idx[2]];
+    // Translate the vertices to the ray origin, permute so the ray's largest component is z,
+    // and shear so the ray runs along +z
+    Vec3 p0t = p0 - r.o, p1t = p1 - r.o, p2t = p2 - r.o;
+    int kz = maxDimension(abs(r.d));
+    int kx = kz + 1 == 3 ? 0 : kz + 1;
+    int ky = kx + 1 == 3 ? 0 : kx + 1;
+    Vec3 d = permute(r.d, kx, ky, kz);
+    p0t = permute(p0t, kx, ky, kz);
+    p1t = permute(p1t, kx, ky, kz);
+    p2t = permute(p2t, kx, ky, kz);
+    double sx = -d.x / d.z, sy = -d.y / d.z, sz = 1 / d.z;
+    p0t.x += sx * p0t.z;
+    p0t.y += sy * p0t.z;
+    p1t.x += sx * p1t.z;
+    p1t.y += sy * p1t.z;
+    p2t.x += sx * p2t.z;
+    p2t.y += sy * p2t.z;
+    // Edge functions, each with one rounding (FMA), so a shared edge gives the same value with
+    // opposite sign in its two triangles: no ray slips between them
+    double e0 = differenceOfProducts(p1t.x, p2t.y, p1t.y, p2t.x);
+    double e1 = differenceOfProducts(p2t.x, p0t.y, p2t.y, p0t.x);
+    double e2 = differenceOfProducts(p0t.x, p1t.y, p0t.y, p1t.x);
+    if ((e0 < 0 || e1 < 0 || e2 < 0) && (e0 > 0 || e1 > 0 || e2 > 0)) return false;
+    double det = e0 + e1 + e2;
+    if (det == 0 || !std::isfinite(det)) return false;
+    // On an edge or vertex: count the point for one triangle only, so a closed mesh is entered
+    // and left exactly once by a ray through its edges and vertices
+    double sign = det > 0 ? 1 : -1;
+    if ((e0 == 0 && !ownsEdge(p1t, p2t, sign)) || (e1 == 0 && !ownsEdge(p2t, p0t, sign)) ||
+        (e2 == 0 && !ownsEdge(p0t, p1t, sign)))
+        return false;
+    p0t.z *= sz;
+    p1t.z *= sz;
+    p2t.z *= sz;
+    double tScaled = e0 * p0t.z + e1 * p1t.z + e2 * p2t.z;
+    double invDet = 1 / det;
+    hit->t = tScaled * invDet;
+    hit->b0 = e0 * invDet;
+    hit->b1 = e1 * invDet;
+    hit->b2 = e2 * invDet;
+    hit->triangle = triangle;
+    hit->entering = dot(r.d, cross(p1 - p0, p2 - p0)) < 0;
+    // Rounding-error bound of t (pbrt-v3 section 3.9.6, triangle.cpp): from the errors of the
+    // sheared coordinates, the edge functions and the weighted sum of z
+    double maxZt = maxComponent(abs(Vec3(p0t.z, p1t.z, p2t.z)));
+    double maxXt = maxComponent(abs(Vec3(p0t.x, p1t.x, p2t.x)));
+    double maxYt = maxComponent(abs(Vec3(p0t.y, p1t.y, p2t.y)));
+    double deltaZ = gamma(3) * maxZt;
+    double deltaX = gamma(5) * (maxXt + maxZt), deltaY = gamma(5) * (maxYt + maxZt);
+    double deltaE = 2 * (gamma(2) * maxXt * maxYt + deltaY * maxXt + deltaX * maxYt);
+    double maxE = maxComponent(abs(Vec3(e0, e1, e2)));
+    hit->tError = 3 * (gamma(3) * maxE * maxZt + deltaE * maxZt + deltaZ * maxE) * std::abs(invDet);
+    return std::isfinite(hit->t);
+}
+
+bool TriangleMesh::closest(const Ray &r, double tMin, double tMax, Hit *hit) const {
+    bool found = false;
+    double far = tMax;
+    bvh_.traverse(r, tMin, &far, [&](uint32_t tri, double *tFar) {
+        Hit h;
+        if (!intersectTriangle(r, tri, &h) || !(h.t > tMin) || !(h.t < *tFar)) return false;
+        // A hit within its own rounding error of the origin may be the surface the ray
+        // starts on: t must be conservatively positive (pbrt-v3 Triangle::Intersect)
+        if (h.t <= h.tError) return false;
+        *hit = h;
+        *tFar = h.t;
+        found = true;
+        return false;
+    });
+    return found;
+}
+
+void TriangleMesh::allHits(const Ray &r, std::vector<Hit> &out) const {
+    double far = kInfinity;
+    bvh_.traverse(r, -kInfinity, &far, [&](uint32_t tri, double *) {
+        Hit h;
+        if (intersectTriangle(r, tri, &h)) out.push_back(h);
+        return false;
+    });
+}
+
+ObjectSurface TriangleMesh::surface(const Hit &hit, Vec3 *shadingNormal, double *u, double *v,
+                                    bool *hasUv) const {
+    const auto &idx = mesh_->triangles[hit.triangle];
+    const Vec3 &p0 = mesh_->positions[idx[0]], &p1 = mesh_->positions[idx[1]],
+               &p2 = mesh_->positions[idx[2]];
+    ObjectSurface s;
+    // Barycentric point and its error (pbrt-v3 eq. 3.14)
+    s.p = p0 * hit.b0 + p1 * hit.b1 + p2 * hit.b2;
+    s.pError = (abs(p0 * hit.b0) + abs(p1 * hit.b1) + abs(p2 * hit.b2)) * gamma(7);
+    s.normal = cross(p1 - p0, p2 - p0);
+    *shadingNormal = s.normal;
+    if (smooth_[hit.triangle]) {
+        const auto &n = mesh_->normals;
+        Vec3 ns = n[idx[0]] * hit.b0 + n[idx[1]] * hit.b1 + n[idx[2]] * hit.b2;
+        if (lengthSquared(ns) > 0) *shadingNormal = ns;
+    }
+    *hasUv = !mesh_->uvs.empty();
+    if (*hasUv) {
+        const auto &t = mesh_->uvs;
+        *u = t[idx[0]][0] * hit.b0 + t[idx[1]][0] * hit.b1 + t[idx[2]][0] * hit.b2;
+        *v = t[idx[0]][1] * hit.b0 + t[idx[1]][1] * hit.b1 + t[idx[2]][1] * hit.b2;
+    }
+    return s;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+MeshInstance::MeshInstance(std::shared_ptr<const TriangleMesh> mesh,
+                           const Transform &worldFromObject, int material)
+    : LeafShape(material),
+      mesh_(std::move(mesh)),
+      worldFromObject_(worldFromObject),
+      identity_(worldFromObject.isIdentity()) {
+    bounds_ = worldFromObject_.bounds(mesh_->bounds());
+    conditioning_ = transformConditioning(worldFromObject_);
+}
+
+void MeshInstance::lineSpans(const Ray &worldRay, SpanList &out) const {
+    if (!mesh_->closed()) return;
+    thread_local std::vector<TriangleMesh::Hit> hits;
+    hits.clear();
+    mesh_->allHits(toObject(worldRay), hits);
+    std::sort(hits.begin(), hits.end(),
+              [](const TriangleMesh::Hit &a, const TriangleMesh::Hit &b) { return a.t < b.t; });
+    // Winding number (or parity), applying all hits at one t together: a ray through an edge
+    // or vertex meets several triangles at once, and their net count is what matters
+    bool winding = mesh_->oriented();
+    int state = 0;
+    Span open;
+    for (size_t i = 0; i < hits.size();) {
+        size_t j = i;
+        int next = state;
+        while (j < hits.size() && hits[j].t == hits[i].t) {
+            next = winding ? next + (hits[j].entering ? 1 : -1) : next ^ 1;
+            ++j;
+        }
+        Crossing c{hits[i].t, this, static_cast<int>(hits[i].triangle), false};
+        if (state == 0 && next != 0) open.in = c;
+        if (state != 0 && next == 0) {
+            open.out = c;
+            if (open.in.t < open.out.t) out.push_back(open);
+        }
+        state = next;
+        i = j;
+    }
+}
+
+bool MeshInstance::firstCrossing(const Ray &ray, double tMin, double tMax, Crossing *c,
+                                 SpanScratch &) const {
+    TriangleMesh::Hit hit;
+    if (!mesh_->closest(toObject(ray), tMin, tMax, &hit)) return false;
+    *c = {hit.t, this, static_cast<int>(hit.triangle), false};
+    return true;
+}
+
+bool MeshInstance::inside(const Vec3 &p) const {
+    if (!mesh_->closed()) return false;
+    Vec3 o = identity_ ? p : worldFromObject_.inversePoint(p);
+    std::vector<TriangleMesh::Hit> hits;
+    mesh_->allHits(Ray(o, kInsideDirection), hits);
+    int count = 0;
+    for (const auto &h : hits)
+        if (h.t > 0) count += mesh_->oriented() ? (h.entering ? -1 : 1) : 1;
+    return mesh_->oriented() ? count != 0 : (count % 2) != 0;
+}
+
+SurfaceInteraction MeshInstance::surfaceAt(const Ray &worldRay, const Crossing &c) const {
+    Ray r = toObject(worldRay);
+    TriangleMesh::Hit hit;
+    if (!mesh_->intersectTriangle(r, static_cast<uint32_t>(c.face), &hit)) {
+        // The crossing came from this very test; only a degenerate triangle gets here
+        hit = {c.t, static_cast<uint32_t>(c.face), 1.0 / 3, 1.0 / 3, 1.0 / 3, false};
+    }
+    Vec3 ns;
+    SurfaceInteraction si;
+    ObjectSurface os = mesh_->surface(hit, &ns, &si.u, &si.v, &si.hasUv);
+    si.t = c.t;
+    si.leaf = this;
+    if (identity_) {
+        si.p = os.p;
+        si.pError = os.pError;
+        si.n = normalize(os.normal);
+        si.ns = normalize(ns);
+    } else {
+        Vec3 err;
+        si.p = worldFromObject_.point(os.p, os.pError, &err);
+        si.pError = err * conditioning_;
+        si.n = normalize(worldFromObject_.normal(os.normal));
+        si.ns = normalize(worldFromObject_.normal(ns));
+    }
+    return si;
+}
+
+}  // namespace rt

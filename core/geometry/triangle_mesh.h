@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: MIT
+// Triangle meshes: shared geometry with its own BVH and a watertight ray-triangle test, and the
+// placed instance the tracer and CSG see (closest hit; for closed meshes, whole-line spans by
+// winding number and an inside test).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "core/bvh/bvh.h"
+#include "core/geometry/shape.h"
+#include "core/ir/mesh.h"
+
+namespace rt {
+
+/// Immutable mesh geometry in object space, shared by every instance that places it.
+class TriangleMesh {
+  public:
+    struct Hit {
+        double t = 0;
+        uint32_t triangle = 0;
+        double b0 = 0, b1 = 0, b2 = 0;  ///< barycentric weights of the three vertices
+        bool entering = false;          ///< the ray crosses against the outward normal
+        double tError = 0;              ///< bound on the rounding error of t
+    };
+
+    explicit TriangleMesh(ir::MeshPtr mesh);
+
+    const ir::Mesh &mesh() const { return *mesh_; }
+    const Bounds3 &bounds() const { return bounds_; }
+    bool closed() const { return topology_.closed(); }
+    bool oriented() const { return topology_.oriented(); }
+    const ir::MeshTopology &topology() const { return topology_; }
+    size_t triangleCount() const { return mesh_->triangles.size(); }
+    /// Bytes held by the BVH and the derived data (not counting the shared ir::Mesh).
+    size_t extraBytes() const;
+
+    /// Watertight ray-triangle test (Woop, Benthin and Wald 2013; pbrt-v3 section 3.6.2) for
+    /// any t along the line, with a fill convention on edges and vertices: a ray through a
+    /// shared edge or vertex hits exactly one triangle of each consistently oriented sheet, so
+    /// the winding number of a closed mesh is counted right.
+    bool intersectTriangle(const Ray &r, uint32_t triangle, Hit *hit) const;
+    /// Closest hit with tMin < t < tMax, where t also exceeds the rounding-error bound of its own
+    /// computation, so a ray spawned from the surface does not find it again.
+    bool closest(const Ray &r, double tMin, double tMax, Hit *hit) const;
+    /// Every crossing of the whole line, unsorted.
+    void allHits(const Ray &r, std::vector<Hit> &out) const;
+    /// Surface data at a hit, in object space.
+    ObjectSurface surface(const Hit &hit, Vec3 *shadingNormal, double *u, double *v,
+                          bool *hasUv) const;
+
+  private:
+    ir::MeshPtr mesh_;
+    Bvh bvh_;
+    Bounds3 bounds_;
+    ir::MeshTopology topology_;
+    /// Per triangle: true when its vertex normals differ (POV-Ray shades only such triangles
+    /// smoothly; the others use the geometric normal)
+    std::vector<bool> smooth_;
+};
+
+/// A mesh placed in the world with a material.
+class MeshInstance final : public LeafShape {
+  public:
+    MeshInstance(std::shared_ptr<const TriangleMesh> mesh, const Transform &worldFromObject,
+                 int material);
+
+    Bounds3 worldBounds() const override { return bounds_; }
+    void lineSpans(const Ray &worldRay, SpanList &out) const override;
+    bool firstCrossing(const Ray &ray, double tMin, double tMax, Crossing *c,
+                       SpanScratch &scratch) const override;
+    /// Winding number (parity for closed but inconsistently oriented meshes) of a ray from p;
+    /// always false for an open mesh, which bounds nothing.
+    bool inside(const Vec3 &p) const override;
+    SurfaceInteraction surfaceAt(const Ray &worldRay, const Crossing &c) const override;
+
+    const TriangleMesh &geometry() const { return *mesh_; }
+
+  private:
+    Ray toObject(const Ray &r) const { return identity_ ? r : worldFromObject_.inverseRay(r); }
+
+    std::shared_ptr<const TriangleMesh> mesh_;
+    Transform worldFromObject_;
+    bool identity_;
+    double conditioning_;
+    Bounds3 bounds_;
+};
+
+}  // namespace rt
