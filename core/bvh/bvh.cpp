@@ -40,36 +40,50 @@ int Bvh::build(std::vector<BuildItem> &items, size_t begin, size_t end, int dept
     constexpr int kMaxDepth = 100;
     if (n <= 1 || depth >= kMaxDepth) return makeLeaf();
 
+    // Bin the centroids on all three axes in one pass over the items; small nodes, where the
+    // fixed cost of the bins dominates, only on the axis of largest extent
+    Vec3 extent = centroidBounds.diagonal();
+    Vec3 binScale;
+    constexpr size_t kAllAxesFrom = 64;
+    int longest = maxDimension(extent);
+    for (int axis = 0; axis < 3; ++axis)
+        binScale[axis] = extent[axis] > 0 && (n >= kAllAxesFrom || axis == longest)
+                             ? kBins / extent[axis]
+                             : 0;
+    auto binOf = [&](const Vec3 &c, int axis) {
+        int b = static_cast<int>((c[axis] - centroidBounds.min[axis]) * binScale[axis]);
+        return std::clamp(b, 0, kBins - 1);
+    };
+    std::array<std::array<int, kBins>, 3> counts{};
+    std::array<std::array<Bounds3, kBins>, 3> binBounds;
+    for (size_t i = begin; i < end; ++i)
+        for (int axis = 0; axis < 3; ++axis) {
+            if (binScale[axis] == 0) continue;
+            int b = binOf(items[i].centroid, axis);
+            ++counts[axis][b];
+            binBounds[axis][b] = unionBounds(binBounds[axis][b], items[i].bounds);
+        }
     // Evaluate the surface area heuristic at kBins-1 planes on each axis
     int bestAxis = -1, bestSplit = -1;
     double bestCost = kInfinity;
-    Vec3 extent = centroidBounds.diagonal();
     for (int axis = 0; axis < 3; ++axis) {
-        if (!(extent[axis] > 0)) continue;
-        std::array<int, kBins> counts{};
-        std::array<Bounds3, kBins> binBounds;
-        for (size_t i = begin; i < end; ++i) {
-            int b = static_cast<int>(kBins * centroidBounds.offset(items[i].centroid)[axis]);
-            b = std::clamp(b, 0, kBins - 1);
-            ++counts[b];
-            binBounds[b] = unionBounds(binBounds[b], items[i].bounds);
-        }
+        if (binScale[axis] == 0) continue;
         // Sweep from the right to get the area and count of every right side
         std::array<double, kBins> rightArea{};
         std::array<int, kBins> rightCount{};
         Bounds3 acc;
         int cnt = 0;
         for (int b = kBins - 1; b > 0; --b) {
-            acc = unionBounds(acc, binBounds[b]);
-            cnt += counts[b];
+            acc = unionBounds(acc, binBounds[axis][b]);
+            cnt += counts[axis][b];
             rightArea[b] = acc.surfaceArea();
             rightCount[b] = cnt;
         }
         acc = Bounds3();
         cnt = 0;
         for (int b = 0; b < kBins - 1; ++b) {
-            acc = unionBounds(acc, binBounds[b]);
-            cnt += counts[b];
+            acc = unionBounds(acc, binBounds[axis][b]);
+            cnt += counts[axis][b];
             if (cnt == 0 || rightCount[b + 1] == 0) continue;
             double cost = cnt * acc.surfaceArea() + rightCount[b + 1] * rightArea[b + 1];
             if (cost < bestCost) {
@@ -88,11 +102,7 @@ int Bvh::build(std::vector<BuildItem> &items, size_t begin, size_t end, int dept
     size_t mid;
     if (bestAxis >= 0) {
         auto pivot = std::partition(items.begin() + begin, items.begin() + end,
-                                    [&](const BuildItem &it) {
-                                        int b = static_cast<int>(
-                                            kBins * centroidBounds.offset(it.centroid)[bestAxis]);
-                                        return std::clamp(b, 0, kBins - 1) <= bestSplit;
-                                    });
+                                    [&](const BuildItem &it) { return binOf(it.centroid, bestAxis) <= bestSplit; });
         mid = static_cast<size_t>(pivot - items.begin());
     } else {
         // All centroids coincide: split by count so leaves stay small

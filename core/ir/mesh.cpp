@@ -4,7 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
+#include <tuple>
 
 #include "core/ir/diagnostics.h"
 
@@ -16,15 +16,39 @@ Bounds3 Mesh::bounds() const {
     return b;
 }
 
+namespace {
+
+/// For each vertex, the index of the first vertex at exactly the same position: meshes that
+/// split vertices for normals or texture coordinates (glTF, STL) still share their edges.
+std::vector<uint32_t> weldedIndices(const Mesh &mesh) {
+    std::vector<uint32_t> order(mesh.positions.size());
+    for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    auto key = [&](uint32_t i) {
+        const Vec3 &p = mesh.positions[i];
+        return std::make_tuple(p.x + 0.0, p.y + 0.0, p.z + 0.0, i);  // + 0.0 folds -0 into +0
+    };
+    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return key(a) < key(b); });
+    std::vector<uint32_t> canonical(order.size());
+    for (size_t k = 0; k < order.size(); ++k) {
+        bool same = k > 0 && mesh.positions[order[k]] == mesh.positions[order[k - 1]];
+        canonical[order[k]] = same ? canonical[order[k - 1]] : order[k];
+    }
+    return canonical;
+}
+
+}  // namespace
+
 MeshTopology analyzeMesh(const Mesh &mesh) {
     MeshTopology t;
-    // For each undirected edge: how often it is used, and the balance of its directions
+    std::vector<uint32_t> weld = weldedIndices(mesh);
+    // Every directed edge as (undirected key, direction); sorting groups the uses of an edge
     struct EdgeUse {
-        int count = 0;
-        int forward = 0;  // uses as (lo -> hi)
+        uint64_t key;
+        int direction;  // +1 as (lo -> hi), -1 as (hi -> lo)
+        bool operator<(const EdgeUse &o) const { return key < o.key; }
     };
-    std::unordered_map<uint64_t, EdgeUse> edges;
-    edges.reserve(mesh.triangles.size() * 3 / 2 + 1);
+    std::vector<EdgeUse> edges;
+    edges.reserve(mesh.triangles.size() * 3);
     for (const auto &tri : mesh.triangles) {
         if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) {
             ++t.degenerateTriangles;
@@ -33,20 +57,24 @@ MeshTopology analyzeMesh(const Mesh &mesh) {
         const Vec3 &a = mesh.positions[tri[0]], &b = mesh.positions[tri[1]], &c = mesh.positions[tri[2]];
         if (lengthSquared(cross(b - a, c - a)) == 0) ++t.degenerateTriangles;
         for (int e = 0; e < 3; ++e) {
-            uint32_t u = tri[e], v = tri[(e + 1) % 3];
-            uint64_t key = (uint64_t(std::min(u, v)) << 32) | std::max(u, v);
-            EdgeUse &use = edges[key];
-            ++use.count;
-            use.forward += u < v ? 1 : -1;
+            uint32_t u = weld[tri[e]], v = weld[tri[(e + 1) % 3]];
+            if (u == v) continue;  // a corner repeated by position: no edge
+            edges.push_back({(uint64_t(std::min(u, v)) << 32) | std::max(u, v), u < v ? 1 : -1});
         }
     }
-    for (const auto &[key, use] : edges) {
-        if (use.count == 1)
+    std::sort(edges.begin(), edges.end());
+    for (size_t i = 0; i < edges.size();) {
+        size_t j = i;
+        int balance = 0;
+        while (j < edges.size() && edges[j].key == edges[i].key) balance += edges[j++].direction;
+        size_t count = j - i;
+        if (count == 1)
             ++t.boundaryEdges;
-        else if (use.count > 2)
+        else if (count > 2)
             ++t.nonManifoldEdges;
-        else if (use.forward != 0)
+        else if (balance != 0)
             ++t.misorientedEdges;
+        i = j;
     }
     return t;
 }

@@ -33,7 +33,8 @@ struct Mesh {
 
 using MeshPtr = std::shared_ptr<const Mesh>;
 
-/// How the edges of a mesh are shared, which decides whether it bounds a solid.
+/// How the edges of a mesh are shared, which decides whether it bounds a solid. Vertices at
+/// exactly the same position count as one, so split vertices do not open a mesh.
 struct MeshTopology {
     size_t boundaryEdges = 0;       ///< edges used by one triangle (holes)
     size_t nonManifoldEdges = 0;    ///< edges used by more than two triangles

@@ -205,6 +205,24 @@ TEST(TriangleMesh, OpenMeshesBoundNothing) {
     EXPECT_TRUE(inst.firstCrossing(Ray(Vec3(0, 0, 5), Vec3(0, 0, -1)), 0, kInfinity, &c, scratch));
 }
 
+TEST(TriangleMesh, SplitVerticesStillCloseTheMesh) {
+    // Every triangle with its own three vertices, as glTF files with flat normals and STL
+    // files store them: closedness is judged by position
+    auto shared = cubeMesh(Vec3(0), Vec3(1));
+    auto split = std::make_shared<ir::Mesh>();
+    for (const auto &t : shared->triangles) {
+        uint32_t b = static_cast<uint32_t>(split->positions.size());
+        for (uint32_t v : t) split->positions.push_back(shared->positions[v]);
+        split->triangles.push_back({b, b + 1, b + 2});
+    }
+    ir::MeshTopology t = ir::analyzeMesh(*split);
+    EXPECT_TRUE(t.closed());
+    EXPECT_TRUE(t.oriented());
+    // A gap is still a gap
+    split->positions[0].x += 1e-9;
+    EXPECT_FALSE(ir::analyzeMesh(*split).closed());
+}
+
 TEST(TriangleMesh, ValidationRejectsBadIndicesAndNaN) {
     auto m = cubeMesh(Vec3(0), Vec3(1));
     m->triangles[3][1] = 99;
