@@ -416,9 +416,11 @@ const std::unordered_map<Symbol, Evaluator::ModuleHandler, SymbolHash>
         add("echo", &Evaluator::moduleEcho);
         add("assert", &Evaluator::moduleAssert);
         add("children", &Evaluator::moduleChildren);
-        for (const char *name : {"hull", "minkowski", "resize", "linear_extrude", "rotate_extrude",
-                                 "polyhedron", "import", "surface", "text", "projection", "offset",
-                                 "square", "circle", "polygon", "child", "assign"})
+        add("polyhedron", &Evaluator::modulePolyhedron);
+        add("import", &Evaluator::moduleImport);
+        for (const char *name :
+             {"hull", "minkowski", "resize", "linear_extrude", "rotate_extrude", "surface", "text",
+              "projection", "offset", "square", "circle", "polygon", "child", "assign"})
             add(name, &Evaluator::moduleUnsupported);
         return t;
     }();

@@ -187,6 +187,17 @@ class Evaluator {
     ir::Fragments currentFragments(const SourceLoc &loc);
     void warnLeafChildren(const ModuleInstantiation &inst);
 
+    // Mesh modules (builtins_mesh.cpp)
+    ir::NodePtr modulePolyhedron(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr moduleImport(const ModuleInstantiation &inst, const FramePtr &f);
+    /// The file an import() names: relative to the folder of the file holding the call, else
+    /// (deprecated, with OpenSCAD's warning) relative to the main file's folder.
+    std::string resolveImportPath(const std::string &name, const SourceLoc &loc);
+    ir::NodePtr importMeshFile(const std::string &path, const ModuleInstantiation &inst,
+                               const FramePtr &f);
+    ir::NodePtr importGltfFile(const std::string &path, const ModuleInstantiation &inst);
+    int addMesh(ir::Mesh mesh);
+
     // Metadata modules (builtins_metadata.cpp)
     ir::NodePtr instantiateMetadata(Symbol name, const ModuleInstantiation &inst,
                                     const FramePtr &f);
@@ -218,6 +229,15 @@ class Evaluator {
     int backgroundDepth_ = 0;
     bool backgroundSet_ = false;
     bool renderSettingsSet_ = false;
+
+    // Files already imported, by canonical path: each is read once and its meshes shared
+    /// A glTF file's node tree as an import returned it, cloned for later imports.
+    struct GltfImport {
+        ir::NodePtr tree;
+        bool fileMaterials = false;  ///< made without a material override
+    };
+    std::unordered_map<std::string, int> meshFiles_;  ///< STL/OFF path -> index in scene meshes
+    std::unordered_map<std::string, GltfImport> gltfFiles_;
 
     // `!` root modifier
     ir::NodePtr rootNode_;

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "importers/mesh/mesh_reader.h"
 #include "importers/scad/test_support.h"
 
 namespace rt::scad::test {
@@ -170,11 +171,22 @@ void expectSameShape(const ir::PrimShape &a, const ir::PrimShape &b, const std::
             EXPECT_TRUE(near(x->min[i], y.min[i])) << where;
             EXPECT_TRUE(near(x->max[i], y.max[i])) << where;
         }
-    } else {
-        const auto &c = std::get<ir::CylinderPrim>(a), &d = std::get<ir::CylinderPrim>(b);
-        EXPECT_TRUE(near(c.z0, d.z0) && near(c.z1, d.z1) && near(c.r1, d.r1) && near(c.r2, d.r2))
+    } else if (auto *c = std::get_if<ir::CylinderPrim>(&a)) {
+        const auto &d = std::get<ir::CylinderPrim>(b);
+        EXPECT_TRUE(near(c->z0, d.z0) && near(c->z1, d.z1) && near(c->r1, d.r1) &&
+                    near(c->r2, d.r2))
             << where;
     }
+}
+
+/// Meshes (polyhedron(), import()) agree in size, bounds and volume: the .csg export rounds
+/// polyhedron points to 6 digits.
+void expectSameMesh(const ir::Mesh &a, const ir::Mesh &b, const std::string &where) {
+    EXPECT_EQ(a.triangles.size(), b.triangles.size()) << where;
+    Bounds3 ba = a.bounds(), bb = b.bounds();
+    for (int i = 0; i < 3; ++i)
+        EXPECT_TRUE(near(ba.min[i], bb.min[i]) && near(ba.max[i], bb.max[i])) << where;
+    EXPECT_TRUE(near(meshio::signedVolume(a), meshio::signedVolume(b))) << where;
 }
 
 void expectSameTree(const Canon &a, const ir::Scene &sa, const Canon &b, const ir::Scene &sb,
@@ -193,6 +205,9 @@ void expectSameTree(const Canon &a, const ir::Scene &sa, const Canon &b, const i
                     << where << " matrix[" << i << "][" << j << "] " << a.world.m[i][j] << " vs "
                     << b.world.m[i][j];
         expectSameShape(a.node->shape, b.node->shape, where);
+        if (auto *ma = std::get_if<ir::MeshPrim>(&a.node->shape))
+            expectSameMesh(*sa.meshes.at(ma->mesh),
+                           *sb.meshes.at(std::get<ir::MeshPrim>(b.node->shape).mesh), where);
         // The .csg records $fn/$fa/$fs for round primitives only
         if (!std::holds_alternative<ir::BoxPrim>(a.node->shape)) {
             EXPECT_TRUE(near(a.node->fragments.fn, b.node->fragments.fn)) << where;
@@ -215,6 +230,11 @@ void crossCheckFile(const fs::path &scad, const std::string &tmp) {
     std::string csg = tmp + "/" + scad.stem().string() + ".csg";
     RunResult r = runOpenScad(scad.string(), csg);
     ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+    // The .csg keeps import()'s relative file names: give it the files next to the .scad
+    for (const auto &e : fs::directory_iterator(scad.parent_path()))
+        if (e.is_regular_file() && e.path().extension() != ".scad" &&
+            !fs::exists(fs::path(tmp) / e.path().filename()))
+            fs::copy_file(e.path(), fs::path(tmp) / e.path().filename());
     DiagnosticSink d1, d2;
     ir::Scene original = importScad(scad.string(), d1);
     ir::Scene exported = importScad(csg, d2);
