@@ -1,0 +1,244 @@
+// SPDX-License-Identifier: MIT
+// glTF entry points: reading the file with tinygltf, extension checks and scene selection.
+#include "importers/gltf/gltf_importer.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <string_view>
+
+#include "importers/gltf/gltf_internal.h"
+
+namespace rt::gltf {
+
+namespace {
+
+/// Extensions whose meaning the importer implements; any other in extensionsRequired is refused.
+constexpr std::array<std::string_view, 6> kSupportedExtensions = {"KHR_materials_emissive_strength",
+                                                                  "KHR_materials_transmission",
+                                                                  "KHR_materials_ior",
+                                                                  "KHR_materials_volume",
+                                                                  "KHR_materials_unlit",
+                                                                  "KHR_lights_punctual"};
+
+bool isSupported(const std::string &ext) {
+    return std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), ext) !=
+           kSupportedExtensions.end();
+}
+
+/// What the image callback sees while tinygltf parses: images are kept encoded and decoded
+/// only when a material needs them, so an undecodable or unused image costs nothing.
+struct ImageCollector {
+    const tinygltf::Model *model = nullptr;  ///< the model being parsed (its buffers come first)
+    bool keep = true;
+    std::map<int, std::vector<unsigned char>> encoded;
+    std::vector<std::string> problems;
+};
+
+/// tinygltf LoadImageDataFunction: keeps the bytes; never fails, so a bad image cannot stop the
+/// geometry from loading (gltf-notes section 9).
+bool collectImage(tinygltf::Image *image, const int imageIndex, std::string *, std::string *, int,
+                  int, const unsigned char *bytes, int size, void *user) {
+    auto *collector = static_cast<ImageCollector *>(user);
+    if (!collector->keep || !bytes || size <= 0) return true;
+    if (image->bufferView >= 0) {
+        // tinygltf hands over a bufferView's bytes without checking that the view lies inside
+        // its buffer; check before reading any of them
+        const tinygltf::Model &model = *collector->model;
+        bool inside = false;
+        if (static_cast<size_t>(image->bufferView) < model.bufferViews.size()) {
+            const tinygltf::BufferView &view =
+                model.bufferViews[static_cast<size_t>(image->bufferView)];
+            if (view.buffer >= 0 && static_cast<size_t>(view.buffer) < model.buffers.size()) {
+                size_t bufferSize = model.buffers[static_cast<size_t>(view.buffer)].data.size();
+                inside = view.byteOffset <= bufferSize &&
+                         view.byteLength <= bufferSize - view.byteOffset &&
+                         static_cast<size_t>(size) <= view.byteLength;
+            }
+        }
+        if (!inside) {
+            collector->problems.push_back(
+                detail::jsonPath("images", static_cast<size_t>(imageIndex)) +
+                ": its bufferView lies outside its buffer; image ignored");
+            return true;
+        }
+    }
+    collector->encoded[imageIndex].assign(bytes, bytes + size);
+    return true;
+}
+
+/// tinygltf's messages, one per line, without trailing newlines.
+std::vector<std::string> splitLines(const std::string &text) {
+    std::vector<std::string> lines;
+    size_t start = 0;
+    while (start < text.size()) {
+        size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        if (end > start) lines.push_back(text.substr(start, end - start));
+        start = end + 1;
+    }
+    return lines;
+}
+
+struct LoadedFile {
+    tinygltf::Model model;
+    ImageCollector images;
+};
+
+/// Parses the file, telling .glb from .gltf by its magic bytes, not its extension.
+std::unique_ptr<LoadedFile> loadFile(const std::string &path, const SourceLoc &loc,
+                                     DiagnosticSink &diag, bool keepImages) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw ParseError(loc, "'" + path + "' is a directory");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw ParseError(loc, "cannot open glTF file '" + path + "'");
+    std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
+                                     std::istreambuf_iterator<char>());
+    if (in.bad()) throw ParseError(loc, "cannot read glTF file '" + path + "'");
+    if (bytes.size() >= std::numeric_limits<unsigned int>::max())
+        throw ParseError(loc, "glTF file is larger than 4 GiB");
+
+    bool binary = bytes.size() >= 4 && std::equal(bytes.begin(), bytes.begin() + 4, "glTF");
+    std::string baseDir = std::filesystem::path(path).parent_path().string();
+
+    auto file = std::make_unique<LoadedFile>();
+    file->images.model = &file->model;
+    file->images.keep = keepImages;
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(collectImage, &file->images);
+    std::string err, warn;
+    bool ok = false;
+    try {
+        auto size = static_cast<unsigned int>(bytes.size());
+        if (binary)
+            ok =
+                loader.LoadBinaryFromMemory(&file->model, &err, &warn, bytes.data(), size, baseDir);
+        else
+            ok = loader.LoadASCIIFromString(&file->model, &err, &warn,
+                                            reinterpret_cast<const char *>(bytes.data()), size,
+                                            baseDir);
+    } catch (const std::exception &e) {
+        // nlohmann::json or an allocation inside tinygltf
+        err += e.what();
+        ok = false;
+    }
+    for (const std::string &line : splitLines(warn)) diag.warning(loc, "tinygltf: " + line);
+    for (const std::string &problem : file->images.problems) diag.warning(loc, problem);
+    if (!ok) {
+        std::string message;
+        for (const std::string &line : splitLines(err))
+            message += (message.empty() ? "" : "; ") + line;
+        if (message.empty()) message = "unknown error";
+        throw ParseError(loc, std::string("cannot load glTF") + (binary ? " binary (.glb)" : "") +
+                                  " file: " + message);
+    }
+    return file;
+}
+
+/// Refuses required extensions the importer does not implement (tinygltf does not check).
+void checkExtensions(const detail::ImportContext &ctx) {
+    const tinygltf::Model &model = ctx.model;
+    for (const std::string &ext : model.extensionsRequired)
+        if (!isSupported(ext))
+            ctx.fail("requires extension " + ext + ", which scadray does not support");
+    for (const std::string &ext : model.extensionsUsed) {
+        if (isSupported(ext)) continue;
+        if (ext == "KHR_texture_transform")
+            ctx.warning(
+                "uses KHR_texture_transform; texture offsets, rotations and scales are "
+                "ignored");
+        else
+            ctx.note("uses extension " + ext + ", which scadray ignores");
+    }
+}
+
+/// The scene to show: the option, else the file's `scene`, else 0.
+int chooseScene(const tinygltf::Model &model, const ImportOptions &opts, const SourceLoc &loc) {
+    size_t n = model.scenes.size();
+    if (opts.sceneIndex < -1)
+        throw SceneError(loc, "scene index " + std::to_string(opts.sceneIndex) + " is invalid");
+    if (opts.sceneIndex >= 0) {
+        if (static_cast<size_t>(opts.sceneIndex) >= n)
+            throw SceneError(loc, "scene " + std::to_string(opts.sceneIndex) +
+                                      " requested, but the file has " + std::to_string(n) +
+                                      " scene(s)");
+        return opts.sceneIndex;
+    }
+    if (n == 0)
+        throw SceneError(loc, "the file has no scenes (a library of parts); nothing to show");
+    int s = model.defaultScene >= 0 ? model.defaultScene : 0;
+    if (static_cast<size_t>(s) >= n)
+        throw ParseError(loc, "scene: " + std::to_string(s) + " does not exist (the file has " +
+                                  std::to_string(n) + " scene(s))");
+    return s;
+}
+
+void checkOptions(const ImportOptions &opts, const SourceLoc &loc) {
+    if (!(opts.unitScale > 0) || !std::isfinite(opts.unitScale))
+        throw SceneError(loc, "glTF unit scale must be a positive number, not " +
+                                  std::to_string(opts.unitScale));
+}
+
+/// The file name without directory and extension, with anything but [A-Za-z0-9_-] replaced.
+std::string safeBaseName(const std::string &path) {
+    std::string stem = std::filesystem::path(path).stem().string();
+    for (char &c : stem)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-') c = '_';
+    return stem.empty() ? "gltf" : stem;
+}
+
+SourceLoc fileLoc(const std::string &path) {
+    return SourceLoc(std::make_shared<const std::string>(path), 0, 0);
+}
+
+}  // namespace
+
+ir::Scene importGltf(const std::string &path, DiagnosticSink &diag, const ImportOptions &opts) {
+    SourceLoc loc = fileLoc(path);
+    checkOptions(opts, loc);
+    std::unique_ptr<LoadedFile> file = loadFile(path, loc, diag, true);
+    detail::ImportContext ctx{file->model,          loc, diag, opts, safeBaseName(path),
+                              &file->images.encoded};
+    checkExtensions(ctx);
+    int sceneIndex = chooseScene(file->model, opts, loc);
+
+    ir::Scene scene;
+    scene.root->loc = loc;
+    detail::BuildOptions build;
+    build.nodeLoc = loc;
+    scene.root->children.push_back(detail::buildScene(ctx, scene, sceneIndex, build));
+    return scene;
+}
+
+ir::NodePtr importGltfInto(ir::Scene &scene, const std::string &path, const SourceLoc &loc,
+                           DiagnosticSink &diag, std::optional<int> materialOverride,
+                           const ImportOptions &opts) {
+    SourceLoc floc = fileLoc(path);
+    checkOptions(opts, loc);
+    if (materialOverride &&
+        (*materialOverride < 0 || static_cast<size_t>(*materialOverride) >= scene.materials.size()))
+        throw SceneError(loc, "import of '" + path + "': material " +
+                                  std::to_string(*materialOverride) + " does not exist");
+    std::unique_ptr<LoadedFile> file = loadFile(path, floc, diag, !materialOverride);
+    detail::ImportContext ctx{file->model,          floc, diag, opts, safeBaseName(path),
+                              &file->images.encoded};
+    checkExtensions(ctx);
+    int sceneIndex = chooseScene(file->model, opts, floc);
+
+    detail::BuildOptions build;
+    build.nodeLoc = loc;
+    build.materialOverride = materialOverride;
+    build.camerasAndLights = false;
+    auto group = ir::Node::makeGroup(ir::NodeKind::Group, loc);
+    group->label = "import(\"" + path + "\")";
+    group->children.push_back(detail::buildScene(ctx, scene, sceneIndex, build));
+    return group;
+}
+
+}  // namespace rt::gltf

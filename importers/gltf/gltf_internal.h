@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: MIT
+// Internals shared by the glTF importer's source files, the only place that sees tinygltf.
+#pragma once
+
+#include <tiny_gltf.h>
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/ir/diagnostics.h"
+#include "core/ir/scene_ir.h"
+#include "importers/gltf/gltf_importer.h"
+
+namespace rt::gltf::detail {
+
+/// The parsed file and where its diagnostics go. Every problem is located at the file (glTF has
+/// no line numbers); messages name the JSON path of the culprit instead.
+struct ImportContext {
+    const tinygltf::Model &model;
+    SourceLoc loc;
+    DiagnosticSink &diag;
+    ImportOptions opts;
+    /// File name without directory and extension, made safe for file names ("Duck").
+    std::string baseName;
+    /// Encoded image bytes kept by the loader callback (decoded on demand), by image index.
+    const std::map<int, std::vector<unsigned char>> *encodedImages = nullptr;
+
+    [[noreturn]] void fail(const std::string &message) const { throw ParseError(loc, message); }
+    void warning(const std::string &message) const { diag.warning(loc, message); }
+    void note(const std::string &message) const { diag.note(loc, message); }
+};
+
+/// "meshes[2].primitives[0]" and the like.
+std::string jsonPath(const char *array, size_t index);
+
+// Accessors (gltf_accessors.cpp)
+
+/// Attribute data converted to float: `count` elements of `components` values each.
+struct FloatArray {
+    size_t count = 0;
+    int components = 0;
+    std::vector<float> values;
+};
+
+/// Reads accessor `index`, which must be of `type` (TINYGLTF_TYPE_VEC3, ...), as floats:
+/// float components as they are, normalized integers mapped to [0,1] or [-1,1], plain integers
+/// converted. byteStride, the view and accessor offsets and sparse substitution are applied;
+/// every byte read is checked to lie in its buffer. `what` names the reference in messages
+/// ("meshes[0].primitives[1].attributes.POSITION").
+FloatArray readFloats(const ImportContext &ctx, int index, int type, const std::string &what);
+
+/// Reads an index accessor (SCALAR of u8, u16 or u32), bounds-checked like readFloats.
+std::vector<uint32_t> readIndices(const ImportContext &ctx, int index, const std::string &what);
+
+// Materials and textures (gltf_materials.cpp)
+
+/// Maps glTF materials to IR materials (added to the scene, deduplicated) and decodes the
+/// textures they need, each once.
+class MaterialMapper {
+  public:
+    MaterialMapper(const ImportContext &ctx, ir::Scene &scene);
+    ~MaterialMapper();
+
+    /// IR material for glTF material `index` (-1: glTF's default material), or nothing when
+    /// the material hides its primitives (alphaMode MASK with alpha below the cutoff). Without
+    /// texture coordinates the base colour texture is left out.
+    std::optional<int> irMaterial(int index, bool hasUvs, const std::string &primitivePath);
+
+  private:
+    struct DecodedImage;
+    struct Mapped {
+        ir::Material material;
+        bool hidden = false;
+        bool done = false;
+    };
+
+    ir::Material map(int index, bool &hidden);
+    const DecodedImage *decodedImage(int textureIndex, const std::string &what);
+    int irTexture(int textureIndex, const std::string &what);
+
+    const ImportContext &ctx_;
+    ir::Scene &scene_;
+    std::vector<Mapped> mapped_;  ///< by glTF material index + 1 (slot 0: default material)
+    std::map<int, std::unique_ptr<DecodedImage>> images_;  ///< by image index; null = failed
+    std::map<int, int> textures_;  ///< glTF texture index -> IR texture index (-1 = failed)
+};
+
+// Scene graph, cameras and lights (gltf_scene.cpp)
+
+struct BuildOptions {
+    /// Location put on every IR node (the file, or the import() call).
+    SourceLoc nodeLoc;
+    /// When set, every primitive gets this material and the file's materials are not read.
+    std::optional<int> materialOverride;
+    /// Read the first camera and the punctual lights into the scene (else note and ignore them).
+    bool camerasAndLights = true;
+};
+
+/// Adds the meshes (and materials) of scene `sceneIndex` to `scene` and returns its node tree
+/// under one root transform: glTF Y-up to Z-up, times the unit scale.
+ir::NodePtr buildScene(const ImportContext &ctx, ir::Scene &scene, int sceneIndex,
+                       const BuildOptions &options);
+
+}  // namespace rt::gltf::detail
