@@ -8,12 +8,14 @@
 #include <stdexcept>
 
 #include "core/ir/scene_defaults.h"
+#include "importers/gltf/gltf_importer.h"
+#include "importers/mesh/mesh_reader.h"
 #include "importers/scad/scad_importer.h"
 
 namespace rt::cli {
 
 void SceneArgs::addTo(CLI::App &cmd) {
-    cmd.add_option("scene", input, "Scene file (.scad)")->required();
+    cmd.add_option("scene", input, "Scene file (.scad, .gltf, .glb, .stl, .off)")->required();
     cmd.add_option("-D,--define", defines, "Override a top-level variable: name=value");
     cmd.add_option("-L,--library", libraries, "Extra folder searched by include<> and use<>");
 }
@@ -46,9 +48,17 @@ ir::Scene loadScene(const std::string &path, DiagnosticSink &diag, const LoadOpt
         io.libraryPaths = opts.libraryPaths;
         io.defines = opts.defines;
         scene = scad::importScad(path, diag, io);
+    } else if (ext == ".gltf" || ext == ".glb") {
+        scene = gltf::importGltf(path, diag);
+    } else if (ext == ".stl" || ext == ".off") {
+        // A bare mesh file: one mesh in OpenSCAD's default colour
+        auto mesh = std::make_shared<ir::Mesh>(meshio::readMeshFile(path, diag));
+        scene.meshes.push_back(mesh);
+        scene.root->children.push_back(ir::Node::makePrimitive(
+            ir::MeshPrim{0}, scene.addMaterial(ir::Material()), mesh->loc));
     } else {
         throw std::runtime_error(path + ": error: unknown scene type '" + ext +
-                                 "' (scadray reads .scad)");
+                                 "' (scadray reads .scad, .gltf, .glb, .stl and .off)");
     }
     ir::completeScene(scene, diag);
     return scene;

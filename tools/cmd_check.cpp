@@ -60,14 +60,12 @@ int runCheck(const CheckArgs &a) {
 
     // POV-Ray: export, render k times larger without antialiasing, box-downsample
     pov::IniOptions ini;
-    ini.povFile = stem + ".pov";
     ini.outputFile = stem + "_povray.png";
     ini.width = a.width;
     ini.height = a.height;
     ini.supersample = a.supersample;
     ini.threads = a.threads;
-    pov::writeTextFile(file(".pov"), pov::writeSdl(scene, fs::path(a.scene.input).filename().string()));
-    pov::writeTextFile(file(".ini"), pov::writeIni(ini));
+    pov::exportPov(scene, file(".pov"), fs::path(a.scene.input).filename().string(), ini);
     pov::PovRunResult pr = pov::runPovRay(dir.string(), stem + ".ini", a.threads, a.timeout);
     ImageEstimate reference = downsample(readImage(file("_povray.png")), a.supersample);
 

@@ -30,16 +30,13 @@ int runExport(const ExportArgs &a) {
     DiagnosticSink diag;
     attachPrinter(diag, a.quiet);
     ir::Scene scene = loadScene(a.scene.input, diag, a.scene.loadOptions(a.quiet));
-    std::string sdl = pov::writeSdl(scene, fs::path(a.scene.input).filename().string());
     pov::IniOptions ini;
-    ini.povFile = pov.filename().string();
     ini.outputFile = pov.stem().string() + "_povray.png";
     ini.width = a.width;
     ini.height = a.height;
     ini.supersample = a.supersample;
     fs::path iniPath = fs::path(pov).replace_extension(".ini");
-    pov::writeTextFile(pov.string(), sdl);
-    pov::writeTextFile(iniPath.string(), pov::writeIni(ini));
+    pov::exportPov(scene, pov.string(), fs::path(a.scene.input).filename().string(), ini);
     if (!a.quiet)
         std::cerr << "scadray: wrote " << pov.string() << " and " << iniPath.string()
                   << " (render with: cd " << (pov.has_parent_path() ? pov.parent_path().string() : ".")
