@@ -38,8 +38,8 @@ void attachPrinter(DiagnosticSink &diag, bool quiet) {
 ir::Scene loadScene(const std::string &path, DiagnosticSink &diag, const LoadOptions &opts) {
     namespace fs = std::filesystem;
     std::error_code ec;
-    if (!fs::exists(path, ec)) throw std::runtime_error(path + ": error: no such file");
-    if (fs::is_directory(path, ec)) throw std::runtime_error(path + ": error: is a folder");
+    if (!fs::exists(path, ec)) throw std::runtime_error(path + ": no such file");
+    if (fs::is_directory(path, ec)) throw std::runtime_error(path + ": is a folder");
     std::string ext = fs::path(path).extension().string();
     for (auto &ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
     ir::Scene scene;
@@ -57,7 +57,7 @@ ir::Scene loadScene(const std::string &path, DiagnosticSink &diag, const LoadOpt
         scene.root->children.push_back(ir::Node::makePrimitive(
             ir::MeshPrim{0}, scene.addMaterial(ir::Material()), mesh->loc));
     } else {
-        throw std::runtime_error(path + ": error: unknown scene type '" + ext +
+        throw std::runtime_error(path + ": unknown scene type '" + ext +
                                  "' (scadray reads .scad, .gltf, .glb, .stl and .off)");
     }
     ir::completeScene(scene, diag);

@@ -69,12 +69,16 @@ int runRender(const RenderArgs &a) {
 
     if (!a.quiet) {
         const RayStats &s = r.stats;
+        std::string triangles =
+            rs->stats().triangles > 0
+                ? ", " + formatCount(static_cast<int64_t>(rs->stats().triangles)) + " triangles"
+                : std::string();
         std::fprintf(stderr,
-                     "scadray: %s: %dx%d, %d spp, %d objects (%zu primitives), %d threads, "
+                     "scadray: %s: %dx%d, %d spp, %d objects (%zu primitives%s), %d threads, "
                      "%.3f s\n",
                      output.c_str(), a.width, a.height, a.samples,
-                     static_cast<int>(rs->stats().objects), rs->stats().primitives, r.threads,
-                     r.seconds);
+                     static_cast<int>(rs->stats().objects), rs->stats().primitives,
+                     triangles.c_str(), r.threads, r.seconds);
         std::fprintf(stderr,
                      "  rays: %s total (%s camera, %s shadow, %s reflection, %s refraction, "
                      "%s transmission, %s internal reflection), %.2f Mrays/s\n",

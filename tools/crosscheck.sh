@@ -9,13 +9,17 @@ build=${1:-build}
 shift || true
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-for scene in scenes/*.scad scenes/crosscheck/*.scad; do
+shared=${SCADRAY_SHARED_DIR:-../shared}
+shopt -s nullglob
+for scene in scenes/*.scad scenes/crosscheck/*.scad scenes/gltf/*.gltf \
+             "$shared"/gltf/*.gltf "$shared"/gltf/*.glb "$shared"/gltf/*/*.gltf; do
     [ "$(basename "$scene")" = scadray.scad ] && continue
-    "$build/tools/scadray" check "$scene" -o "$out/$(basename "$scene" .scad)" -q --csv "$out/all.csv" "$@" || true
+    name=$(basename "$scene"); name=${name%.*}
+    "$build/tools/scadray" check "$scene" -o "$out/$name" -q --csv "$out/all.csv" "$@" || true
 done
 echo "| scene | verdict | RMSE | max error | masked | tiles failed / tested | POV-Ray wall (trace) | scadray wall |"
 echo "|---|---|---|---|---|---|---|---|"
 tail -n +2 "$out/all.csv" | while IFS=, read -r scene verdict rmse maxe masked tested failed det pw pt sw sr; do
     printf '| `%s` | %s | %s | %s | %s%% | %s / %s | %.2f s (%.2f s) | %.2f s |\n' \
-        "${scene#scenes/}" "$verdict" "$rmse" "$maxe" "$masked" "$failed" "$tested" "$pw" "$pt" "$sw"
+        "$(echo "$scene" | sed -e "s|^scenes/||" -e "s|^$shared/|shared/|")" "$verdict" "$rmse" "$maxe" "$masked" "$failed" "$tested" "$pw" "$pt" "$sw"
 done

@@ -2,6 +2,7 @@
 // Diagnostic formatting with a source excerpt, and the collecting sink.
 #include "core/ir/diagnostics.h"
 
+#include <algorithm>
 #include <fstream>
 
 namespace rt {
@@ -48,14 +49,25 @@ std::string readSourceLine(const std::string &path, int line) {
 }  // namespace
 
 std::string formatDiagnostic(const Diagnostic &d, bool withExcerpt) {
-    std::string out = d.loc.toString() + ": " + severityName(d.severity) + ": " + d.message;
+    // A diagnostic about the scene as a whole has no location to print
+    std::string out = (d.loc.file ? d.loc.toString() + ": " : std::string()) +
+                      severityName(d.severity) + ": " + d.message;
     if (!withExcerpt || !d.loc.isValid()) return out;
     std::string src = readSourceLine(*d.loc.file, d.loc.line);
     if (src.empty()) return out;
-    out += "\n    " + src + "\n    ";
+    // Long lines (minified JSON) are shown as a window around the column
+    constexpr int kContext = 60;
+    int col = std::max(d.loc.col, 1);
+    int first = std::max(1, col - kContext);
+    int last = std::min(static_cast<int>(src.size()), col + kContext);
+    std::string lead = first > 1 ? "..." : "";
+    std::string tail = last < static_cast<int>(src.size()) ? "..." : "";
+    std::string window = src.substr(static_cast<size_t>(first - 1),
+                                    static_cast<size_t>(std::max(0, last - first + 1)));
+    out += "\n    " + lead + window + tail + "\n    " + std::string(lead.size(), ' ');
     // Keep tabs so the caret lines up under the offending text
-    for (int i = 1; i < d.loc.col && i - 1 < static_cast<int>(src.size()); ++i)
-        out += src[i - 1] == '\t' ? '\t' : ' ';
+    for (int i = first; i < col && i - 1 < static_cast<int>(src.size()); ++i)
+        out += src[static_cast<size_t>(i - 1)] == '\t' ? '\t' : ' ';
     out += "^";
     return out;
 }

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <regex>
 #include <string_view>
 
 #include "importers/gltf/gltf_internal.h"
@@ -135,6 +136,20 @@ std::unique_ptr<LoadedFile> loadFile(const std::string &path, const SourceLoc &l
         for (const std::string &line : splitLines(err))
             message += (message.empty() ? "" : "; ") + line;
         if (message.empty()) message = "unknown error";
+        // A JSON syntax error points into the text: at its line and column for a .gltf, in the
+        // message for the JSON chunk of a .glb
+        std::smatch m;
+        static const std::regex kJsonError(
+            R"(\[json\.exception\.parse_error\.\d+\] parse error at line (\d+), column (\d+): (.*))");
+        if (std::regex_search(message, m, kJsonError)) {
+            std::string what = "invalid JSON: " + m[3].str();
+            if (!binary)
+                throw ParseError(SourceLoc(std::make_shared<const std::string>(path),
+                                           std::stoi(m[1].str()), std::stoi(m[2].str())),
+                                 what);
+            throw ParseError(loc, "invalid JSON chunk in binary glTF at its line " + m[1].str() +
+                                      ", column " + m[2].str() + ": " + m[3].str());
+        }
         throw ParseError(loc, std::string("cannot load glTF") + (binary ? " binary (.glb)" : "") +
                                   " file: " + message);
     }

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "core/image/image_io.h"
 
@@ -201,6 +202,72 @@ TEST_F(Cli, CheckWithoutPovRayIsAClearError) {
     int status = std::system(cmd.c_str());
     EXPECT_EQ(WEXITSTATUS(status), 2);
     EXPECT_NE(slurp(dir / "err").find("povray"), std::string::npos);
+}
+
+TEST_F(Cli, MeshFilesRenderOnTheirOwn) {
+    // glTF, STL and OFF files are scenes by themselves: automatic camera and lights where the
+    // file has none, the file's own camera and lights where it has them
+    std::vector<std::string> files = {scene("gltf/lights_ortho.gltf"),
+                                      scene("crosscheck/assets/torus.stl"),
+                                      scene("crosscheck/assets/frustum.off")};
+    std::string duck = std::string(SCADRAY_SHARED_DIR) + "/gltf/Duck.glb";
+    if (fs::exists(duck)) files.push_back(duck);
+    for (const auto &file : files) {
+        SCOPED_TRACE(file);
+        std::string out = (dir / (fs::path(file).stem().string() + ".png")).string();
+        CliRun r = run("render -W 48 -H 36 " + file + " -o " + out);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_NE(r.err.find("triangles"), std::string::npos) << r.err;
+        Image img = readImage(out);
+        bool varied = false;
+        for (int y = 0; y < img.height() && !varied; ++y)
+            for (int x = 0; x < img.width() && !varied; ++x)
+                varied = std::abs(img.at(x, y).g - img.at(0, 0).g) > 0.05;
+        EXPECT_TRUE(varied) << "blank picture";
+    }
+}
+
+TEST_F(Cli, BrokenMeshFilesAreLocatedErrorsAndWriteNothing) {
+    struct Case {
+        std::string name, text, where;
+    };
+    std::vector<Case> cases = {
+        // JSON syntax error: line and column in the file
+        {"syntax.gltf", "{\"asset\": {\"version\": \"2.0\"},\n  \"nodes\": [ }\n", "syntax.gltf:2:"},
+        // Wrong index: the JSON path of the offending value
+        {"index.gltf",
+         "{\"asset\":{\"version\":\"2.0\"},\"scenes\":[{\"nodes\":[3]}],\"nodes\":[{}]}\n",
+         "index.gltf"},
+        // Truncated binary glTF
+        {"cut.glb", std::string("glTF\x02\x00\x00\x00\xff\x00\x00\x00", 12), "cut.glb"},
+        // Facet with a NaN vertex
+        {"nan.stl",
+         "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex nan 1 0\n"
+         "endloop\nendfacet\nendsolid x\n",
+         "nan.stl:6:"},
+        // OFF face naming a vertex that does not exist
+        {"index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n", "index.off:6:"},
+    };
+    for (const auto &c : cases) {
+        SCOPED_TRACE(c.name);
+        std::string in = write(c.name, c.text);
+        std::string out = (dir / "broken.png").string();
+        CliRun r = run("render " + in + " -o " + out);
+        EXPECT_EQ(r.exitCode, 1) << r.err;
+        EXPECT_NE(r.err.find(c.where), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find("error"), std::string::npos) << r.err;
+        EXPECT_FALSE(fs::exists(out));
+    }
+}
+
+TEST_F(Cli, ExportWritesMeshesAsMesh2) {
+    std::string pov = (dir / "meshes.pov").string();
+    CliRun r = run("export " + scene("crosscheck/meshes.scad") + " -o " + pov);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::string text = slurp(pov);
+    EXPECT_NE(text.find("mesh2 {"), std::string::npos);
+    EXPECT_NE(text.find("inside_vector"), std::string::npos);
+    EXPECT_NE(text.find("difference {"), std::string::npos) << "the cut torus stays CSG";
 }
 
 TEST_F(Cli, DumpPrintsTheIr) {

@@ -59,12 +59,28 @@ TEST(GltfErrors, MissingFile) {
     expectError<ParseError>("/nonexistent/model.glb", {"cannot open", "model.glb"});
 }
 
-TEST(GltfErrors, InvalidJson) {
+TEST(GltfErrors, InvalidJsonIsLocatedAtItsLineAndColumn) {
     TempDir tmp;
-    writeText(tmp.file("bad.gltf"), R"({"asset": {"version": "2.0"}, "scenes": [ )");
-    expectError<ParseError>(tmp.file("bad.gltf"), {"cannot load glTF file"});
+    writeText(tmp.file("bad.gltf"), "{\"asset\": {\"version\": \"2.0\"},\n  \"scenes\": [ }\n");
+    DiagnosticSink diag;
+    try {
+        importGltf(tmp.file("bad.gltf"), diag);
+        ADD_FAILURE() << "imported without an error";
+    } catch (const ParseError &e) {
+        EXPECT_NE(std::string(e.what()).find("invalid JSON"), std::string::npos) << e.what();
+        EXPECT_EQ(e.loc().fileName(), tmp.file("bad.gltf"));
+        EXPECT_EQ(e.loc().line, 2);
+        EXPECT_EQ(e.loc().col, 15);  // the closing brace
+    }
     writeText(tmp.file("empty.gltf"), "");
-    expectError<ParseError>(tmp.file("empty.gltf"), {"cannot load glTF file"});
+    try {
+        importGltf(tmp.file("empty.gltf"), diag);
+        ADD_FAILURE() << "imported without an error";
+    } catch (const ParseError &e) {
+        EXPECT_NE(std::string(e.what()).find("cannot load glTF file"), std::string::npos)
+            << e.what();
+        EXPECT_EQ(e.loc().fileName(), tmp.file("empty.gltf"));
+    }
 }
 
 TEST(GltfErrors, TruncatedGlb) {
