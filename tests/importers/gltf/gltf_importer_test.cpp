@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 #include "core/math/float_util.h"
@@ -332,24 +331,17 @@ TEST(GltfImport, DuckDecodesItsTextureAndCamera) {
     EXPECT_EQ(scene.camera->fovAxis, ir::FovAxis::Vertical);
 }
 
-TEST(GltfImport, MetalRoughSpheresImportsAMillionTrianglesQuickly) {
+TEST(GltfImport, MetalRoughSpheresImportsAMillionInstancedTriangles) {
+    // Speed is measured by tools/bench_mesh.sh, not asserted here
     REQUIRE_GLTF_SAMPLE("MetalRoughSpheresNoTextures.glb");
     DiagnosticSink diag;
-    auto start = std::chrono::steady_clock::now();
     ir::Scene scene = importGltf(sample("MetalRoughSpheresNoTextures.glb"), diag);
-    double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("[ timing ] MetalRoughSpheresNoTextures.glb: %zu triangles imported in %.3f s\n",
-                instancedTriangles(scene), seconds);
     // 1,040,409 triangles in the file, less the zero-area ones (reported in a note)
     size_t n = instancedTriangles(scene);
     EXPECT_GT(n, 1000000u);
     EXPECT_LE(n, 1040409u);
     EXPECT_EQ(diag.countContaining("zero-area") > 0, n < 1040409u);
     EXPECT_EQ(diag.count(Severity::Warning), 0);
-#ifdef NDEBUG
-    EXPECT_LT(seconds, 2.0);
-#endif
 }
 
 TEST(GltfImport, ImportIntoAddsMeshesUnderAGroupAtTheCallSite) {
