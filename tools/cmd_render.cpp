@@ -81,11 +81,11 @@ int runRender(const RenderArgs &a) {
                      triangles.c_str(), r.threads, r.seconds);
         std::fprintf(stderr,
                      "  rays: %s total (%s camera, %s shadow, %s reflection, %s refraction, "
-                     "%s transmission, %s internal reflection), %.2f Mrays/s\n",
+                     "%s transmission, %s internal reflection, %s distributed), %.2f Mrays/s\n",
                      formatCount(s.totalRays()).c_str(), formatCount(s.camera).c_str(),
                      formatCount(s.shadow).c_str(), formatCount(s.reflection).c_str(),
                      formatCount(s.refraction).c_str(), formatCount(s.transmission).c_str(),
-                     formatCount(s.internalReflection).c_str(),
+                     formatCount(s.internalReflection).c_str(), formatCount(s.distributed).c_str(),
                      s.totalRays() / std::max(r.seconds, 1e-9) / 1e6);
         std::fprintf(stderr, "  csg: %s span merges, %s pruned subtrees; non-finite pixels: %lld\n",
                      formatCount(s.spanOps).c_str(), formatCount(s.prunedSubtrees).c_str(),
@@ -105,7 +105,7 @@ void addRenderCommand(CLI::App &app, std::function<int()> &action) {
     cmd->add_option("-W,--width", args->width, "Image width in pixels")->capture_default_str();
     cmd->add_option("-H,--height", args->height, "Image height in pixels")->capture_default_str();
     cmd->add_option("-s,--samples", args->samples,
-                    "Samples per pixel, a square (1, 4, 9, 16, ...); 1 = pixel centres")
+                    "Samples per pixel, stratified; 1 = pixel centres")
         ->capture_default_str();
     cmd->add_option("--seed", args->seed, "Seed of the sample pattern")->capture_default_str();
     cmd->add_option("-t,--threads", args->threads, "Render threads (0 = all cores)")

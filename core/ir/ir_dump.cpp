@@ -112,8 +112,14 @@ std::string dump(const Scene &scene) {
                                            : "")
            << " color " << rgb(l.color)
            << " fade_distance " << formatNumber(l.fadeDistance) << " fade_power "
-           << formatNumber(l.fadePower) << " shadowless " << boolean(l.shadowless) << where(l.loc)
-           << "\n";
+           << formatNumber(l.fadePower) << " shadowless " << boolean(l.shadowless)
+           << (l.area ? " area " + vec(l.areaLight.axis1) + " " + vec(l.areaLight.axis2) + " " +
+                            std::to_string(l.areaLight.n1) + "x" + std::to_string(l.areaLight.n2) +
+                            " adaptive " + std::to_string(l.areaLight.adaptive) + " jitter " +
+                            boolean(l.areaLight.jitter) + " circular " +
+                            boolean(l.areaLight.circular) + " orient " + boolean(l.areaLight.orient)
+                      : std::string())
+           << where(l.loc) << "\n";
     for (size_t i = 0; i < scene.materials.size(); ++i) {
         const Material &m = scene.materials[i];
         const Finish &f = m.finish;
@@ -127,7 +133,13 @@ std::string dump(const Scene &scene) {
            << rgb(f.reflectionMax) << " reflection_falloff " << formatNumber(f.reflectionFalloff)
            << " reflection_exponent " << formatNumber(f.reflectionExponent) << " fresnel "
            << boolean(f.fresnel) << " conserve_energy " << boolean(f.conserveEnergy)
-           << " emission " << rgb(f.emission) << " ior " << formatNumber(m.interior.ior)
+           << " emission " << rgb(f.emission)
+           << (f.glossy > 0 || f.frosted > 0
+                   ? " glossy " + formatNumber(f.glossy) + " frosted " + formatNumber(f.frosted) +
+                         " blur_samples " + std::to_string(f.blurSamples) + " blur_lobe " +
+                         (f.blurLobe == Finish::Lobe::Phong ? "phong" : "normal")
+                   : std::string())
+           << " ior " << formatNumber(m.interior.ior)
            << " fade_distance " << formatNumber(m.interior.fadeDistance) << " fade_power "
            << formatNumber(m.interior.fadePower) << " fade_color " << rgb(m.interior.fadeColor)
            << (m.baseColorTexture >= 0 ? " texture " + std::to_string(m.baseColorTexture) : "")

@@ -72,6 +72,22 @@ void validateScene(const Scene &scene, DiagnosticSink &diag) {
         if (l.kind == Light::Kind::Spot &&
             !(l.spotRadius >= 0 && l.spotFalloff > 0 && l.spotFalloff <= 90 && l.spotRadius <= l.spotFalloff))
             throw SceneError(l.loc, "spot light needs 0 <= radius <= falloff <= 90 degrees");
+        if (l.area) {
+            const Light::Area &a = l.areaLight;
+            if (!inRange(a.axis1) || !inRange(a.axis2))
+                throw SceneError(l.loc, "area light axes are not finite or beyond ±" +
+                                            number(kMaxCoordinate));
+            if (a.n1 < 1 || a.n2 < 1 || a.n1 > kMaxAreaLightGrid || a.n2 > kMaxAreaLightGrid)
+                throw SceneError(l.loc, "area light grid " + std::to_string(a.n1) + "x" +
+                                            std::to_string(a.n2) + " is outside 1.." +
+                                            std::to_string(kMaxAreaLightGrid) + " per axis");
+            if (a.adaptive < 0) throw SceneError(l.loc, "area light adaptive must be >= 0");
+            if ((a.circular || a.orient) && (a.n1 < 2 || a.n2 < 2))
+                throw SceneError(l.loc, "circular and orient area lights need at least 2x2 "
+                                        "samples");
+            if (l.kind == Light::Kind::Directional)
+                throw SceneError(l.loc, "a parallel light cannot be an area light");
+        }
     }
     if (scene.camera) {
         const Camera &c = *scene.camera;
@@ -88,6 +104,14 @@ void validateScene(const Scene &scene, DiagnosticSink &diag) {
         if (!m.color.isFinite() || !std::isfinite(m.filter) || !std::isfinite(m.transmit) ||
             !std::isfinite(m.interior.ior) || !m.finish.emission.isFinite())
             throw SceneError(m.loc, "material has non-finite values");
+        const Finish &f = m.finish;
+        if (!(f.glossy >= 0 && f.glossy <= kMaxBlurDegrees) ||
+            !(f.frosted >= 0 && f.frosted <= kMaxBlurDegrees))
+            throw SceneError(m.loc, "glossy and frosted spreads must be between 0 and " +
+                                        number(kMaxBlurDegrees) + " degrees");
+        if (f.blurSamples < 1 || f.blurSamples > kMaxBlurSamples)
+            throw SceneError(m.loc, "blur_samples must be between 1 and " +
+                                        std::to_string(kMaxBlurSamples));
         if (m.baseColorTexture >= static_cast<int>(scene.textures.size()))
             throw SceneError(m.loc, "material refers to a missing texture (internal error)");
     }

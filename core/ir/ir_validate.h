@@ -14,6 +14,13 @@ namespace rt::ir {
 /// intersection routines.
 constexpr double kMaxCoordinate = 1e100;
 constexpr double kMinExtent = 1e-100;
+/// Area light grids: POV-Ray itself allows any size, but 256 x 256 shadow rays per shaded
+/// point already takes minutes a frame; more is a mistake in the scene.
+constexpr int kMaxAreaLightGrid = 256;
+/// Glossy and frosted spreads (degrees): beyond 90 the lobe covers the hemisphere.
+constexpr double kMaxBlurDegrees = 90;
+/// Rays a blurred surface spreads where a path first meets it.
+constexpr int kMaxBlurSamples = 4096;
 
 /// Throws SceneError for non-finite or out-of-range geometry, lights, camera or settings;
 /// warns when the scene has no geometry at all.

@@ -29,6 +29,22 @@ struct Light {
     double fadePower = 0;
     /// No shadow test and no highlights from this light (POV-Ray `shadowless`).
     bool shadowless = false;
+    /// POV-Ray area_light (point and spot lights): shadows are the average visibility of an
+    /// n1 x n2 grid spanning axis1 x axis2 about `position`, averaged recursively as POV-Ray
+    /// does (povray-semantics.md 1.5); light colour, fade and highlights still come from the
+    /// centre. With jitter each grid point moves by up to half a cell, drawn from the
+    /// sample's seeded stream, so soft shadows converge with samples per pixel.
+    struct Area {
+        Vec3 axis1{1, 0, 0}, axis2{0, 1, 0};
+        int n1 = 1, n2 = 1;
+        int adaptive = 100;  ///< POV-Ray's default: in practice full subdivision
+        bool jitter = false;
+        bool circular = false;
+        bool orient = false;  ///< turn the grid to face each shaded point (forces circular)
+        bool operator==(const Area &) const = default;
+    };
+    bool area = false;
+    Area areaLight;
     SourceLoc loc;
 };
 

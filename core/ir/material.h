@@ -31,6 +31,16 @@ struct Finish {
     bool fresnel = false;
     bool conserveEnergy = false;
     Rgb emission{0};
+    /// Monte Carlo extensions POV-Ray 3.7 lacks (its writer approximates them): the angular
+    /// spread (standard deviation, degrees) of reflected rays about the mirror direction
+    /// (glossy) and of refracted rays about the refracted direction (frosted); 0 = sharp.
+    double glossy = 0;
+    double frosted = 0;
+    /// Rays a glossy or frosted surface spreads over its lobe where a path first meets one;
+    /// later blurred bounces of that path take one ray each, so the cost stays linear.
+    int blurSamples = 8;
+    enum class Lobe { Normal, Phong };
+    Lobe blurLobe = Lobe::Normal;
 
     bool operator==(const Finish &) const = default;
     bool hasReflection() const { return !reflectionMin.isBlack() || !reflectionMax.isBlack(); }
@@ -66,7 +76,8 @@ struct Material {
                                f.brilliance, f.phong, f.phongSize, f.specular, f.roughness,
                                f.metallic, rmax.r, rmax.g, rmax.b, rmin.r, rmin.g, rmin.b,
                                f.reflectionFalloff, f.reflectionExponent, f.fresnel,
-                               f.conserveEnergy, e.r, e.g, e.b, interior.ior,
+                               f.conserveEnergy, e.r, e.g, e.b, f.glossy, f.frosted,
+                               f.blurSamples, f.blurLobe, interior.ior,
                                interior.fadeDistance, interior.fadePower, fc.r, fc.g, fc.b,
                                baseColorTexture);
     }

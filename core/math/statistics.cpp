@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Student t distribution and Benjamini-Hochberg.
+// Student t and chi-square distributions, and Benjamini-Hochberg.
 #include "core/math/statistics.h"
 
 #include <algorithm>
@@ -93,5 +93,40 @@ std::vector<bool> benjaminiHochberg(const std::vector<double> &p, double q) {
     for (size_t i = 0; i < k; ++i) reject[order[i]] = true;
     return reject;
 }
+
+double upperIncompleteGamma(double a, double x) {
+    // Series for P below a + 1, Lentz's continued fraction for Q above (Numerical Recipes 6.2)
+    constexpr int kMaxIterations = 1000;
+    constexpr double kTiny = 1e-300;
+    constexpr double kTolerance = 1e-15;
+    if (!(a > 0) || !(x >= 0)) return std::numeric_limits<double>::quiet_NaN();
+    if (x == 0) return 1;
+    double logPrefix = a * std::log(x) - x - std::lgamma(a);
+    if (x < a + 1) {
+        double term = 1 / a, sum = term;
+        for (int n = 1; n < kMaxIterations; ++n) {
+            term *= x / (a + n);
+            sum += term;
+            if (std::abs(term) < std::abs(sum) * kTolerance) break;
+        }
+        return std::max(0.0, 1 - sum * std::exp(logPrefix));
+    }
+    double b = x + 1 - a, c = 1 / kTiny, d = 1 / b, h = d;
+    for (int i = 1; i < kMaxIterations; ++i) {
+        double an = -i * (i - a);
+        b += 2;
+        d = an * d + b;
+        if (std::abs(d) < kTiny) d = kTiny;
+        c = b + an / c;
+        if (std::abs(c) < kTiny) c = kTiny;
+        d = 1 / d;
+        double del = d * c;
+        h *= del;
+        if (std::abs(del - 1) < kTolerance) break;
+    }
+    return std::exp(logPrefix) * h;
+}
+
+double chiSquareSf(double x, double dof) { return upperIncompleteGamma(dof / 2, x / 2); }
 
 }  // namespace rt

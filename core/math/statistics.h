@@ -12,6 +12,12 @@ double incompleteBeta(double a, double b, double x);
 /// P(T <= t) for Student's t with `dof` degrees of freedom; dof = inf gives the normal CDF.
 double studentTCdf(double t, double dof);
 
+/// Regularized upper incomplete gamma function Q(a, x) = Gamma(a, x) / Gamma(a).
+double upperIncompleteGamma(double a, double x);
+
+/// Survival function of the chi-square distribution: P(X >= x) with `dof` degrees of freedom.
+double chiSquareSf(double x, double dof);
+
 /// Two-sided p-value of a t statistic: P(|T| >= |t|).
 double twoSidedPValue(double t, double dof);
 

@@ -25,16 +25,18 @@ void validateRenderOptions(const RenderOptions &o) {
     if (o.samplesPerPixel < 1 || o.samplesPerPixel > kMaxSamplesPerPixel)
         throw std::invalid_argument("samples per pixel must be between 1 and " +
                                     std::to_string(kMaxSamplesPerPixel));
-    int k = static_cast<int>(std::lround(std::sqrt(o.samplesPerPixel)));
-    if (k * k != o.samplesPerPixel)
-        throw std::invalid_argument("samples per pixel must be a square (1, 4, 9, 16, ...) for "
-                                    "stratified sampling; got " +
-                                    std::to_string(o.samplesPerPixel));
     if (o.batches < 1 || o.batches > kMaxBatches)
         throw std::invalid_argument("batches must be between 1 and " + std::to_string(kMaxBatches));
     if (!(o.sampleClamp >= 0)) throw std::invalid_argument("sample clamp must not be negative");
     if (o.threads < 0) throw std::invalid_argument("thread count must not be negative");
     if (o.tileSize < 1) throw std::invalid_argument("tile size must be positive");
+}
+
+void strataGrid(int n, int &columns, int &rows) {
+    rows = static_cast<int>(std::sqrt(double(n)));
+    while (rows > 1 && n % rows != 0) --rows;
+    rows = std::max(rows, 1);
+    columns = n / rows;
 }
 
 RenderResult renderImage(const RenderScene &scene, const RenderOptions &opts) {
@@ -49,7 +51,9 @@ RenderResult renderImage(const RenderScene &scene, const RenderOptions &opts) {
     int threads = opts.threads > 0 ? opts.threads
                                    : std::max(1u, std::thread::hardware_concurrency());
     threads = std::min(threads, tileCount);
-    int strata = static_cast<int>(std::lround(std::sqrt(opts.samplesPerPixel)));
+    int columns, rows;
+    strataGrid(opts.samplesPerPixel, columns, rows);
+    bool jitter = opts.samplesPerPixel > 1 || opts.batches > 1 || opts.jitterSingleSample;
     double invSamples = 1.0 / opts.samplesPerPixel;
 
     RenderResult result;
@@ -77,13 +81,14 @@ RenderResult renderImage(const RenderScene &scene, const RenderOptions &opts) {
                     for (int b = 0; b < opts.batches; ++b) {
                         Rgb sum(0);
                         for (int s = 0; s < opts.samplesPerPixel; ++s) {
+                            // The sample's stream jitters its stratum of the pixel, then
+                            // drives every distributed ray of its path
+                            ctx.rng = Rng::forSample(
+                                pixel, uint64_t(b) * opts.samplesPerPixel + s, opts.seed);
                             double fx = 0.5, fy = 0.5;
-                            if (opts.samplesPerPixel > 1 || opts.batches > 1) {
-                                // Jittered stratum s of a strata x strata grid, per batch
-                                Rng rng = Rng::forSample(
-                                    pixel, uint64_t(b) * opts.samplesPerPixel + s, opts.seed);
-                                fx = ((s % strata) + rng.uniform()) / strata;
-                                fy = ((s / strata) + rng.uniform()) / strata;
+                            if (jitter) {
+                                fx = ((s % columns) + ctx.rng.uniform()) / columns;
+                                fy = ((s / columns) + ctx.rng.uniform()) / rows;
                             }
                             ctx.tie = false;
                             Rgb c = integrator.li(camera.generateRay(x + fx, y + fy), ctx);

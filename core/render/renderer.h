@@ -15,9 +15,13 @@ namespace rt {
 struct RenderOptions {
     int width = 640;
     int height = 480;
-    /// Samples per pixel; a perfect square k*k, stratified on a k x k grid. 1 means the pixel
-    /// centre exactly, as POV-Ray without antialiasing.
+    /// Samples per pixel, stratified on the squarest grid of that many cells (k x k for a
+    /// square, 4 x 2 for 8). One sample is the pixel centre exactly, as POV-Ray without
+    /// antialiasing, unless `jitterSingleSample`.
     int samplesPerPixel = 1;
+    /// Jitter even a single sample over its pixel, so that every sample count estimates the
+    /// same box-filtered image (convergence measurements need this).
+    bool jitterSingleSample = false;
     uint64_t seed = 0;
     /// Independent batches of samplesPerPixel samples each; with more than one, the result
     /// carries the variance of each pixel's mean, estimated from the batch means.
@@ -50,7 +54,11 @@ constexpr int kMaxImageSide = 32768;
 constexpr int kMaxSamplesPerPixel = 65536;
 constexpr int kMaxBatches = 1024;
 
-/// Throws std::invalid_argument for bad options (sizes, non-square sample counts).
+/// Columns and rows of the stratification grid of n samples: rows is the largest divisor of n
+/// not above its square root.
+void strataGrid(int n, int &columns, int &rows);
+
+/// Throws std::invalid_argument for bad options (sizes, sample counts).
 void validateRenderOptions(const RenderOptions &opts);
 
 RenderResult renderImage(const RenderScene &scene, const RenderOptions &opts);

@@ -4,7 +4,9 @@
 
 #include <cmath>
 
+#include "core/lights/area_light.h"
 #include "core/materials/classic_shading.h"
+#include "core/materials/lobe_sampling.h"
 #include "core/materials/texture_sampler.h"
 
 namespace rt {
@@ -14,6 +16,10 @@ namespace {
 /// Shadow rays stop this fraction of the light distance short of the light, so a light placed
 /// on a surface does not shadow itself (scale-free form of POV-Ray's SHADOW_TOLERANCE).
 constexpr double kShadowEpsilon = 1e-9;
+
+/// 1 / golden ratio: the generator of a rank-1 lattice of n points is the integer nearest
+/// n times this (for Fibonacci n it is the previous Fibonacci number, the best 2-D lattice).
+constexpr double kInverseGoldenRatio = 0.6180339887498949;
 
 Rgb powRgb(const Rgb &c, double e) {
     return {std::pow(c.r, e), std::pow(c.g, e), std::pow(c.b, e)};
@@ -38,7 +44,7 @@ WhittedIntegrator::WhittedIntegrator(const RenderScene &scene, const Vec3 &camer
 
 Rgb WhittedIntegrator::li(const Ray &cameraRay, TraceContext &ctx) const {
     ++ctx.stats.camera;
-    Rgb c = trace(cameraRay, 0, 1.0, cameraStack_, false, ctx);
+    Rgb c = trace(cameraRay, 0, 1.0, cameraStack_, false, false, ctx);
     if (!c.isFinite()) {
         ++ctx.stats.nonFinite;
         return Rgb(0);
@@ -47,14 +53,14 @@ Rgb WhittedIntegrator::li(const Ray &cameraRay, TraceContext &ctx) const {
 }
 
 Rgb WhittedIntegrator::trace(const Ray &ray, int level, double weight, const InteriorStack &stack,
-                             bool continued, TraceContext &ctx) const {
+                             bool continued, bool blurred, TraceContext &ctx) const {
     const ir::Settings &s = scene_.settings();
     if (level >= s.maxTraceLevel || weight < s.adcBailout) return Rgb(0);
     SurfaceInteraction si;
     bool hit = scene_.intersect(ray, 0, kInfinity, &si, ctx.scratch);
     ctx.tie = ctx.tie || si.tie;
     if (!hit) return s.background;
-    return shade(ray, si, continued ? level : level + 1, weight, stack, ctx);
+    return shade(ray, si, continued ? level : level + 1, weight, stack, blurred, ctx);
 }
 
 double WhittedIntegrator::relativeIor(const Shape *object, const InteriorStack &stack) const {
@@ -68,7 +74,8 @@ double WhittedIntegrator::relativeIor(const Shape *object, const InteriorStack &
 }
 
 Rgb WhittedIntegrator::shade(const Ray &ray, const SurfaceInteraction &si, int level,
-                             double weight, const InteriorStack &stack, TraceContext &ctx) const {
+                             double weight, const InteriorStack &stack, bool blurred,
+                             TraceContext &ctx) const {
     const ir::Material &m = scene_.material(si.leaf->material());
     const ir::Finish &f = m.finish;
     const ir::Settings &settings = scene_.settings();
@@ -109,19 +116,25 @@ Rgb WhittedIntegrator::shade(const Ray &ray, const SurfaceInteraction &si, int l
         if (std::abs(eta - 1) < kPovEpsilon) {
             // Same medium on both sides: continue straight on without using a trace level
             ++ctx.stats.transmission;
-            transmitted = trace(spawnRay(si, ray.d), level, w, next, true, ctx);
+            transmitted = trace(spawnRay(si, ray.d), level, w, next, true, blurred, ctx);
         } else {
             // Heckbert's refraction; N faces the ray so n = cos of incidence
             double n = cosI;
             double t = 1 + eta * eta * (n * n - 1);
-            if (t < 0) {
-                tir = true;
-                ++ctx.stats.internalReflection;
-                transmitted = trace(spawnRay(si, reflectDir), level, w, stack, false, ctx);
+            // A frosted surface spreads the refracted (or totally reflected) ray over its lobe,
+            // keeping each ray on the side the sharp one goes to
+            Vec3 dir = ray.d * eta + N * (eta * n - std::sqrt(std::max(t, 0.0)));
+            tir = t < 0;
+            const InteriorStack &beyond = tir ? stack : next;
+            Vec3 centre = tir ? reflectDir : dir, side = tir ? N : -N;
+            auto traceOne = [&](const Vec3 &d) {
+                return trace(spawnRay(si, d), level, w, beyond, false, true, ctx);
+            };
+            if (f.frosted > 0) {
+                transmitted = distribute(f, f.frosted, centre, side, blurred, ctx, traceOne);
             } else {
-                ++ctx.stats.refraction;
-                Vec3 dir = ray.d * eta + N * (eta * n - std::sqrt(t));
-                transmitted = trace(spawnRay(si, dir), level, w, next, false, ctx);
+                ++(tir ? ctx.stats.internalReflection : ctx.stats.refraction);
+                transmitted = trace(spawnRay(si, centre), level, w, beyond, false, blurred, ctx);
             }
         }
         // Light leaving a medium the ray was inside fades with the distance travelled
@@ -130,12 +143,45 @@ Rgb WhittedIntegrator::shade(const Ray &ray, const SurfaceInteraction &si, int l
         colour += tir ? att * transmitted : att * transmitted * filCol;
     }
     if (!tir && !refl.value.isBlack()) {
-        ++ctx.stats.reflection;
-        Rgb r = trace(spawnRay(si, reflectDir), level, weight * refl.weightScale, stack, false, ctx);
-        if (f.reflectionExponent != 1) r = powRgb(r, 1 / f.reflectionExponent);
+        double w = weight * refl.weightScale;
+        auto traceOne = [&](const Vec3 &d) {
+            Rgb r = trace(spawnRay(si, d), level, w, stack, false, true, ctx);
+            return f.reflectionExponent != 1 ? powRgb(r, 1 / f.reflectionExponent) : r;
+        };
+        Rgb r;
+        if (f.glossy > 0) {
+            r = distribute(f, f.glossy, reflectDir, N, blurred, ctx, traceOne);
+        } else {
+            ++ctx.stats.reflection;
+            r = trace(spawnRay(si, reflectDir), level, w, stack, false, blurred, ctx);
+            if (f.reflectionExponent != 1) r = powRgb(r, 1 / f.reflectionExponent);
+        }
         colour += refl.value * r;
     }
     return colour;
+}
+
+template <typename TraceOne>
+Rgb WhittedIntegrator::distribute(const ir::Finish &f, double spreadDegrees, const Vec3 &centre,
+                                  const Vec3 &side, bool blurred, TraceContext &ctx,
+                                  TraceOne traceOne) const {
+    Lobe lobe(f.blurLobe == ir::Finish::Lobe::Phong ? LobeShape::Phong : LobeShape::Normal,
+              radians(spreadDegrees));
+    int n = blurred ? 1 : f.blurSamples;
+    // Rank-1 lattice with a Fibonacci-like generator, shifted by a random vector (Cranley-
+    // Patterson rotation): every point is uniform on its own, so the mean is unbiased, and
+    // the n points are stratified in both dimensions
+    int g = std::max(1, static_cast<int>(std::lround(n * kInverseGoldenRatio)));
+    double shift1 = ctx.rng.uniform(), shift2 = ctx.rng.uniform();
+    Rgb sum(0);
+    for (int i = 0; i < n; ++i) {
+        double u1 = double(i) / n + shift1, u2 = double((int64_t(i) * g) % n) / n + shift2;
+        u1 -= std::floor(u1);
+        u2 -= std::floor(u2);
+        ++ctx.stats.distributed;
+        sum += traceOne(sampleLobeAbout(lobe, centre, side, u1, u2));
+    }
+    return sum * (1.0 / n);
 }
 
 Rgb WhittedIntegrator::surfaceColour(const ir::Material &m, const SurfaceInteraction &si) const {
@@ -170,7 +216,9 @@ Rgb WhittedIntegrator::localColour(const Ray &ray, const SurfaceInteraction &si,
         double cosNL = dot(N, L);
         if (cosNL < kPovEpsilon) continue;
         Rgb lc = light.color * lightAttenuation(light, L, dist);
-        if (!light.shadowless && dist > 0) lc *= shadowFilter(si, L, dist, stack, ctx);
+        if (!light.shadowless && dist > 0)
+            lc = light.area ? areaShadow(si, light, lc, stack, ctx)
+                            : lc * shadowFilter(si, L, dist, stack, ctx);
         if (!(std::abs(lc.r) > kPovEpsilon || std::abs(lc.g) > kPovEpsilon ||
               std::abs(lc.b) > kPovEpsilon))
             continue;
@@ -210,6 +258,18 @@ double WhittedIntegrator::lightAttenuation(const ir::Light &light, const Vec3 &L
         if (cosRadius > 0 && cosTheta < cosRadius) att *= cubicSpline(cosFalloff, cosRadius, cosTheta);
     }
     return att * lightFade(light, dist);
+}
+
+Rgb WhittedIntegrator::areaShadow(const SurfaceInteraction &si, const ir::Light &light,
+                                  const Rgb &lc, const InteriorStack &stack,
+                                  TraceContext &ctx) const {
+    AreaLightSampler grid(light, si.p, ctx.rng);
+    return grid.average([&](const Vec3 &target) {
+        Vec3 toTarget = target - si.p;
+        double d = length(toTarget);
+        if (!(d > 0)) return lc;
+        return lc * shadowFilter(si, toTarget / d, d, stack, ctx);
+    });
 }
 
 Rgb WhittedIntegrator::shadowFilter(const SurfaceInteraction &si, const Vec3 &L, double dist,

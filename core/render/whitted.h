@@ -19,6 +19,9 @@ struct TraceContext {
     /// Set when the current sample's path met a tie (coincident surfaces); the renderer clears
     /// it per sample and reports the fraction of such samples per pixel.
     bool tie = false;
+    /// The current sample's random stream (pixel jitter, then every distributed ray of its
+    /// path), seeded by pixel, sample and user seed so a render is the same on any thread count.
+    Rng rng;
 };
 
 class WhittedIntegrator {
@@ -33,10 +36,18 @@ class WhittedIntegrator {
     /// POV-Ray's TraceRay: `level` is the trace level of the ray's parent hit; rays beyond
     /// max_trace_level or below adc_bailout weight return black. Continued rays (through a
     /// surface with no change of ior) do not count a level.
+    /// `blurred` is set below a glossy or frosted split: later blurred surfaces of the path
+    /// send one distributed ray each instead of a fan.
     Rgb trace(const Ray &ray, int level, double weight, const InteriorStack &stack,
-              bool continued, TraceContext &ctx) const;
+              bool continued, bool blurred, TraceContext &ctx) const;
     Rgb shade(const Ray &ray, const SurfaceInteraction &si, int level, double weight,
-              const InteriorStack &stack, TraceContext &ctx) const;
+              const InteriorStack &stack, bool blurred, TraceContext &ctx) const;
+    /// Mean of `traceOne(direction)` over a fan of directions spread by `lobe` about `centre`
+    /// and kept on the side `side` points to: blurSamples rays (a randomly shifted rank-1
+    /// lattice, stratified in both dimensions) at a path's first blurred surface, one after it.
+    template <typename TraceOne>
+    Rgb distribute(const ir::Finish &f, double spreadDegrees, const Vec3 &centre, const Vec3 &side,
+                   bool blurred, TraceContext &ctx, TraceOne traceOne) const;
     /// Ambient, emission and the sum over lights of diffuse, phong and specular; `c` is the
     /// pigment colour at the hit.
     Rgb localColour(const Ray &ray, const SurfaceInteraction &si, const Vec3 &N,
@@ -50,6 +61,10 @@ class WhittedIntegrator {
     /// POV-Ray section 1.4. `stack` is the interior list of the ray that hit si.
     Rgb shadowFilter(const SurfaceInteraction &si, const Vec3 &L, double dist,
                      const InteriorStack &stack, TraceContext &ctx) const;
+    /// Light colour `lc` arriving at si from an area light: POV-Ray's averaged grid of
+    /// shadow rays (section 1.5).
+    Rgb areaShadow(const SurfaceInteraction &si, const ir::Light &light, const Rgb &lc,
+                   const InteriorStack &stack, TraceContext &ctx) const;
     /// n_transmitted / n_incident at a surface of `object`, as POV-Ray's ComputeRelativeIOR.
     double relativeIor(const Shape *object, const InteriorStack &stack) const;
     const ir::Interior &interiorOf(const Shape *object) const {

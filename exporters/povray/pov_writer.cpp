@@ -137,6 +137,15 @@ class Writer {
                 os_ << "    fade_distance " << num(l.fadeDistance) << "\n"
                     << "    fade_power " << num(l.fadePower) << "\n";
             if (l.shadowless) os_ << "    shadowless\n";
+            if (l.area) {
+                const ir::Light::Area &a = l.areaLight;
+                os_ << "    area_light " << vec(a.axis1) << ", " << vec(a.axis2) << ", " << a.n1
+                    << ", " << a.n2 << "\n"
+                    << "    adaptive " << a.adaptive << "\n";
+                if (a.jitter) os_ << "    jitter  // POV-Ray jitters from its own table\n";
+                if (a.circular || a.orient) os_ << "    circular\n";  // orient needs it
+                if (a.orient) os_ << "    orient\n";
+            }
             os_ << "}\n";
         }
         os_ << "\n";
@@ -147,7 +156,8 @@ class Writer {
         for (int i : used_) {
             const ir::Material &m = scene_.materials[i];
             const ir::Finish &f = m.finish;
-            os_ << comment(m.loc, "") << "#declare " << materialName(i) << " = texture {\n";
+            os_ << comment(m.loc, "") << blurComment(f) << "#declare " << materialName(i)
+                << " = texture {\n";
             const ir::Texture *tex = m.baseColorTexture >= 0 ? scene_.textures[m.baseColorTexture].get() : nullptr;
             if (tex) {
                 // The colour factor is baked into a linear 16-bit copy of the texture; uv
@@ -183,6 +193,22 @@ class Writer {
             os_ << "    }\n}\n";
         }
         os_ << "\n";
+    }
+
+    /// POV-Ray 3.7 has no blurred reflection or refraction: the nearest equivalent is the sharp
+    /// direction the lobe spreads about (its mean), which the texture below keeps.
+    static std::string blurComment(const ir::Finish &f) {
+        std::string lobe = f.blurLobe == ir::Finish::Lobe::Phong ? "phong" : "normal";
+        std::string out;
+        if (f.glossy > 0)
+            out += "// scadray: glossy reflection spread " + num(f.glossy) + " deg (" + lobe +
+                   " lobe) cannot be expressed in POV-Ray 3.7; written as the sharp mirror "
+                   "reflection it spreads about\n";
+        if (f.frosted > 0)
+            out += "// scadray: frosted refraction spread " + num(f.frosted) + " deg (" + lobe +
+                   " lobe) cannot be expressed in POV-Ray 3.7; written as the sharp refraction "
+                   "it spreads about\n";
+        return out;
     }
 
     static Image bakedTexture(const ir::Texture &tex, const Rgb &factor) {

@@ -2,6 +2,8 @@
 // File reading, the located text scanner, number parsing and position welding of the mesh readers.
 #include "importers/mesh/reader_support.h"
 
+#include "core/math/rng.h"
+
 #include <charconv>
 #include <cstring>
 #include <fstream>
@@ -13,16 +15,6 @@ namespace rt::meshio::detail {
 namespace {
 
 bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-
-/// splitmix64's finaliser: spreads the bits of coordinates that differ in a few low bits.
-uint64_t mix(uint64_t x) {
-    x ^= x >> 30;
-    x *= 0xbf58476d1ce4e5b9ull;
-    x ^= x >> 27;
-    x *= 0x94d049bb133111ebull;
-    x ^= x >> 31;
-    return x;
-}
 
 uint64_t bitsOf(double d) {
     d += 0.0;  // -0 becomes +0, so that the two compare (and hash) alike
@@ -160,7 +152,7 @@ bool parseCount(std::string_view word, uint64_t &out) {
 // PositionWelder
 
 size_t PositionWelder::KeyHash::operator()(const Key &k) const {
-    return static_cast<size_t>(mix(k.bits[0] ^ mix(k.bits[1] ^ mix(k.bits[2]))));
+    return static_cast<size_t>(rt::mixBits(k.bits[0] ^ rt::mixBits(k.bits[1] ^ rt::mixBits(k.bits[2]))));
 }
 
 uint32_t PositionWelder::add(const Vec3 &p) {

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
-// scadray's metadata modules (camera, point_light, material, background, render_settings),
+// scadray's metadata modules (camera, point_light, area_light, material, background,
+// render_settings),
 // the $vp* viewport camera, and per-primitive material resolution.
 #include <cmath>
 #include <cstring>
 #include <functional>
 
+#include "core/ir/ir_validate.h"
 #include "core/ir/scene_defaults.h"
 #include "importers/scad/colors.h"
 #include "importers/scad/evaluator.h"
@@ -13,8 +15,8 @@ namespace rt::scad {
 
 namespace {
 
-constexpr const char *kMetadataNames[] = {"camera", "point_light", "material", "background",
-                                          "render_settings"};
+constexpr const char *kMetadataNames[] = {"camera",     "point_light",    "area_light",
+                                          "material",   "background",     "render_settings"};
 
 /// Sky vectors closer than this (relative sine) to the view direction cannot orient a camera.
 constexpr double kParallelSine = 1e-9;
@@ -114,6 +116,8 @@ ir::NodePtr Evaluator::instantiateMetadata(Symbol name, const ModuleInstantiatio
         metaCamera(inst, f);
     else if (n == "point_light")
         metaPointLight(inst, f);
+    else if (n == "area_light")
+        metaAreaLight(inst, f);
     else if (n == "background")
         metaBackground(inst, f);
     else
@@ -165,6 +169,55 @@ ir::NodePtr Evaluator::metaPointLight(const ModuleInstantiation &inst, const Fra
     light.fadePower = m.number(3, light.fadePower, nonNegative, "a number >= 0");
     light.shadowless = m.boolean(4, light.shadowless);
     light.position = worldFromLocal_.transformPoint(position);
+    light.loc = inst.loc;
+    scene_.lights.push_back(light);
+    return nullptr;
+}
+
+ir::NodePtr Evaluator::metaAreaLight(const ModuleInstantiation &inst, const FramePtr &f) {
+    BoundArgs a = bindBuiltin(inst,
+                              {"position", "axis1", "axis2", "samples", "color", "adaptive",
+                               "jitter", "circular", "orient", "fade_distance", "fade_power"},
+                              f, nullptr);
+    MetaArgs m(*this, a, "area_light");
+    ir::Light light;
+    light.area = true;
+    ir::Light::Area &area = light.areaLight;
+    Vec3 position = m.vec3(0, Vec3(10, -10, 10));
+    Vec3 axis1 = m.vec3(1, area.axis1), axis2 = m.vec3(2, area.axis2);
+    area.n1 = area.n2 = 5;
+    if (m.given(3)) {
+        // samples = [n1, n2]: whole numbers from 1 to kMaxAreaLightGrid
+        const Value &v = a[3];
+        double n1, n2;
+        auto count = [](double x) { return x >= 1 && x <= ir::kMaxAreaLightGrid && x == std::floor(x); };
+        if (v.isVector() && v.toVector().size() == 2 && v.toVector()[0].getFiniteNumber(n1) &&
+            v.toVector()[1].getFiniteNumber(n2) && count(n1) && count(n2)) {
+            area.n1 = static_cast<int>(n1);
+            area.n2 = static_cast<int>(n2);
+        } else {
+            m.bad(3, 0, "[n1, n2] with whole numbers from 1 to 256");
+        }
+    }
+    light.color = m.color(4, light.color);
+    area.adaptive = static_cast<int>(m.number(
+        5, area.adaptive, [](double x) { return x >= 0 && x <= 100 && x == std::floor(x); },
+        "a whole number from 0 to 100"));
+    area.jitter = m.boolean(6, area.jitter);
+    area.circular = m.boolean(7, area.circular);
+    area.orient = m.boolean(8, area.orient);
+    light.fadeDistance = m.number(9, light.fadeDistance, nonNegative, "a number >= 0");
+    light.fadePower = m.number(10, light.fadePower, nonNegative, "a number >= 0");
+    if ((area.circular || area.orient) && (area.n1 < 2 || area.n2 < 2))
+        throw EvalError(inst.loc, "area_light(): circular and orient need samples of at least "
+                                  "[2, 2]; got [" + std::to_string(area.n1) + ", " +
+                                      std::to_string(area.n2) + "]");
+    if (area.orient && std::abs(length(axis1) - length(axis2)) > 1e-9 * length(axis1))
+        warn(a.loc(8), "area_light(): orient makes both axes as long as axis1 (POV-Ray does the "
+                       "same); axis2's length is ignored");
+    light.position = worldFromLocal_.transformPoint(position);
+    area.axis1 = worldFromLocal_.transformVector(axis1);
+    area.axis2 = worldFromLocal_.transformVector(axis2);
     light.loc = inst.loc;
     scene_.lights.push_back(light);
     return nullptr;
@@ -227,7 +280,11 @@ ir::NodePtr Evaluator::metaMaterial(const ModuleInstantiation &inst, const Frame
                                "ior",
                                "fade_distance",
                                "fade_power",
-                               "fade_color"},
+                               "fade_color",
+                               "glossy",
+                               "frosted",
+                               "blur_samples",
+                               "blur_lobe"},
                               f, dollars.get());
     MetaArgs m(*this, a, "material");
     MaterialSpec spec;
@@ -279,6 +336,22 @@ ir::NodePtr Evaluator::metaMaterial(const ModuleInstantiation &inst, const Frame
     in.fadeDistance = m.number(18, in.fadeDistance, nonNegative, "a number >= 0");
     in.fadePower = m.number(19, in.fadePower, nonNegative, "a number >= 0");
     in.fadeColor = m.color(20, in.fadeColor);
+    auto spread = [](double x) { return x >= 0 && x <= ir::kMaxBlurDegrees; };
+    fin.glossy = m.number(21, fin.glossy, spread, "an angle from 0 to 90 degrees");
+    fin.frosted = m.number(22, fin.frosted, spread, "an angle from 0 to 90 degrees");
+    fin.blurSamples = static_cast<int>(m.number(
+        23, fin.blurSamples,
+        [](double x) { return x >= 1 && x <= ir::kMaxBlurSamples && x == std::floor(x); },
+        "a whole number from 1 to 4096"));
+    if (m.given(24)) {
+        const Value &lobe = a[24];
+        if (lobe.isString() && lobe.toStr() == "normal")
+            fin.blurLobe = ir::Finish::Lobe::Normal;
+        else if (lobe.isString() && lobe.toStr() == "phong")
+            fin.blurLobe = ir::Finish::Lobe::Phong;
+        else
+            m.bad(24, 0, "\"normal\" or \"phong\"");
+    }
 
     FrameGuard g(dyn_, dollars.get());
     materials_.push_back(spec);

@@ -203,6 +203,7 @@ class Evaluator {
                                     const FramePtr &f);
     ir::NodePtr metaCamera(const ModuleInstantiation &inst, const FramePtr &f);
     ir::NodePtr metaPointLight(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr metaAreaLight(const ModuleInstantiation &inst, const FramePtr &f);
     ir::NodePtr metaMaterial(const ModuleInstantiation &inst, const FramePtr &f);
     ir::NodePtr metaBackground(const ModuleInstantiation &inst, const FramePtr &f);
     ir::NodePtr metaRenderSettings(const ModuleInstantiation &inst, const FramePtr &f);

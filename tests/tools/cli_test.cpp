@@ -128,7 +128,8 @@ TEST_F(Cli, FailureKeepsAnExistingOutput) {
 
 TEST_F(Cli, BadOptionsAndFiles) {
     EXPECT_EQ(run("render " + scene("glass.scad") + " -W 0 -o x.png").exitCode, 2);
-    EXPECT_EQ(run("render " + scene("glass.scad") + " -s 3 -o x.png").exitCode, 2);
+    EXPECT_EQ(run("render " + scene("glass.scad") + " -s 0 -o x.png").exitCode, 2);
+    EXPECT_EQ(run("render " + scene("glass.scad") + " -s 70000 -o x.png").exitCode, 2);
     EXPECT_EQ(run("render " + scene("glass.scad") + " --bits 12 -o x.png").exitCode, 2);
     EXPECT_EQ(run("frobnicate").exitCode, 2);
     CliRun missing = run("render " + (dir / "nope.scad").string());

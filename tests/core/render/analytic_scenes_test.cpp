@@ -248,10 +248,26 @@ TEST(Renderer, RejectsAbsurdOptions) {
     o.width = 100000;
     EXPECT_THROW(validateRenderOptions(o), std::invalid_argument);
     o.width = 64;
-    o.samplesPerPixel = 5;
+    o.samplesPerPixel = 0;
     EXPECT_THROW(validateRenderOptions(o), std::invalid_argument);
-    o.samplesPerPixel = 9;
+    o.samplesPerPixel = kMaxSamplesPerPixel + 1;
+    EXPECT_THROW(validateRenderOptions(o), std::invalid_argument);
+    o.samplesPerPixel = 5;
     EXPECT_NO_THROW(validateRenderOptions(o));
+}
+
+TEST(Renderer, StrataAreTheSquarestGrid) {
+    auto grid = [](int n) {
+        int c, r;
+        strataGrid(n, c, r);
+        return std::make_pair(c, r);
+    };
+    EXPECT_EQ(grid(1), std::make_pair(1, 1));
+    EXPECT_EQ(grid(2), std::make_pair(2, 1));
+    EXPECT_EQ(grid(8), std::make_pair(4, 2));
+    EXPECT_EQ(grid(16), std::make_pair(4, 4));
+    EXPECT_EQ(grid(7), std::make_pair(7, 1));
+    EXPECT_EQ(grid(12), std::make_pair(4, 3));
 }
 
 }  // namespace

@@ -125,6 +125,31 @@ TEST(PovWriter, EveryFinishValueExplicitAndOnlyUsedMaterials) {
     EXPECT_EQ(count(t, "rgbft <1, 0, 0, 0, 0>"), 1);
 }
 
+TEST(PovWriter, AreaLightsKeepEveryGridSetting) {
+    std::string t = exportText(
+        "use <scadray.scad> cube(1);\n"
+        "area_light(position=[0,0,9], axis1=[2,0,0], axis2=[0,3,0], samples=[5,3], adaptive=1);\n"
+        "translate([1,0,0]) area_light(position=[0,0,9], axis1=[2,0,0], axis2=[0,2,0], "
+        "samples=[4,4], jitter=true, orient=true);");
+    EXPECT_EQ(count(t, "area_light <2, 0, 0>, <0, 3, 0>, 5, 3\n    adaptive 1\n}"), 1);
+    EXPECT_EQ(count(t, "<1, 0, 9>"), 1);  // moved by the transform around the call
+    EXPECT_EQ(count(t, "area_light <2, 0, 0>, <0, 2, 0>, 4, 4\n    adaptive 100\n    jitter"), 1);
+    // POV-Ray's orient works only with circular (it warns and adds it otherwise)
+    EXPECT_EQ(count(t, "    circular\n    orient\n"), 1);
+}
+
+TEST(PovWriter, BlurredMaterialsAreSharpWithAComment) {
+    std::string t = exportText(
+        "use <scadray.scad> material(reflection=0.5, glossy=4) cube(1);\n"
+        "material(transmit=0.9, ior=1.5, frosted=3, blur_lobe=\"phong\") sphere(1);");
+    EXPECT_EQ(count(t, "// scadray: glossy reflection spread 4 deg (normal lobe) cannot be "
+                       "expressed in POV-Ray 3.7; written as the sharp mirror reflection"), 1);
+    EXPECT_EQ(count(t, "// scadray: frosted refraction spread 3 deg (phong lobe) cannot be "
+                       "expressed in POV-Ray 3.7; written as the sharp refraction"), 1);
+    EXPECT_EQ(count(t, "rgb <0.5, 0.5, 0.5>, rgb <0.5, 0.5, 0.5>"), 1);  // the reflection itself stays
+    EXPECT_EQ(count(t, "ior 1.5"), 1);
+}
+
 TEST(PovWriter, IniRendersHeadlessLinear16BitSupersampled) {
     pov::IniOptions o;
     o.povFile = "a.pov";

@@ -126,6 +126,64 @@ TEST(Lights, PositionFollowsEnclosingTransforms) {
     EXPECT_EQ(r.scene.lights[1].loc.line, 4);
 }
 
+TEST(Lights, AreaLightGridAxesAndFlags) {
+    Imported r = importText(
+        kUse +
+        "translate([0, 0, 1]) rotate([0, 0, 90]) area_light(position = [1, 0, 5], axis1 = [2, 0, 0],\n"
+        "    axis2 = [0, 3, 0], samples = [5, 3], adaptive = 2, jitter = true, circular = true);\n"
+        "area_light();");
+    ASSERT_EQ(r.scene.lights.size(), 2u);
+    const ir::Light &l = r.scene.lights[0];
+    EXPECT_TRUE(l.area);
+    EXPECT_NEAR(length(l.position - Vec3(0, 1, 6)), 0, 1e-12);
+    EXPECT_NEAR(length(l.areaLight.axis1 - Vec3(0, 2, 0)), 0, 1e-12);  // axes turn with it
+    EXPECT_NEAR(length(l.areaLight.axis2 - Vec3(-3, 0, 0)), 0, 1e-12);
+    EXPECT_EQ(l.areaLight.n1, 5);
+    EXPECT_EQ(l.areaLight.n2, 3);
+    EXPECT_EQ(l.areaLight.adaptive, 2);
+    EXPECT_TRUE(l.areaLight.jitter);
+    EXPECT_TRUE(l.areaLight.circular);
+    EXPECT_FALSE(l.areaLight.orient);
+    // Defaults: POV-Ray's (no jitter, full subdivision), a 5 x 5 grid
+    const ir::Light &d = r.scene.lights[1];
+    EXPECT_EQ(d.areaLight.n1, 5);
+    EXPECT_EQ(d.areaLight.adaptive, 100);
+    EXPECT_FALSE(d.areaLight.jitter);
+}
+
+TEST(Lights, BadAreaLightArgumentsWarnOrFail) {
+    Imported r = importText(kUse + "area_light(samples = [0, 2.5], adaptive = -1);");
+    EXPECT_TRUE(r.hasWarning("area_light(): samples = [0, 2.5] is not [n1, n2]"));
+    EXPECT_TRUE(r.hasWarning("area_light(): adaptive = -1 is not a whole number from 0 to 100"));
+    EXPECT_EQ(r.scene.lights.at(0).areaLight.n1, 5);
+    try {
+        importText(kUse + "area_light(samples = [1, 4], circular = true);");
+        FAIL() << "expected EvalError";
+    } catch (const EvalError &e) {
+        EXPECT_EQ(e.loc().line, 2);
+        EXPECT_NE(std::string(e.what()).find("circular and orient need samples of at least [2, 2]"),
+                  std::string::npos);
+    }
+}
+
+TEST(Materials, GlossyFrostedAndTheirLobe) {
+    Imported r = importText(kUse +
+                            "material(reflection = 0.5, glossy = 4, frosted = 2, blur_samples = 16,"
+                            " blur_lobe = \"phong\") cube();\n"
+                            "material(glossy = 100, blur_samples = 0, blur_lobe = \"gauss\") sphere();");
+    ir::Material m = materialOf(r, 0);
+    EXPECT_EQ(m.finish.glossy, 4);
+    EXPECT_EQ(m.finish.frosted, 2);
+    EXPECT_EQ(m.finish.blurSamples, 16);
+    EXPECT_EQ(m.finish.blurLobe, ir::Finish::Lobe::Phong);
+    ir::Material bad = materialOf(r, 1);
+    EXPECT_EQ(bad.finish.glossy, 0);
+    EXPECT_EQ(bad.finish.blurSamples, 8);
+    EXPECT_EQ(bad.finish.blurLobe, ir::Finish::Lobe::Normal);
+    EXPECT_TRUE(r.hasWarning("material(): glossy = 100 is not an angle from 0 to 90 degrees"));
+    EXPECT_TRUE(r.hasWarning("material(): blur_lobe = \"gauss\" is not \"normal\" or \"phong\""));
+}
+
 TEST(Camera, TransformedFirstWinsAndLaterOnesWarn) {
     Imported r = importText(kUse +
                             "translate([0, 0, 1]) rotate([0, 0, 90]) camera(location = [0, -10, "
