@@ -18,6 +18,7 @@ int main(int argc, char **argv) {
     cli::addExportCommand(app, action);
     cli::addCompareCommand(app, action);
     cli::addCheckCommand(app, action);
+    cli::addConvergeCommand(app, action);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError &e) {
