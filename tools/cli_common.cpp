@@ -7,7 +7,9 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "core/image/image_io.h"
 #include "core/ir/scene_defaults.h"
+#include "exporters/povray/pov_writer.h"
 #include "importers/gltf/gltf_importer.h"
 #include "importers/mesh/mesh_reader.h"
 #include "importers/scad/scad_importer.h"
@@ -69,6 +71,23 @@ std::pair<std::string, std::string> parseDefine(const std::string &text) {
     if (eq == std::string::npos || eq == 0)
         throw std::invalid_argument("-D expects name=value, got '" + text + "'");
     return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+PovReference renderPovReference(const ir::Scene &scene, const std::string &dir,
+                                const std::string &stem, const std::string &sceneName, int width,
+                                int height, int supersample, int threads, int timeout) {
+    pov::IniOptions ini;
+    ini.outputFile = stem + "_povray.png";
+    ini.width = width;
+    ini.height = height;
+    ini.supersample = supersample;
+    ini.threads = threads;
+    std::filesystem::path d(dir);
+    pov::exportPov(scene, (d / (stem + ".pov")).string(), sceneName, ini);
+    PovReference r;
+    r.run = pov::runPovRay(dir, stem + ".ini", threads, timeout);
+    r.image = downsample(readImage((d / (stem + "_povray.png")).string()), supersample);
+    return r;
 }
 
 }  // namespace rt::cli

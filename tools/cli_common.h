@@ -7,8 +7,10 @@
 #include <utility>
 #include <vector>
 
+#include "core/image/image.h"
 #include "core/ir/diagnostics.h"
 #include "core/ir/scene_ir.h"
+#include "exporters/povray/pov_runner.h"
 
 namespace CLI {
 class App;
@@ -44,6 +46,17 @@ void attachPrinter(DiagnosticSink &diag, bool quiet);
 /// Reads a scene by extension (.scad) and completes it (automatic camera, default lights).
 /// Throws LocatedError for problems in the file, std::runtime_error for others.
 ir::Scene loadScene(const std::string &path, DiagnosticSink &diag, const LoadOptions &opts);
+
+/// POV-Ray's picture of a scene, as `check` and `converge` take it: exported to
+/// `dir/stem.pov` (+ .ini), rendered supersample times larger without antialiasing and
+/// box-filtered down to width x height. `sceneName` goes into the file's header comment.
+struct PovReference {
+    ImageEstimate image;
+    pov::PovRunResult run;
+};
+PovReference renderPovReference(const ir::Scene &scene, const std::string &dir,
+                                const std::string &stem, const std::string &sceneName, int width,
+                                int height, int supersample, int threads, int timeout);
 
 /// Parses "name=expr" for -D.
 std::pair<std::string, std::string> parseDefine(const std::string &text);

@@ -59,15 +59,11 @@ int runCheck(const CheckArgs &a) {
     ir::Scene scene = loadScene(a.scene.input, diag, a.scene.loadOptions(true));
 
     // POV-Ray: export, render k times larger without antialiasing, box-downsample
-    pov::IniOptions ini;
-    ini.outputFile = stem + "_povray.png";
-    ini.width = a.width;
-    ini.height = a.height;
-    ini.supersample = a.supersample;
-    ini.threads = a.threads;
-    pov::exportPov(scene, file(".pov"), fs::path(a.scene.input).filename().string(), ini);
-    pov::PovRunResult pr = pov::runPovRay(dir.string(), stem + ".ini", a.threads, a.timeout);
-    ImageEstimate reference = downsample(readImage(file("_povray.png")), a.supersample);
+    PovReference pov = renderPovReference(scene, dir.string(), stem,
+                                          fs::path(a.scene.input).filename().string(), a.width,
+                                          a.height, a.supersample, a.threads, a.timeout);
+    const pov::PovRunResult &pr = pov.run;
+    const ImageEstimate &reference = pov.image;
 
     // scadray: independent seeded batches, so the comparison knows each pixel's noise
     auto t0 = clock::now();

@@ -196,16 +196,12 @@ int runConverge(const ConvergeArgs &a) {
             std::cerr << "scadray: note: --povray: " << povNote << "\n";
         } else {
             fs::create_directories(dir);
-            pov::IniOptions ini;
-            ini.outputFile = stem + "_povray.png";
-            ini.width = a.width;
-            ini.height = a.height;
-            ini.supersample = a.supersample;
-            ini.threads = a.threads;
             say("  POV-Ray ...");
-            pov::exportPov(scene, file(".pov"), sceneName, ini);
-            pr = pov::runPovRay(dir.string(), stem + ".ini", a.threads, a.timeout);
-            povImage = downsample(readImage(file("_povray.png")), a.supersample).mean;
+            PovReference povRef = renderPovReference(scene, dir.string(), stem, sceneName,
+                                                     a.width, a.height, a.supersample, a.threads,
+                                                     a.timeout);
+            pr = povRef.run;
+            povImage = povRef.image.mean;
             say("  POV-Ray: " + fmt("%.3f", pr.wallSeconds) + " s");
         }
     }
