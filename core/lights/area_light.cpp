@@ -2,6 +2,7 @@
 // Area light grid and its recursive average.
 #include "core/lights/area_light.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rt {
@@ -105,6 +106,52 @@ Rgb AreaLightSampler::average(const std::function<Rgb(const Vec3 &)> &sample) {
     evaluated_ = 0;
     const ir::Light::Area &a = light_.areaLight;
     return region(0, 0, a.n1 - 1, a.n2 - 1, 0, sample);
+}
+
+AreaLightWeights::AreaLightWeights(const ir::Light::Area &area)
+    : n1_(area.n1), n2_(area.n2), adaptive_(area.adaptive) {
+    weights_.assign(size_t(n1_) * n2_, 0);
+    region(0, 0, n1_ - 1, n2_ - 1, 0, 1);
+    if (adapts_) {
+        weights_.clear();
+        return;
+    }
+    cdf_.resize(weights_.size());
+    double sum = 0;
+    for (size_t i = 0; i < weights_.size(); ++i) cdf_[i] = sum += weights_[i];
+    for (double &c : cdf_) c /= sum;  // sum is 1 up to rounding
+}
+
+void AreaLightWeights::region(int u1, int v1, int u2, int v2, int level, double w) {
+    if (u2 - u1 > 1 || v2 - v1 > 1) {
+        // Beyond the adaptive level the split depends on the sample values
+        if (level >= adaptive_) {
+            adapts_ = true;
+            return;
+        }
+        int uLo = (u1 + u2) / 2, uHi = (u1 + u2 + 1) / 2;
+        int vLo = (v1 + v2) / 2, vHi = (v1 + v2 + 1) / 2;
+        region(u1, v1, uLo, vLo, level + 1, w / 4);
+        region(uHi, v1, u2, vLo, level + 1, w / 4);
+        region(u1, vHi, uLo, v2, level + 1, w / 4);
+        region(uHi, vHi, u2, v2, level + 1, w / 4);
+        return;
+    }
+    for (auto [u, v] : {std::pair{u1, v1}, {u2, v1}, {u1, v2}, {u2, v2}})
+        weights_[size_t(u) * n2_ + v] += w / 4;
+}
+
+double AreaLightWeights::weight(int u, int v) const {
+    return weights_.empty() ? 0 : weights_[size_t(u) * n2_ + v];
+}
+
+void AreaLightWeights::pick(double u, int &gu, int &gv) const {
+    size_t i = std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin();
+    i = std::min(i, cdf_.size() - 1);
+    // Skip zero-weight points a rounding tie might land on
+    while (weights_[i] == 0 && i + 1 < cdf_.size()) ++i;
+    gu = static_cast<int>(i / n2_);
+    gv = static_cast<int>(i % n2_);
 }
 
 }  // namespace rt

@@ -13,6 +13,28 @@
 
 namespace rt {
 
+/// The weight POV-Ray's recursive average gives each grid point when the recursion does not
+/// depend on the samples (full subdivision: `adaptive` at least the depth the grid needs, as
+/// with POV-Ray's default 100). The average is then the fixed sum of weight x sample, so one
+/// grid point drawn with probability equal to its weight is an unbiased one-ray estimate of it.
+class AreaLightWeights {
+  public:
+    explicit AreaLightWeights(const ir::Light::Area &area);
+
+    /// False when the average adapts to the samples (low `adaptive`): no fixed weights exist.
+    bool fixed() const { return !cdf_.empty(); }
+    double weight(int u, int v) const;
+    /// The grid point whose cumulative weight interval holds u in [0, 1).
+    void pick(double u, int &gu, int &gv) const;
+
+  private:
+    void region(int u1, int v1, int u2, int v2, int level, double w);
+
+    int n1_, n2_, adaptive_;
+    bool adapts_ = false;
+    std::vector<double> weights_, cdf_;
+};
+
 class AreaLightSampler {
   public:
     /// `shadedPoint` orients the grid of an `orient` light. `rng` draws the jitter (unused

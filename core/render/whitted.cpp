@@ -40,6 +40,7 @@ WhittedIntegrator::WhittedIntegrator(const RenderScene &scene, const Vec3 &camer
     // POV-Ray's InitRayContainerState: camera rays start inside every solid holding the camera
     for (const auto &o : scene.objects())
         if (o->inside(cameraPosition)) cameraStack_.push(o.get());
+    for (const ir::Light &l : scene.lights()) areaWeights_.emplace_back(l.areaLight);
 }
 
 Rgb WhittedIntegrator::li(const Ray &cameraRay, TraceContext &ctx) const {
@@ -84,7 +85,7 @@ Rgb WhittedIntegrator::shade(const Ray &ray, const SurfaceInteraction &si, int l
     double cosI = -dot(ray.d, N);
     Rgb c = surfaceColour(m, si);
 
-    Rgb colour = localColour(ray, si, N, m, c, stack, ctx);
+    Rgb colour = localColour(ray, si, N, m, c, stack, blurred, ctx);
 
     Reflectivity refl = reflectivity(f, cosI, f.fresnel ? relativeIor(si.object, stack) : 1);
     Rgb filCol = c * m.filter + Rgb(m.transmit);
@@ -192,13 +193,14 @@ Rgb WhittedIntegrator::surfaceColour(const ir::Material &m, const SurfaceInterac
 
 Rgb WhittedIntegrator::localColour(const Ray &ray, const SurfaceInteraction &si, const Vec3 &N,
                                    const ir::Material &m, const Rgb &c, const InteriorStack &stack,
-                                   TraceContext &ctx) const {
+                                   bool blurred, TraceContext &ctx) const {
     const ir::Finish &f = m.finish;
     double a = 1 - m.filter - m.transmit;  // opacity
     Rgb colour = c * a * (scene_.settings().ambientLight * f.ambient + f.emission);
     if (f.diffuse == 0 && f.phong == 0 && f.specular == 0) return colour;
 
-    for (const ir::Light &light : scene_.lights()) {
+    for (size_t li = 0; li < scene_.lights().size(); ++li) {
+        const ir::Light &light = scene_.lights()[li];
         // Direction to the light and the distance a shadow ray covers (POV-Ray measures a
         // parallel light's distance along the beam, to the plane through its position)
         Vec3 L;
@@ -217,7 +219,7 @@ Rgb WhittedIntegrator::localColour(const Ray &ray, const SurfaceInteraction &si,
         if (cosNL < kPovEpsilon) continue;
         Rgb lc = light.color * lightAttenuation(light, L, dist);
         if (!light.shadowless && dist > 0)
-            lc = light.area ? areaShadow(si, light, lc, stack, ctx)
+            lc = light.area ? areaShadow(si, li, lc, stack, blurred, ctx)
                             : lc * shadowFilter(si, L, dist, stack, ctx);
         if (!(std::abs(lc.r) > kPovEpsilon || std::abs(lc.g) > kPovEpsilon ||
               std::abs(lc.b) > kPovEpsilon))
@@ -260,16 +262,24 @@ double WhittedIntegrator::lightAttenuation(const ir::Light &light, const Vec3 &L
     return att * lightFade(light, dist);
 }
 
-Rgb WhittedIntegrator::areaShadow(const SurfaceInteraction &si, const ir::Light &light,
-                                  const Rgb &lc, const InteriorStack &stack,
+Rgb WhittedIntegrator::areaShadow(const SurfaceInteraction &si, size_t index, const Rgb &lc,
+                                  const InteriorStack &stack, bool blurred,
                                   TraceContext &ctx) const {
+    const ir::Light &light = scene_.lights()[index];
     AreaLightSampler grid(light, si.p, ctx.rng);
-    return grid.average([&](const Vec3 &target) {
+    auto arriving = [&](const Vec3 &target) {
         Vec3 toTarget = target - si.p;
         double d = length(toTarget);
         if (!(d > 0)) return lc;
         return lc * shadowFilter(si, toTarget / d, d, stack, ctx);
-    });
+    };
+    const AreaLightWeights &weights = areaWeights_[index];
+    if (blurred && weights.fixed()) {
+        int u, v;
+        weights.pick(ctx.rng.uniform(), u, v);
+        return arriving(grid.gridTarget(u, v));
+    }
+    return grid.average(arriving);
 }
 
 Rgb WhittedIntegrator::shadowFilter(const SurfaceInteraction &si, const Vec3 &L, double dist,

@@ -4,7 +4,10 @@
 // docs/povray-semantics.md sets them out.
 #pragma once
 
+#include <vector>
+
 #include "core/geometry/shape.h"
+#include "core/lights/area_light.h"
 #include "core/math/rng.h"
 #include "core/render/interior_stack.h"
 #include "core/render/ray_stats.h"
@@ -52,7 +55,7 @@ class WhittedIntegrator {
     /// pigment colour at the hit.
     Rgb localColour(const Ray &ray, const SurfaceInteraction &si, const Vec3 &N,
                     const ir::Material &m, const Rgb &c, const InteriorStack &stack,
-                    TraceContext &ctx) const;
+                    bool blurred, TraceContext &ctx) const;
     /// Pigment colour at a hit: the material's colour times its texture, if any.
     Rgb surfaceColour(const ir::Material &m, const SurfaceInteraction &si) const;
     /// Spotlight cone and fade of a light seen in direction L at shadow distance dist.
@@ -61,10 +64,12 @@ class WhittedIntegrator {
     /// POV-Ray section 1.4. `stack` is the interior list of the ray that hit si.
     Rgb shadowFilter(const SurfaceInteraction &si, const Vec3 &L, double dist,
                      const InteriorStack &stack, TraceContext &ctx) const;
-    /// Light colour `lc` arriving at si from an area light: POV-Ray's averaged grid of
-    /// shadow rays (section 1.5).
-    Rgb areaShadow(const SurfaceInteraction &si, const ir::Light &light, const Rgb &lc,
-                   const InteriorStack &stack, TraceContext &ctx) const;
+    /// Light colour `lc` arriving at si from area light `index`: POV-Ray's averaged grid of
+    /// shadow rays (section 1.5). Below a blurred split, where the path is one of a fan
+    /// whose mean is taken, a light with fixed grid weights sends one shadow ray to a grid
+    /// point drawn by weight instead: the same expectation for a fraction of the rays.
+    Rgb areaShadow(const SurfaceInteraction &si, size_t index, const Rgb &lc,
+                   const InteriorStack &stack, bool blurred, TraceContext &ctx) const;
     /// n_transmitted / n_incident at a surface of `object`, as POV-Ray's ComputeRelativeIOR.
     double relativeIor(const Shape *object, const InteriorStack &stack) const;
     const ir::Interior &interiorOf(const Shape *object) const {
@@ -73,6 +78,8 @@ class WhittedIntegrator {
 
     const RenderScene &scene_;
     InteriorStack cameraStack_;
+    /// POV-Ray's grid weights of each light (trivial for point lights), for one-ray shadows
+    std::vector<AreaLightWeights> areaWeights_;
 };
 
 }  // namespace rt

@@ -130,5 +130,53 @@ TEST(AreaLight, JitterStaysWithinHalfACellAndRepeatsForTheSameSeed) {
     EXPECT_EQ(xs.size(), 15u);  // really jittered
 }
 
+TEST(AreaLightWeights, FixedWeightsReproduceTheRecursiveAverage) {
+    for (auto [n1, n2] : {std::pair{9, 9}, {5, 3}, {6, 6}, {1, 4}, {2, 2}, {17, 5}}) {
+        ir::Light l = areaLight(n1, n2);
+        AreaLightWeights w(l.areaLight);
+        ASSERT_TRUE(w.fixed());
+        Rng rng(1);
+        AreaLightSampler s(l, Vec3(0, 0, 0), rng);
+        // Any values: the average is the weighted sum
+        auto value = [](const Vec3 &t) { return Rgb(std::sin(3 * t.x) + t.y * t.y + 2); };
+        double sum = 0, total = 0;
+        for (int u = 0; u < n1; ++u)
+            for (int v = 0; v < n2; ++v) {
+                sum += w.weight(u, v) * value(s.gridTarget(u, v)).r;
+                total += w.weight(u, v);
+            }
+        EXPECT_NEAR(total, 1, 1e-15);
+        EXPECT_NEAR(s.average(value).r, sum, 1e-14) << n1 << "x" << n2;
+    }
+    EXPECT_DOUBLE_EQ(AreaLightWeights(areaLight(9, 9).areaLight).weight(4, 4), 1.0 / 64);
+}
+
+TEST(AreaLightWeights, PicksGridPointsInProportionToTheirWeights) {
+    ir::Light l = areaLight(5, 3);
+    AreaLightWeights w(l.areaLight);
+    std::vector<int> counts(15, 0);
+    Rng rng(2);
+    constexpr int n = 200000;
+    for (int i = 0; i < n; ++i) {
+        int u, v;
+        w.pick(rng.uniform(), u, v);
+        ++counts[u * 3 + v];
+    }
+    for (int u = 0; u < 5; ++u)
+        for (int v = 0; v < 3; ++v) {
+            double p = w.weight(u, v);
+            double sd = std::sqrt(n * p * (1 - p));
+            EXPECT_NEAR(counts[u * 3 + v], n * p, 5 * sd + 1) << u << "," << v;
+        }
+}
+
+TEST(AreaLightWeights, AnAdaptingGridHasNoFixedWeights) {
+    ir::Light l = areaLight(17, 17);
+    l.areaLight.adaptive = 2;  // 17 x 17 needs 4 levels to reach single cells
+    EXPECT_FALSE(AreaLightWeights(l.areaLight).fixed());
+    l.areaLight.adaptive = 4;
+    EXPECT_TRUE(AreaLightWeights(l.areaLight).fixed());
+}
+
 }  // namespace
 }  // namespace rt

@@ -226,5 +226,49 @@ TEST(MonteCarlo, SoftShadowPenumbraConvergesBetweenLitAndDark) {
     EXPECT_LT(meanVar[1], meanVar[0] / 8);
 }
 
+TEST(MonteCarlo, OneRayAreaShadowsBelowASplitKeepTheMean) {
+    // A glossy floor reflects a diffuse wall lit by an area light: below the glossy split each
+    // path sends one shadow ray, drawn by grid weight. A mirror (the same scene without
+    // gloss) evaluates the full grid at the wall. With a tiny spread the two must agree in
+    // the mean, while the glossy render sends far fewer shadow rays per reflected hit.
+    auto render = [](double glossy) {
+        ir::Scene s = emptyScene();
+        ir::Material floor = plainMaterial(Rgb(1));
+        floor.finish.reflectionMin = floor.finish.reflectionMax = Rgb(1);
+        floor.finish.glossy = glossy;
+        floor.finish.blurSamples = 4;
+        s.root->children.push_back(box(Vec3(-10, -10, -1), Vec3(10, 10, 0), s.addMaterial(floor)));
+        s.root->children.push_back(box(Vec3(-10, 4, 0), Vec3(10, 5, 10),
+                                       s.addMaterial(plainMaterial(Rgb(0.8), 0.1, 0.8))));
+        s.root->children.push_back(box(Vec3(-1, 1, 0), Vec3(1, 2, 3),
+                                       s.addMaterial(plainMaterial(Rgb(0.5), 0.1, 0.8))));
+        ir::Light l = pointLight(Vec3(0, -4, 6));
+        l.area = true;
+        l.areaLight.axis1 = Vec3(4, 0, 0);
+        l.areaLight.axis2 = Vec3(0, 0, 4);
+        l.areaLight.n1 = l.areaLight.n2 = 5;
+        s.lights.push_back(l);
+        s.camera = lookAt(Vec3(0, -8, 2), Vec3(0, -1, 0), 30);  // sees only the floor
+        DiagnosticSink diag;
+        auto rs = RenderScene::compile(s, diag);
+        RenderOptions o;
+        o.width = 24;
+        o.height = 16;
+        o.samplesPerPixel = 64;
+        o.threads = 2;
+        return renderImage(*rs, o);
+    };
+    RenderResult sharp = render(0), glossy = render(1e-6);
+    double a = 0, b = 0;
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 24; ++x) a += sharp.image.at(x, y).g, b += glossy.image.at(x, y).g;
+    EXPECT_NEAR(b / a, 1, 0.01);
+    // Camera rays that meet the wall or the block directly take the full 5 x 5 grid in both;
+    // reflected hits take 25 shadow rays behind the mirror, at most 1 behind the gloss
+    int64_t direct = sharp.stats.camera - sharp.stats.reflection;
+    EXPECT_LE(glossy.stats.shadow, 25 * direct + glossy.stats.distributed);
+    EXPECT_GT(sharp.stats.shadow, 25 * direct + 20 * sharp.stats.reflection);
+}
+
 }  // namespace
 }  // namespace rt
