@@ -4,9 +4,9 @@
 use <../scadray.scad>
 
 camera(location=[0, -16, 11], look_at=[0, 0, 1], fov=50);
-area_light(position=[-4, 0, 9], axis1=[3, 0, 0], axis2=[0, 3, 0], samples=[7, 7], circular=true,
+area_light(position=[-4, 0, 9], axis1=[3, 0, 0], axis2=[0, 3, 0], samples=[5, 5], circular=true,
            color=[0.5, 0.5, 0.5]);
-area_light(position=[7, -4, 4], axis1=[2, 0, 0], axis2=[0, 2, 0], samples=[6, 6], orient=true,
+area_light(position=[7, -4, 4], axis1=[2, 0, 0], axis2=[0, 2, 0], samples=[4, 4], orient=true,
            color=[0.45, 0.4, 0.35]);
 background(color=[0.1, 0.1, 0.12]);
 
