@@ -50,15 +50,19 @@ void combineSpans(const SpanList &a, const SpanList &b, SpanOp op, SpanList &out
     Span open;
     while (!ca.done() || !cb.done()) {
         double t = std::min(ca.t(), cb.t());
-        // Apply every crossing at this t (at most one per list: spans do not touch)
+        // Apply every crossing at this t (at most one per list: spans do not touch). Crossings
+        // of the two lists within tieEps count as simultaneous: coincident faces computed
+        // through different transforms land a few ulps apart, and taking them one after the
+        // other would leave a sliver span (a lid over a flush pocket, a seam between touching
+        // boxes) that depends on rounding and so on the scene's scale and position.
         const Crossing *xa = nullptr, *xb = nullptr;
         bool newA = inA, newB = inB;
-        if (!ca.done() && ca.t() == t) {
+        if (!ca.done() && (ca.t() == t || ca.t() - t <= tieEps)) {
             xa = &ca.current();
             newA = ca.insideAfter();
             ca.advance();
         }
-        if (!cb.done() && cb.t() == t) {
+        if (!cb.done() && (cb.t() == t || cb.t() - t <= tieEps)) {
             xb = &cb.current();
             newB = cb.insideAfter();
             cb.advance();

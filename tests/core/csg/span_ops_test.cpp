@@ -152,6 +152,23 @@ TEST_F(TieBreak, DifferenceWithSharedFaces) {
     EXPECT_EQ(out[0].out.leaf, high.get());
 }
 
+TEST_F(TieBreak, FacesRoundingApartCountAsCoincident) {
+    // A flush pocket: the subtrahend's exit lands one ulp before the minuend's (the faces are
+    // the same plane reached through different transforms). Within the tolerance no sliver of
+    // the minuend remains; with exact ties only, a lid 1 ulp thick would close the pocket.
+    double t1 = 0.0306, t1b = std::nextafter(t1, 0.0);
+    SpanList out;
+    combineSpans(spansOf({{-1, t1}}, high.get()), spansOf({{0.01, t1b}}, low.get()),
+                 SpanOp::Difference, out, 1e-12);
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_EQ(out[0].out.t, 0.01);
+    combineSpans(spansOf({{-1, t1}}, high.get()), spansOf({{0.01, t1b}}, low.get()),
+                 SpanOp::Difference, out, 0);
+    ASSERT_EQ(out.size(), 2u);
+    EXPECT_EQ(out[1].in.t, t1b);  // the sliver
+    EXPECT_EQ(out[1].out.t, t1);
+}
+
 TEST_F(TieBreak, CoincidentFacesIgnoreOperandOrder) {
     SpanList ab, ba;
     SpanList a = spansOf({{0, 2}}, high.get()), b = spansOf({{0, 1}}, low.get());
