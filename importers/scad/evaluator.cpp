@@ -27,6 +27,29 @@ bool isScadrayLibrary(const SourceLoc &loc) {
     return loc.file && std::filesystem::path(*loc.file).filename() == "scadray.scad";
 }
 
+/// Calls f with each value OpenSCAD's for() and each take from `seq`: the numbers of a range
+/// (none, with a warning at `loc`, when it holds `limit` or more), the items of a vector, the
+/// characters of a string, nothing for undef, and any other value itself.
+template <typename F>
+void forEachElement(Evaluator &ev, const Value &seq, uint64_t limit, const SourceLoc &loc, F &&f) {
+    if (seq.isRange()) {
+        RangeValue r = seq.toRange();
+        uint64_t n = r.numValues();
+        if (n >= limit) {
+            ev.warn(loc, "Bad range parameter in for statement: too many elements (" +
+                             std::to_string(n) + ")");
+            return;
+        }
+        for (uint64_t i = 0; i < n; ++i) f(Value::number(r.at(i)));
+    } else if (seq.isVector()) {
+        for (const auto &x : seq.toVector()) f(x);
+    } else if (seq.isString()) {
+        for (auto &ch : utf8Chars(seq.toStr())) f(Value::string(std::move(ch)));
+    } else if (!seq.isUndef()) {
+        f(seq);
+    }
+}
+
 }  // namespace
 
 Evaluator::Evaluator(DiagnosticSink &diag, EvalLimits limits) : diag_(diag), limits_(limits) {}
@@ -297,23 +320,7 @@ void Evaluator::evalElement(const Expr &e, const FramePtr &f, std::vector<Value>
                     c->set(a.name, std::move(x));
                     self(self, var + 1, c);
                 };
-                if (seq.isRange()) {
-                    uint64_t n = seq.toRange().numValues();
-                    if (n >= kMaxComprehensionRange) {
-                        warn(a.loc, "Bad range parameter in for statement: too many elements (" +
-                                        std::to_string(n) + ")");
-                        return;
-                    }
-                    RangeValue r = seq.toRange();
-                    for (uint64_t i = 0; i < n; ++i) iterate(Value::number(r.at(i)));
-                } else if (seq.isVector()) {
-                    Value keep = seq;
-                    for (const auto &x : keep.toVector()) iterate(x);
-                } else if (seq.isString()) {
-                    for (auto &ch : utf8Chars(seq.toStr())) iterate(Value::string(std::move(ch)));
-                } else if (!seq.isUndef()) {
-                    iterate(seq);
-                }
+                forEachElement(*this, seq, kMaxComprehensionRange, a.loc, iterate);
             };
             if (!lc.vars.empty()) loop(loop, 0, f);
             return;
@@ -362,23 +369,7 @@ void Evaluator::evalElement(const Expr &e, const FramePtr &f, std::vector<Value>
                 evalElement(*lc.body, f, items);
             else
                 items.push_back(eval(*lc.body, f));
-            for (auto &v : items) {
-                if (v.isVector()) {
-                    for (const auto &x : v.toVector()) push(x);
-                } else if (v.isRange()) {
-                    uint64_t n = v.toRange().numValues();
-                    if (n >= kMaxComprehensionRange) {
-                        warn(e.loc, "Bad range parameter in for statement: too many elements (" +
-                                        std::to_string(n) + ")");
-                        continue;
-                    }
-                    for (uint64_t i = 0; i < n; ++i) push(Value::number(v.toRange().at(i)));
-                } else if (v.isString()) {
-                    for (auto &ch : utf8Chars(v.toStr())) push(Value::string(std::move(ch)));
-                } else if (!v.isUndef()) {
-                    push(std::move(v));
-                }
-            }
+            for (const auto &v : items) forEachElement(*this, v, kMaxComprehensionRange, e.loc, push);
             return;
         }
         default: push(eval(e, f)); return;
@@ -914,22 +905,7 @@ void Evaluator::forLoop(const ModuleInstantiation &inst, size_t var, const Frame
         c->set(a.name, std::move(x));
         forLoop(inst, var + 1, c, out, groupPerIteration);
     };
-    if (seq.isRange()) {
-        uint64_t n = seq.toRange().numValues();
-        if (n >= kMaxModuleForRange) {
-            warn(a.loc, "Bad range parameter in for statement: too many elements (" +
-                            std::to_string(n) + ")");
-            return;
-        }
-        RangeValue r = seq.toRange();
-        for (uint64_t i = 0; i < n; ++i) iterate(Value::number(r.at(i)));
-    } else if (seq.isVector()) {
-        for (const auto &x : seq.toVector()) iterate(x);
-    } else if (seq.isString()) {
-        for (auto &ch : utf8Chars(seq.toStr())) iterate(Value::string(std::move(ch)));
-    } else if (!seq.isUndef()) {
-        iterate(seq);
-    }
+    forEachElement(*this, seq, kMaxModuleForRange, a.loc, iterate);
 }
 
 ir::NodePtr Evaluator::moduleFor(const ModuleInstantiation &inst, const FramePtr &f) {
