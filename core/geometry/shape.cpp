@@ -38,19 +38,33 @@ bool Shape::firstCrossing(const Ray &ray, double tMin, double tMax, Crossing *c,
     return true;
 }
 
+Placement::Placement(const Transform &worldFromObject)
+    : worldFromObject_(worldFromObject),
+      identity_(worldFromObject.isIdentity()),
+      conditioning_(transformConditioning(worldFromObject)) {}
+
+void Placement::surfaceToWorld(const ObjectSurface &os, SurfaceInteraction &si) const {
+    if (identity_) {
+        si.p = os.p;
+        si.pError = os.pError;
+    } else {
+        Vec3 err;
+        si.p = worldFromObject_.point(os.p, os.pError, &err);
+        si.pError = err * conditioning_;
+    }
+    si.n = normalToWorld(os.normal);
+}
+
 PrimitiveInstance::PrimitiveInstance(std::unique_ptr<Primitive> prim,
                                      const Transform &worldFromObject, int material)
     : LeafShape(material),
       prim_(std::move(prim)),
-      worldFromObject_(worldFromObject),
-      identity_(worldFromObject.isIdentity()) {
-    bounds_ = worldFromObject_.bounds(prim_->objectBounds());
-    conditioning_ = transformConditioning(worldFromObject_);
-}
+      placement_(worldFromObject),
+      bounds_(placement_.worldBounds(prim_->objectBounds())) {}
 
 bool PrimitiveInstance::lineSpan(const Ray &worldRay, Span *span) const {
     PrimitiveSpan ps;
-    if (!prim_->intersect(toObject(worldRay), &ps)) return false;
+    if (!prim_->intersect(placement_.toObject(worldRay), &ps)) return false;
     span->in = {ps.t0, this, ps.face0};
     span->out = {ps.t1, this, ps.face1};
     return true;
@@ -78,25 +92,16 @@ bool PrimitiveInstance::firstCrossing(const Ray &ray, double tMin, double tMax, 
 }
 
 bool PrimitiveInstance::inside(const Vec3 &p) const {
-    return prim_->inside(identity_ ? p : worldFromObject_.inversePoint(p));
+    return prim_->inside(placement_.pointToObject(p));
 }
 
 SurfaceInteraction PrimitiveInstance::surfaceAt(const Ray &worldRay, const Crossing &c) const {
-    Ray r = toObject(worldRay);
+    Ray r = placement_.toObject(worldRay);
     ObjectSurface os = prim_->surface(r.at(c.t), c.face);
     SurfaceInteraction si;
     si.t = c.t;
     si.leaf = this;
-    if (identity_) {
-        si.p = os.p;
-        si.pError = os.pError;
-        si.n = normalize(os.normal);
-    } else {
-        Vec3 err;
-        si.p = worldFromObject_.point(os.p, os.pError, &err);
-        si.pError = err * conditioning_;
-        si.n = normalize(worldFromObject_.normal(os.normal));
-    }
+    placement_.surfaceToWorld(os, si);
     si.ns = si.n;
     return si;
 }

@@ -89,6 +89,35 @@ class LeafShape : public Shape {
     int material_;
 };
 
+/// Where a leaf sits in the world, and what its instances need of that: rays and points into
+/// object space, surfaces back out with their error bounds grown by the transform's
+/// conditioning. The identity passes everything through untouched.
+class Placement {
+  public:
+    explicit Placement(const Transform &worldFromObject);
+
+    Ray toObject(const Ray &r) const { return identity_ ? r : worldFromObject_.inverseRay(r); }
+    Vec3 pointToObject(const Vec3 &p) const {
+        return identity_ ? p : worldFromObject_.inversePoint(p);
+    }
+    Bounds3 worldBounds(const Bounds3 &objectBounds) const {
+        return worldFromObject_.bounds(objectBounds);
+    }
+    /// Unit world normal of an object-space normal.
+    Vec3 normalToWorld(const Vec3 &n) const {
+        return normalize(identity_ ? n : worldFromObject_.normal(n));
+    }
+    /// Sets the world hit point, its error bound and the unit geometric normal of `si` from
+    /// an object-space surface point.
+    void surfaceToWorld(const ObjectSurface &os, SurfaceInteraction &si) const;
+
+  private:
+    Transform worldFromObject_;
+    bool identity_;
+    /// Error growth of a round trip through the transform (condition number estimate, >= 1).
+    double conditioning_;
+};
+
 /// An analytic primitive with its world placement and material.
 class PrimitiveInstance final : public LeafShape {
   public:
@@ -104,18 +133,10 @@ class PrimitiveInstance final : public LeafShape {
 
     /// The span of the whole world line inside this primitive.
     bool lineSpan(const Ray &worldRay, Span *span) const;
-    const Transform &worldFromObject() const { return worldFromObject_; }
 
   private:
-    Ray toObject(const Ray &r) const {
-        return identity_ ? r : worldFromObject_.inverseRay(r);
-    }
-
     std::unique_ptr<Primitive> prim_;
-    Transform worldFromObject_;
-    bool identity_;
-    /// Error growth of a round trip through the transform (condition number estimate, >= 1).
-    double conditioning_;
+    Placement placement_;
     Bounds3 bounds_;
 };
 

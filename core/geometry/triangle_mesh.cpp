@@ -168,17 +168,14 @@ MeshInstance::MeshInstance(std::shared_ptr<const TriangleMesh> mesh,
                            const Transform &worldFromObject, int material)
     : LeafShape(material),
       mesh_(std::move(mesh)),
-      worldFromObject_(worldFromObject),
-      identity_(worldFromObject.isIdentity()) {
-    bounds_ = worldFromObject_.bounds(mesh_->bounds());
-    conditioning_ = transformConditioning(worldFromObject_);
-}
+      placement_(worldFromObject),
+      bounds_(placement_.worldBounds(mesh_->bounds())) {}
 
 void MeshInstance::lineSpans(const Ray &worldRay, SpanList &out) const {
     if (!mesh_->closed()) return;
     thread_local std::vector<TriangleMesh::Hit> hits;
     hits.clear();
-    mesh_->allHits(toObject(worldRay), hits);
+    mesh_->allHits(placement_.toObject(worldRay), hits);
     std::sort(hits.begin(), hits.end(),
               [](const TriangleMesh::Hit &a, const TriangleMesh::Hit &b) { return a.t < b.t; });
     // Winding number (or parity), applying all hits at one t together: a ray through an edge
@@ -207,14 +204,14 @@ void MeshInstance::lineSpans(const Ray &worldRay, SpanList &out) const {
 bool MeshInstance::firstCrossing(const Ray &ray, double tMin, double tMax, Crossing *c,
                                  SpanScratch &) const {
     TriangleMesh::Hit hit;
-    if (!mesh_->closest(toObject(ray), tMin, tMax, &hit)) return false;
+    if (!mesh_->closest(placement_.toObject(ray), tMin, tMax, &hit)) return false;
     *c = {hit.t, this, static_cast<int>(hit.triangle), false};
     return true;
 }
 
 bool MeshInstance::inside(const Vec3 &p) const {
     if (!mesh_->closed()) return false;
-    Vec3 o = identity_ ? p : worldFromObject_.inversePoint(p);
+    Vec3 o = placement_.pointToObject(p);
     std::vector<TriangleMesh::Hit> hits;
     mesh_->allHits(Ray(o, kInsideDirection), hits);
     int count = 0;
@@ -224,7 +221,7 @@ bool MeshInstance::inside(const Vec3 &p) const {
 }
 
 SurfaceInteraction MeshInstance::surfaceAt(const Ray &worldRay, const Crossing &c) const {
-    Ray r = toObject(worldRay);
+    Ray r = placement_.toObject(worldRay);
     TriangleMesh::Hit hit;
     if (!mesh_->intersectTriangle(r, static_cast<uint32_t>(c.face), &hit)) {
         // The crossing came from this very test; only a degenerate triangle gets here
@@ -235,18 +232,8 @@ SurfaceInteraction MeshInstance::surfaceAt(const Ray &worldRay, const Crossing &
     ObjectSurface os = mesh_->surface(hit, &ns, &si.u, &si.v, &si.hasUv);
     si.t = c.t;
     si.leaf = this;
-    if (identity_) {
-        si.p = os.p;
-        si.pError = os.pError;
-        si.n = normalize(os.normal);
-        si.ns = normalize(ns);
-    } else {
-        Vec3 err;
-        si.p = worldFromObject_.point(os.p, os.pError, &err);
-        si.pError = err * conditioning_;
-        si.n = normalize(worldFromObject_.normal(os.normal));
-        si.ns = normalize(worldFromObject_.normal(ns));
-    }
+    placement_.surfaceToWorld(os, si);
+    si.ns = placement_.normalToWorld(ns);
     return si;
 }
 

@@ -77,12 +77,8 @@ class MeshInstance final : public LeafShape {
     const TriangleMesh &geometry() const { return *mesh_; }
 
   private:
-    Ray toObject(const Ray &r) const { return identity_ ? r : worldFromObject_.inverseRay(r); }
-
     std::shared_ptr<const TriangleMesh> mesh_;
-    Transform worldFromObject_;
-    bool identity_;
-    double conditioning_;
+    Placement placement_;
     Bounds3 bounds_;
 };
 
