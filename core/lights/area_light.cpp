@@ -30,8 +30,6 @@ double colourDistance(const Rgb &a, const Rgb &b) {
 AreaLightSampler::AreaLightSampler(const ir::Light &light, const Vec3 &shadedPoint, Rng &rng)
     : light_(light), rng_(rng), axis1_(light.areaLight.axis1), axis2_(light.areaLight.axis2) {
     const ir::Light::Area &a = light.areaLight;
-    grid_.resize(size_t(a.n1) * a.n2);
-    done_.assign(grid_.size(), 0);
     if (a.orient) {
         // Face the shaded point: both axes square to the direction towards the light and as
         // long as axis1
@@ -103,8 +101,11 @@ Rgb AreaLightSampler::region(int u1, int v1, int u2, int v2, int level,
 }
 
 Rgb AreaLightSampler::average(const std::function<Rgb(const Vec3 &)> &sample) {
-    evaluated_ = 0;
     const ir::Light::Area &a = light_.areaLight;
+    // The cache of grid samples is needed only here (a one-ray shadow uses gridTarget alone)
+    grid_.resize(size_t(a.n1) * a.n2);
+    done_.assign(grid_.size(), 0);
+    evaluated_ = 0;
     return region(0, 0, a.n1 - 1, a.n2 - 1, 0, sample);
 }
 

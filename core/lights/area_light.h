@@ -38,7 +38,7 @@ class AreaLightWeights {
 class AreaLightSampler {
   public:
     /// `shadedPoint` orients the grid of an `orient` light. `rng` draws the jitter (unused
-    /// without it); every grid point is drawn at most once per shaded point.
+    /// without it); within one average() every grid point is drawn at most once.
     AreaLightSampler(const ir::Light &light, const Vec3 &shadedPoint, Rng &rng);
 
     /// Target of grid point (u, v), u in [0, n1), v in [0, n2), jittered when the light is.
