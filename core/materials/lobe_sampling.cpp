@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
 
 namespace rt {
@@ -12,6 +13,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kHalfPi = kPi / 2;
+constexpr double kInverseGoldenRatio = 0.6180339887498949;
 
 }  // namespace
 
@@ -77,6 +79,12 @@ Vec3 sampleLobeAbout(const Lobe &lobe, const Vec3 &centre, const Vec3 &side, dou
     double k = dot(d, side);
     if (k <= 0) d = d - side * (2 * k);
     return normalize(d);
+}
+
+int latticeGenerator(int n) {
+    int g = std::max(1, static_cast<int>(std::lround(n * kInverseGoldenRatio)));
+    while (std::gcd(g, n) != 1) ++g;
+    return g;
 }
 
 }  // namespace rt

@@ -66,4 +66,10 @@ class Lobe {
 /// lost (the mirrored density is the lobe's folded one).
 Vec3 sampleLobeAbout(const Lobe &lobe, const Vec3 &centre, const Vec3 &side, double u1, double u2);
 
+/// Generator g of the rank-1 lattice {(i / n, i g / n mod 1)} of n points: the integer nearest
+/// n / golden ratio (for Fibonacci n the previous Fibonacci number, the best 2-D lattice),
+/// moved up to the next integer coprime to n, so that both coordinates of the n points fall
+/// in n distinct strata (10 for 16 points would leave only 8 in the second).
+int latticeGenerator(int n);
+
 }  // namespace rt

@@ -17,10 +17,6 @@ namespace {
 /// on a surface does not shadow itself (scale-free form of POV-Ray's SHADOW_TOLERANCE).
 constexpr double kShadowEpsilon = 1e-9;
 
-/// 1 / golden ratio: the generator of a rank-1 lattice of n points is the integer nearest
-/// n times this (for Fibonacci n it is the previous Fibonacci number, the best 2-D lattice).
-constexpr double kInverseGoldenRatio = 0.6180339887498949;
-
 Rgb powRgb(const Rgb &c, double e) {
     return {std::pow(c.r, e), std::pow(c.g, e), std::pow(c.b, e)};
 }
@@ -172,7 +168,7 @@ Rgb WhittedIntegrator::distribute(const ir::Finish &f, double spreadDegrees, con
     // Rank-1 lattice with a Fibonacci-like generator, shifted by a random vector (Cranley-
     // Patterson rotation): every point is uniform on its own, so the mean is unbiased, and
     // the n points are stratified in both dimensions
-    int g = std::max(1, static_cast<int>(std::lround(n * kInverseGoldenRatio)));
+    int g = latticeGenerator(n);
     double shift1 = ctx.rng.uniform(), shift2 = ctx.rng.uniform();
     Rgb sum(0);
     for (int i = 0; i < n; ++i) {

@@ -4,6 +4,7 @@
 // a deliberately wrong sampler that the same test must reject.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <vector>
@@ -174,6 +175,18 @@ TEST(LobeSampling, SmallSpreadsOfBothShapesAgree) {
         }
         EXPECT_NEAR(sum / n / (2 * deg(2) * deg(2)), 1, 0.02);
     }
+}
+
+TEST(LobeSampling, LatticePointsFillEveryStratumOfBothDimensions) {
+    for (int n = 1; n <= 256; ++n) {
+        int g = latticeGenerator(n);
+        std::vector<bool> seen(n, false);
+        for (int i = 0; i < n; ++i) seen[(int64_t(i) * g) % n] = true;
+        EXPECT_EQ(std::count(seen.begin(), seen.end(), true), n) << n << " points, generator " << g;
+    }
+    EXPECT_EQ(latticeGenerator(8), 5);    // Fibonacci: 8, 5
+    EXPECT_EQ(latticeGenerator(89), 55);  // 89, 55
+    EXPECT_EQ(latticeGenerator(16), 11);  // 10 shares the factor 2 with 16
 }
 
 TEST(LobeSampling, FrameIsOrthonormalEverywhere) {
