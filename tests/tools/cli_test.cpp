@@ -261,6 +261,28 @@ TEST_F(Cli, BrokenMeshFilesAreLocatedErrorsAndWriteNothing) {
     }
 }
 
+TEST_F(Cli, BadAreaLightIsALocatedErrorForEveryCommand) {
+    // A circular light needs a 2 x 2 grid at least: render, export and converge all stop at
+    // its line and column and write nothing
+    std::string in = write("area.scad", "use <scadray.scad>\ncube(1);\n"
+                                        "  area_light(samples=[1, 4], circular=true);\n");
+    std::string lib = " -L " + std::string(SCADRAY_SOURCE_DIR) + "/scenes";
+    for (const std::string &cmd :
+         {"render " + in + lib + " -o " + (dir / "a.png").string(),
+          "export " + in + lib + " -o " + (dir / "a.pov").string(),
+          "converge " + in + lib + " --max-samples 2 -W 8 -H 8 -o " + (dir / "conv").string()}) {
+        SCOPED_TRACE(cmd);
+        CliRun r = run(cmd);
+        EXPECT_EQ(r.exitCode, 1) << r.err;
+        EXPECT_NE(r.err.find("area.scad:3:3"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find("circular and orient need samples of at least [2, 2]"),
+                  std::string::npos) << r.err;
+    }
+    EXPECT_FALSE(fs::exists(dir / "a.png"));
+    EXPECT_FALSE(fs::exists(dir / "a.pov"));
+    EXPECT_FALSE(fs::exists(dir / "conv"));
+}
+
 TEST_F(Cli, ExportWritesMeshesAsMesh2) {
     std::string pov = (dir / "meshes.pov").string();
     CliRun r = run("export " + scene("crosscheck/meshes.scad") + " -o " + pov);

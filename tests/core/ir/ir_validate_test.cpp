@@ -69,6 +69,61 @@ TEST(IrValidate, NonFiniteLightsCameraAndMaterials) {
     }
 }
 
+/// The message of the SceneError a scene with this light and material raises ("" if none).
+std::string validationError(const ir::Light &light, const ir::Material &m = ir::Material()) {
+    ir::Scene s;
+    s.root->children.push_back(sphere(1, s.addMaterial(m)));
+    s.lights.push_back(light);
+    DiagnosticSink diag;
+    try {
+        ir::validateScene(s, diag);
+    } catch (const SceneError &e) {
+        EXPECT_EQ(e.loc().line, light.loc.line);
+        return e.what();
+    }
+    return "";
+}
+
+TEST(IrValidate, AreaLightsAndBlurredMaterialsOutOfRange) {
+    ir::Light l = pointLight(Vec3(0, 0, 5));
+    l.loc = at(4);
+    l.area = true;
+    EXPECT_EQ(validationError(l), "");
+    auto expectError = [](const std::string &got, const char *want) {
+        EXPECT_NE(got.find(want), std::string::npos) << got;
+    };
+    ir::Light bad = l;
+    bad.areaLight.axis1 = Vec3(NAN, 0, 0);
+    expectError(validationError(bad), "area light axes are not finite");
+    bad = l;
+    bad.areaLight.n1 = ir::kMaxAreaLightGrid + 1;
+    expectError(validationError(bad), "is outside 1..256 per axis");
+    bad = l;
+    bad.areaLight.n2 = 0;
+    expectError(validationError(bad), "is outside 1..256 per axis");
+    bad = l;
+    bad.areaLight.adaptive = -1;
+    expectError(validationError(bad), "adaptive must be >= 0");
+    bad = l;
+    bad.areaLight.orient = true;  // on a 1 x 1 grid
+    expectError(validationError(bad), "need at least 2x2");
+    bad = l;
+    bad.kind = ir::Light::Kind::Directional;
+    expectError(validationError(bad), "a parallel light cannot be an area light");
+    // Materials are located at their own definition
+    ir::Light plain = pointLight(Vec3(0, 0, 5));
+    ir::Material m;
+    m.loc = plain.loc;
+    m.finish.glossy = 91;
+    expectError(validationError(plain, m), "glossy and frosted spreads must be between 0 and 90");
+    m.finish.glossy = 0;
+    m.finish.frosted = NAN;
+    expectError(validationError(plain, m), "glossy and frosted spreads must be between 0 and 90");
+    m.finish.frosted = 0;
+    m.finish.blurSamples = 0;
+    expectError(validationError(plain, m), "blur_samples must be between 1 and 4096");
+}
+
 TEST(IrValidate, EmptySceneWarns) {
     ir::Scene s;
     DiagnosticSink diag;
