@@ -2,6 +2,7 @@
 // 4x4 matrix construction, products and affine inversion.
 #include "core/math/mat4.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -139,33 +140,52 @@ bool Mat4::isFinite() const {
 
 std::optional<Mat4> Mat4::affineInverse() const {
     if (!isFinite()) return std::nullopt;
-    // Cofactors of the 3x3 block
-    double c00 = m[1][1] * m[2][2] - m[1][2] * m[2][1];
-    double c01 = m[1][2] * m[2][0] - m[1][0] * m[2][2];
-    double c02 = m[1][0] * m[2][1] - m[1][1] * m[2][0];
-    double det = m[0][0] * c00 + m[0][1] * c01 + m[0][2] * c02;
-    // Singular relative to the block's scale: |det| compared with the product of row norms
-    // (Hadamard's bound), so uniform scales of 1e-6 or 1e6 stay invertible.
-    double rowNorms = 1;
-    for (int i = 0; i < 3; ++i)
-        rowNorms *= std::sqrt(m[i][0] * m[i][0] + m[i][1] * m[i][1] + m[i][2] * m[i][2]);
-    constexpr double kSingularRatio = 1e-12;  // det below this fraction of Hadamard's bound
-    if (!(rowNorms > 0) || !(std::abs(det) > kSingularRatio * rowNorms)) return std::nullopt;
+    // Write the 3x3 block as A = D U, D the diagonal of its row norms and U with unit rows, so
+    // A^-1 = U^-1 D^-1. det(U) is |det A| over Hadamard's bound: a scale-free measure of
+    // singularity, and no product of entries can overflow or underflow, so scales of 1e-150
+    // or 1e150 invert as exactly as a scale of 1.
+    double rowNorm[3];
+    double u[3][3];
+    for (int i = 0; i < 3; ++i) {
+        double big = std::max({std::abs(m[i][0]), std::abs(m[i][1]), std::abs(m[i][2])});
+        if (!(big > 0)) return std::nullopt;
+        double a = m[i][0] / big, b = m[i][1] / big, c = m[i][2] / big;
+        double n = std::sqrt(a * a + b * b + c * c);
+        rowNorm[i] = big * n;
+        if (!(rowNorm[i] > 0) || !std::isfinite(rowNorm[i])) return std::nullopt;
+        u[i][0] = a / n;
+        u[i][1] = b / n;
+        u[i][2] = c / n;
+    }
+    double c00 = u[1][1] * u[2][2] - u[1][2] * u[2][1];
+    double c01 = u[1][2] * u[2][0] - u[1][0] * u[2][2];
+    double c02 = u[1][0] * u[2][1] - u[1][1] * u[2][0];
+    double det = u[0][0] * c00 + u[0][1] * c01 + u[0][2] * c02;
+    // Below this |det U| the rows are parallel to within about 1e-12 radians: the matrix
+    // flattens space, and its inverse would amplify rounding by more than 1e12.
+    constexpr double kSingularRatio = 1e-12;
+    if (!(std::abs(det) > kSingularRatio)) return std::nullopt;
     double inv = 1.0 / det;
+    double ui[3][3];  // U^-1 = adj(U) / det(U)
+    ui[0][0] = c00 * inv;
+    ui[0][1] = (u[0][2] * u[2][1] - u[0][1] * u[2][2]) * inv;
+    ui[0][2] = (u[0][1] * u[1][2] - u[0][2] * u[1][1]) * inv;
+    ui[1][0] = c01 * inv;
+    ui[1][1] = (u[0][0] * u[2][2] - u[0][2] * u[2][0]) * inv;
+    ui[1][2] = (u[0][2] * u[1][0] - u[0][0] * u[1][2]) * inv;
+    ui[2][0] = c02 * inv;
+    ui[2][1] = (u[0][1] * u[2][0] - u[0][0] * u[2][1]) * inv;
+    ui[2][2] = (u[0][0] * u[1][1] - u[0][1] * u[1][0]) * inv;
     Mat4 r;
-    r.m[0][0] = c00 * inv;
-    r.m[0][1] = (m[0][2] * m[2][1] - m[0][1] * m[2][2]) * inv;
-    r.m[0][2] = (m[0][1] * m[1][2] - m[0][2] * m[1][1]) * inv;
-    r.m[1][0] = c01 * inv;
-    r.m[1][1] = (m[0][0] * m[2][2] - m[0][2] * m[2][0]) * inv;
-    r.m[1][2] = (m[0][2] * m[1][0] - m[0][0] * m[1][2]) * inv;
-    r.m[2][0] = c02 * inv;
-    r.m[2][1] = (m[0][1] * m[2][0] - m[0][0] * m[2][1]) * inv;
-    r.m[2][2] = (m[0][0] * m[1][1] - m[0][1] * m[1][0]) * inv;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) r.m[i][j] = ui[i][j] / rowNorm[j];
     // Translation: -A^-1 t
     Vec3 t{m[0][3], m[1][3], m[2][3]};
     for (int i = 0; i < 3; ++i)
         r.m[i][3] = -(r.m[i][0] * t.x + r.m[i][1] * t.y + r.m[i][2] * t.z);
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            if (!std::isfinite(r.m[i][j])) return std::nullopt;
     return r;
 }
 

@@ -150,6 +150,34 @@ std::unique_ptr<LoadedFile> loadFile(const std::string &path, const SourceLoc &l
             throw ParseError(loc, "invalid JSON chunk in binary glTF at its line " + m[1].str() +
                                       ", column " + m[2].str() + ": " + m[3].str());
         }
+        // A number too large for a double (1e999): nlohmann names the token but not where it
+        // is, so find its first standalone occurrence in the text
+        static const std::regex kOverflow(R"(number overflow parsing '([^']+)')");
+        if (!binary && std::regex_search(message, m, kOverflow)) {
+            std::string_view text(reinterpret_cast<const char *>(bytes.data()), bytes.size());
+            auto numberChar = [](char c) {
+                return std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == 'e' ||
+                       c == 'E' || c == '+' || c == '-';
+            };
+            const std::string token = m[1].str();
+            for (size_t at = text.find(token); at != std::string_view::npos;
+                 at = text.find(token, at + 1)) {
+                size_t end = at + token.size();
+                if ((at > 0 && numberChar(text[at - 1])) || (end < text.size() && numberChar(text[end])))
+                    continue;
+                int line = 1, col = 1;
+                for (size_t i = 0; i < at; ++i) {
+                    if (text[i] == '\n') {
+                        ++line;
+                        col = 1;
+                    } else {
+                        ++col;
+                    }
+                }
+                throw ParseError(SourceLoc(std::make_shared<const std::string>(path), line, col),
+                                 "number " + token + " is too large for a double");
+            }
+        }
         throw ParseError(loc, std::string("cannot load glTF") + (binary ? " binary (.glb)" : "") +
                                   " file: " + message);
     }

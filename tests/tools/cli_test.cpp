@@ -117,6 +117,58 @@ TEST_F(Cli, AbsurdSizesAreLocatedErrors) {
     EXPECT_EQ(run("render " + big + " -s 1000000 -o " + (dir / "b.png").string()).exitCode, 2);
 }
 
+TEST_F(Cli, BadNumbersAreLocatedNeverACrash) {
+    // Every bad number in a .scad file: either a located error with nothing written, or
+    // OpenSCAD's documented behaviour (ignore, clamp, empty geometry) with a located warning
+    // and a finite picture. The scene sits on line 2, after a sound first line.
+    struct Case {
+        const char *src;
+        int exitCode;
+        const char *message;  // expected on line 2 of the file
+    };
+    const Case cases[] = {
+        {"scale([0, 1, 1]) cube(2);", 0, "scale() is singular"},
+        {"multmatrix([[1, 0, 0, 0], [1, 0, 0, 0], [0, 0, 1, 0]]) cube();", 0, "is singular"},
+        {"multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 0]]) cube();", 1,
+         "non-affine"},
+        {"scale(1e200) cube();", 1, "beyond the supported range"},
+        {"scale(1e-200) cube();", 1, "below the supported minimum"},
+        {"translate([1e300, 0, 0]) sphere(1);", 1, "beyond the supported range"},
+        {"translate([0/0, 0, 0]) cube();", 0, "translate("},
+        {"rotate(1/0) cube();", 0, "rotate(a=inf)"},
+        {"rotate(a = 30, v = [0/0, 0, 1]) cube();", 0, "rotate("},
+        {"mirror([0/0, 0, 1]) cube();", 0, "mirror("},
+        {"multmatrix([[1, 0, 0, 1/0]]) cube();", 0, "non-finite"},
+        {"cube([1, 0/0, 1]);", 0, "empty geometry"},
+        {"sphere(-1);", 0, "empty geometry"},
+        {"cylinder(h = 1/0, r = 1);", 0, "empty geometry"},
+        {"polyhedron([[0, 0, 0/0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], "
+         "[[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]);",
+         0, "not a vector of 3 finite numbers"},
+        {"color([0/0, 1, 1]) sphere();", 0, "color()"},
+        {"camera(location = [0/0, 1, 1], look_at = [0, 0, 0]); sphere();", 0, "location = [nan"},
+        {"camera(location = [1, 1, 1], look_at = [1, 1, 1]); sphere();", 1, "the same point"},
+        {"point_light([1/0, 0, 0]); sphere();", 0, "position = [inf"},
+        {"material(ior = 0, transmit = 0.5) sphere();", 0, "ior = 0"},
+        {"material(reflection = 0/0) sphere();", 0, "reflection = nan"},
+        {"background([0/0, 0, 0]); sphere();", 0, "color = [nan"},
+        {"render_settings(max_trace_level = 0/0); sphere();", 0, "max_trace_level = nan"},
+    };
+    int n = 0;
+    for (const Case &c : cases) {
+        SCOPED_TRACE(c.src);
+        std::string name = "n" + std::to_string(n++);
+        std::string in = write(name + ".scad", std::string("include <scadray.scad> sphere(0.5);\n") + c.src + "\n");
+        std::string out = (dir / (name + ".png")).string();
+        CliRun r = run("render -W 24 -H 16 " + in + " -o " + out);
+        EXPECT_EQ(r.exitCode, c.exitCode) << r.err;
+        EXPECT_NE(r.err.find(name + ".scad:2:"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+        EXPECT_EQ(fs::exists(out), c.exitCode == 0);
+        if (c.exitCode == 0) EXPECT_NE(r.err.find("non-finite pixels: 0\n"), std::string::npos) << r.err;
+    }
+}
+
 TEST_F(Cli, FailureKeepsAnExistingOutput) {
     std::string out = (dir / "keep.png").string();
     ASSERT_EQ(run("render -q -W 16 -H 16 " + scene("csg_part.scad") + " -o " + out).exitCode, 0);

@@ -88,6 +88,27 @@ TEST(Mat4, SingularityIsRelativeToScale) {
     EXPECT_FALSE(nan.affineInverse());
 }
 
+TEST(Mat4, ExtremeScalesInvertWithoutOverflow) {
+    // det of a 1e150 or 1e300 scale overflows a double; the inverse itself is representable
+    for (double s : {1e-300, 1e-150, 1e150, 1e300}) {
+        Mat4 m = Mat4::rotateAxis(33, Vec3(1, 2, 3)) * Mat4::scale(Vec3(s, 2 * s, -s));
+        auto inv = m.affineInverse();
+        ASSERT_TRUE(inv) << s;
+        Mat4 id = *inv * m;
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) EXPECT_NEAR(id.m[i][j], i == j ? 1 : 0, 1e-14) << s;
+    }
+    // Rows parallel to within 1e-14 radians are singular at any scale; 1e-6 is not
+    for (double s : {1e-200, 1.0, 1e200}) {
+        Mat4 nearly = Mat4::identity();
+        nearly.m[0][0] = nearly.m[1][0] = s;
+        nearly.m[1][1] = 1e-14 * s;
+        EXPECT_FALSE(nearly.affineInverse()) << s;
+        nearly.m[1][1] = 1e-6 * s;
+        EXPECT_TRUE(nearly.affineInverse()) << s;
+    }
+}
+
 TEST(Transform, NormalsStayPerpendicular) {
     auto t = Transform::fromMatrix(Mat4::scale(Vec3(1, 4, 0.5)) * Mat4::rotateZ(30));
     ASSERT_TRUE(t);

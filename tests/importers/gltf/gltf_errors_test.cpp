@@ -83,6 +83,26 @@ TEST(GltfErrors, InvalidJsonIsLocatedAtItsLineAndColumn) {
     }
 }
 
+TEST(GltfErrors, OverflowingNumberIsLocated) {
+    // JSON has no inf or NaN literal; 1e999 is how one sneaks in, and it must not be 'inf'
+    TempDir tmp;
+    std::string text = replaceOnce(triangleGltf(""), R"({"mesh":0,"name":"tri"})",
+                                   "{\"mesh\":0,\n  \"scale\":[1,-1e999,1]}");
+    writeText(tmp.file("inf.gltf"), text);
+    size_t at = text.find("-1e999");
+    int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+    int col = static_cast<int>(at - text.rfind('\n', at));
+    DiagnosticSink diag;
+    try {
+        importGltf(tmp.file("inf.gltf"), diag);
+        ADD_FAILURE() << "imported without an error";
+    } catch (const ParseError &e) {
+        EXPECT_NE(std::string(e.what()).find("-1e999 is too large"), std::string::npos) << e.what();
+        EXPECT_EQ(e.loc().line, line);
+        EXPECT_EQ(e.loc().col, col);
+    }
+}
+
 TEST(GltfErrors, TruncatedGlb) {
     REQUIRE_GLTF_SAMPLE("BoxInterleaved.glb");
     TempDir tmp;
@@ -206,6 +226,20 @@ TEST(GltfErrors, ZeroScaleHidesANode) {
     ir::Scene scene = importGltf(tmp.file("flat.gltf"), diag);
     EXPECT_TRUE(instances(scene).empty());
     EXPECT_EQ(diag.countContaining("nodes[0]: its transform is singular"), 1);
+}
+
+TEST(GltfErrors, HugeAndTinyScalesAreNotSingular) {
+    // Their determinants over- or underflow a double; the transform is still invertible
+    for (const char *scale : {"[1e150,1e150,1e150]", "[1e-150,2e-150,1e-150]"}) {
+        TempDir tmp;
+        std::string text = replaceOnce(triangleGltf(""), R"({"mesh":0,"name":"tri"})",
+                                       std::string(R"({"mesh":0,"scale":)") + scale + "}");
+        writeText(tmp.file("scaled.gltf"), text);
+        DiagnosticSink diag;
+        ir::Scene scene = importGltf(tmp.file("scaled.gltf"), diag);
+        EXPECT_EQ(instances(scene).size(), 1u) << scale;
+        EXPECT_EQ(diag.countContaining("singular"), 0) << scale;
+    }
 }
 
 TEST(GltfErrors, BadOptions) {
