@@ -187,6 +187,50 @@ TEST_F(TieBreak, CoincidentFacesIgnoreOperandOrder) {
     EXPECT_EQ(i1[0].out.leaf, low.get());  // b's exit bounds the intersection
 }
 
+TEST(CsgShape, TangentSpheres) {
+    // Unit spheres at x = 0 and x = 2 touch at (1, 0, 0). Rays through and beside the point of
+    // contact: along the line of centres, and across it, exactly and 1e-9 off tangency.
+    SpanScratch scratch;
+    auto eval = [&](CsgShape::Op op, const Ray &ray) {
+        CsgShape s;
+        int a = s.addLeaf(sphereAt({0, 0, 0}, 1)), b = s.addLeaf(sphereAt({2, 0, 0}, 1));
+        s.addOp(op, {a, b});
+        SpanList out;
+        s.spans(ray, -kInfinity, kInfinity, out, scratch);
+        for (const Span &sp : out) {
+            EXPECT_TRUE(std::isfinite(sp.in.t) && std::isfinite(sp.out.t));
+            EXPECT_LT(sp.in.t, sp.out.t);
+        }
+        return out;
+    };
+    Ray centres(Vec3(-5, 0, 0), Vec3(1, 0, 0));
+    // Union: one solid from x = -1 to x = 3, not two spans with a zero-width gap
+    SpanList u = eval(CsgShape::Op::Union, centres);
+    ASSERT_EQ(u.size(), 1u);
+    EXPECT_NEAR(u[0].in.t, 4, 1e-15);
+    EXPECT_NEAR(u[0].out.t, 8, 1e-15);
+    // Difference: the second sphere only touches the first, which stays whole
+    SpanList d = eval(CsgShape::Op::Difference, centres);
+    ASSERT_EQ(d.size(), 1u);
+    EXPECT_NEAR(d[0].out.t, 6, 1e-15);
+    // Intersection: a point, no volume
+    EXPECT_TRUE(eval(CsgShape::Op::Intersection, centres).empty());
+    // Just beside the contact point the gap between the spheres (y^2 wide) is real
+    SpanList beside = eval(CsgShape::Op::Union, Ray(Vec3(-5, 1e-3, 0), Vec3(1, 0, 0)));
+    ASSERT_EQ(beside.size(), 2u);
+    EXPECT_NEAR(beside[1].in.t - beside[0].out.t, 2 * (1 - std::sqrt(1 - 1e-6)), 1e-12);
+    // Across the contact point: the line is tangent to both spheres, so nothing is hit
+    Ray across(Vec3(1, -5, 0), Vec3(0, 1, 0));
+    for (auto op : {CsgShape::Op::Union, CsgShape::Op::Difference, CsgShape::Op::Intersection})
+        EXPECT_TRUE(eval(op, across).empty());
+    // 1e-9 inside the first sphere: a chord of 2 sqrt(2e-9) through it alone
+    SpanList grazing = eval(CsgShape::Op::Union, Ray(Vec3(1 - 1e-9, -5, 0), Vec3(0, 1, 0)));
+    ASSERT_EQ(grazing.size(), 1u);
+    double chord = 2 * std::sqrt(1 - (1 - 1e-9) * (1 - 1e-9));
+    EXPECT_NEAR(grazing[0].out.t - grazing[0].in.t, chord, 1e-6 * chord);
+    EXPECT_TRUE(eval(CsgShape::Op::Intersection, Ray(Vec3(1 - 1e-9, -5, 0), Vec3(0, 1, 0))).empty());
+}
+
 TEST(CsgShape, WindowedEvaluationAgreesWithFullEvaluation) {
     Rng rng(5);
     SpanScratch scratch;

@@ -148,6 +148,47 @@ TEST(Primitives, TangentRayHasNoSpan) {
     EXPECT_TRUE(inst.lineSpan(Ray(Vec3(-5, 1 - 1e-9, 0), Vec3(1, 0, 0)), &s));
 }
 
+TEST(Primitives, GrazingChordsAreAccurateAtEveryScale) {
+    // A ray from a thousand radii away passing (1 - delta) radii from the centre. Its chord,
+    // 2 R sqrt(delta (2 - delta)), must be exact for a line within a few roundings of the
+    // given one; the textbook discriminant b^2 - 4ac is |o| / 2R = 500 times worse (~10%
+    // error at delta = 1e-9 and random misses beyond).
+    for (double radius : {1e-6, 1.0, 1e6}) {
+        Sphere sphere(radius);
+        for (double delta : {1e-3, 1e-6, 1e-9, 1e-12}) {
+            SCOPED_TRACE(::testing::Message() << "radius " << radius << ", delta " << delta);
+            double h = radius * (1 - delta);
+            // Along x, and along a skew direction in a skew plane
+            Vec3 u2 = normalize(Vec3(3, 1, 2)), v2 = normalize(cross(u2, Vec3(0, 0, 1)));
+            for (auto [u, v] : {std::pair(Vec3(1, 0, 0), Vec3(0, 1, 0)), std::pair(u2, v2)}) {
+                Ray r(u * (-1000 * radius) + v * h, u);
+                PrimitiveSpan ps;
+                ASSERT_TRUE(sphere.intersect(r, &ps));
+                // The exact chord for the line as rounded, in long double
+                long double o[3] = {r.o.x, r.o.y, r.o.z}, dd[3] = {r.d.x, r.d.y, r.d.z};
+                long double od = o[0] * dd[0] + o[1] * dd[1] + o[2] * dd[2];
+                long double d2 = dd[0] * dd[0] + dd[1] * dd[1] + dd[2] * dd[2];
+                long double dist2 = 0;
+                for (int i = 0; i < 3; ++i) {
+                    long double c = o[i] - dd[i] * od / d2;
+                    dist2 += c * c;
+                }
+                long double rr = radius;
+                double chord = static_cast<double>(2 * std::sqrt(rr * rr - dist2));
+                // Backward error bound: the chord of a line moved by a few roundings of the
+                // origin's coordinates (|o| eps), through d chord / d dist = 4 R / chord
+                double moved = 8 * length(r.o) * kMachineEpsilon;
+                double tolerance = moved * 4 * radius / chord + 1e-12 * chord;
+                EXPECT_NEAR((ps.t1 - ps.t0) * length(r.d), chord, tolerance);
+            }
+            // The same line moved out by 2 delta misses
+            PrimitiveSpan ps;
+            EXPECT_FALSE(sphere.intersect(Ray(Vec3(-1000 * radius, radius * (1 + delta), 0),
+                                              Vec3(1, 0, 0)), &ps));
+        }
+    }
+}
+
 TEST(Primitives, BoxFacesAndAxisParallelRays) {
     Box box(Vec3(0, 0, 0), Vec3(1, 2, 3));
     PrimitiveSpan ps;
