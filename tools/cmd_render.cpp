@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "core/image/image_io.h"
+#include "core/render/render_plan.h"
 #include "core/render/render_scene.h"
 #include "core/render/renderer.h"
 #include "tools/cli_common.h"
@@ -22,7 +23,8 @@ struct RenderArgs {
     std::string output;
     int width = 640, height = 480, samples = 1, threads = 0, bits = 8;
     uint64_t seed = 0;
-    bool linear = false, quiet = false;
+    bool linear = false, quiet = false, plan = false, noPlan = false;
+    bool samplesGiven = false;  ///< -s on the command line; else the plan chooses
 };
 
 std::string formatCount(int64_t n) {
@@ -51,7 +53,14 @@ int runRender(const RenderArgs &a) {
     DiagnosticSink diag;
     attachPrinter(diag, a.quiet);
     ir::Scene scene = loadScene(a.scene.input, diag, lo);
-    auto rs = RenderScene::compile(scene, diag);
+    CompileOptions co;
+    co.plan = !a.noPlan;
+    auto rs = RenderScene::compile(scene, diag, co);
+    RenderPlan plan = makePlan(*rs);
+    if (!a.samplesGiven) ro.samplesPerPixel = plan.defaultSamples;
+    if (a.plan)
+        std::fputs(describePlan(*rs, scene.stats, plan, ro.samplesPerPixel, !a.samplesGiven).c_str(),
+                   stderr);
 
     bool tty = !a.quiet && isatty(STDERR_FILENO);
     if (tty)
@@ -76,7 +85,7 @@ int runRender(const RenderArgs &a) {
         std::fprintf(stderr,
                      "scadray: %s: %dx%d, %d spp, %d objects (%zu primitives%s), %d threads, "
                      "%.3f s\n",
-                     output.c_str(), a.width, a.height, a.samples,
+                     output.c_str(), a.width, a.height, ro.samplesPerPixel,
                      static_cast<int>(rs->stats().objects), rs->stats().primitives,
                      triangles.c_str(), r.threads, r.seconds);
         std::fprintf(stderr,
@@ -105,8 +114,13 @@ void addRenderCommand(CLI::App &app, std::function<int()> &action) {
     cmd->add_option("-W,--width", args->width, "Image width in pixels")->capture_default_str();
     cmd->add_option("-H,--height", args->height, "Image height in pixels")->capture_default_str();
     cmd->add_option("-s,--samples", args->samples,
-                    "Samples per pixel, stratified; 1 = pixel centres")
-        ->capture_default_str();
+                    "Samples per pixel, stratified; 1 = pixel centres. Default: 1, or 4 where "
+                    "Monte Carlo effects need them (see --plan)");
+    cmd->add_flag("--plan", args->plan,
+                  "Print the render plan first: features in use and why, objects kept and "
+                  "dropped, the samples per pixel chosen");
+    cmd->add_flag("--no-plan", args->noPlan,
+                  "Leave nothing out and prune no CSG subtree (to measure what the plan saves)");
     cmd->add_option("--seed", args->seed, "Seed of the sample pattern")->capture_default_str();
     cmd->add_option("-t,--threads", args->threads, "Render threads (0 = all cores)")
         ->capture_default_str();
@@ -115,7 +129,10 @@ void addRenderCommand(CLI::App &app, std::function<int()> &action) {
         ->capture_default_str();
     cmd->add_flag("--linear", args->linear, "Write PNG values linear instead of sRGB");
     cmd->add_flag("-q,--quiet", args->quiet, "Only warnings and errors");
-    cmd->callback([args, &action]() { action = [args]() { return runRender(*args); }; });
+    cmd->callback([args, cmd, &action]() {
+        args->samplesGiven = cmd->count("--samples") > 0;
+        action = [args]() { return runRender(*args); };
+    });
 }
 
 }  // namespace rt::cli

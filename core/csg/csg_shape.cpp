@@ -45,6 +45,19 @@ std::unique_ptr<LeafShape> CsgShape::releaseOnlyLeaf() {
     return leaf;
 }
 
+int CsgShape::absorb(CsgShape &&other) {
+    if (other.nodes_.empty()) return -1;
+    int offset = static_cast<int>(nodes_.size());
+    for (Node &n : other.nodes_) {
+        for (int &c : n.children) c += offset;
+        nodes_.push_back(std::move(n));
+    }
+    for (auto &leaf : other.leaves_) leaves_.push_back(std::move(leaf));
+    other.nodes_.clear();
+    other.leaves_.clear();
+    return static_cast<int>(nodes_.size()) - 1;
+}
+
 void CsgShape::spans(const Ray &ray, double tMin, double tMax, SpanList &out,
                      SpanScratch &scratch) const {
     out.clear();
@@ -60,7 +73,7 @@ void CsgShape::evaluate(int index, const Ray &ray, double w0, double w1, SpanLis
                         SpanScratch &scratch) const {
     const Node &node = nodes_[index];
     out.clear();
-    if (!node.bounds.intersectP(ray, w0, w1)) {
+    if (prune_ && !node.bounds.intersectP(ray, w0, w1)) {
         ++scratch.prunedSubtrees;
         return;
     }
@@ -71,7 +84,7 @@ void CsgShape::evaluate(int index, const Ray &ray, double w0, double w1, SpanLis
     ScratchList operand(scratch), merged(scratch);
     bool first = true;
     for (int child : node.children) {
-        if (!first && node.op != Op::Union) {
+        if (prune_ && !first && node.op != Op::Union) {
             if (out.empty()) {
                 // Pruning rule: nothing left of the minuend or the intersection so far
                 ++scratch.prunedSubtrees;
@@ -91,12 +104,13 @@ void CsgShape::evaluate(int index, const Ray &ray, double w0, double w1, SpanLis
         if (operand->empty()) {
             if (node.op == Op::Intersection) {
                 out.clear();
-                return;
+                if (prune_) return;
             }
             continue;  // union or difference with nothing: unchanged
         }
-        if (out.empty() && node.op == Op::Union) {
-            out.swap(*operand);
+        if (out.empty()) {
+            // Only without pruning does an emptied intersection or difference get here
+            if (node.op == Op::Union) out.swap(*operand);
             continue;
         }
         SpanOp op = node.op == Op::Union          ? SpanOp::Union

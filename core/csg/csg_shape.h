@@ -28,6 +28,13 @@ class CsgShape final : public Shape {
     const std::vector<std::unique_ptr<LeafShape>> &leaves() const { return leaves_; }
     /// Hands over the primitive of a tree that has exactly one; the shape is empty afterwards.
     std::unique_ptr<LeafShape> releaseOnlyLeaf();
+    /// Moves another tree's nodes and primitives into this one; returns the index of its root
+    /// (-1 for an empty tree).
+    int absorb(CsgShape &&other);
+
+    /// Off: every subtree is evaluated over the whole ray, for checking that pruning by bounds
+    /// and by the rules never changes a picture.
+    void setPruning(bool on) { prune_ = on; }
 
   private:
     struct Node {
@@ -43,6 +50,7 @@ class CsgShape final : public Shape {
 
     std::vector<Node> nodes_;
     std::vector<std::unique_ptr<LeafShape>> leaves_;
+    bool prune_ = true;
 };
 
 }  // namespace rt

@@ -15,8 +15,9 @@ namespace {
 
 class Compiler {
   public:
-    Compiler(const ir::Scene &scene, DiagnosticSink &diag, CompileStats &stats)
-        : scene_(scene), diag_(diag), stats_(stats) {
+    Compiler(const ir::Scene &scene, DiagnosticSink &diag, const CompileOptions &options,
+             CompileStats &stats)
+        : scene_(scene), diag_(diag), options_(options), stats_(stats) {
         // Rank materials by value for the CSG tie-break
         std::vector<int> order(scene.materials.size());
         std::iota(order.begin(), order.end(), 0);
@@ -46,9 +47,15 @@ class Compiler {
                 return;
             }
             case ir::NodeKind::Union:
+                if (options_.plan) {
+                    splitUnion(node, m, out);
+                    return;
+                }
+                [[fallthrough]];
             case ir::NodeKind::Intersection:
             case ir::NodeKind::Difference: {
                 auto csg = std::make_unique<CsgShape>();
+                csg->setPruning(options_.plan);
                 int root = build(*csg, node, m);
                 if (root < 0) {
                     ++stats_.emptyDropped;
@@ -61,7 +68,6 @@ class Compiler {
                 }
                 requireClosedMeshes(*csg);
                 finishObject(*csg, csg->leaves());
-                ++stats_.csgObjects;
                 out.push_back(std::move(csg));
                 return;
             }
@@ -69,6 +75,85 @@ class Compiler {
     }
 
   private:
+    /// A union whose parts are disjoint needs no span merging: its surface is the surfaces of
+    /// its parts, so each part becomes a solid of its own in the BVH. Otherwise (parts that
+    /// overlap or touch, or differ in interior) the parts are merged into one CSG solid.
+    void splitUnion(const ir::Node &node, const Mat4 &m, std::vector<std::unique_ptr<Shape>> &out) {
+        std::vector<std::unique_ptr<Shape>> parts;
+        for (const auto &c : node.children) flatten(*c, m, parts);
+        if (parts.empty()) {
+            ++stats_.emptyDropped;
+            return;
+        }
+        if (parts.size() == 1 || separable(parts)) {
+            if (parts.size() > 1) ++stats_.unionsSplit;
+            for (auto &p : parts) out.push_back(std::move(p));
+            return;
+        }
+        auto csg = std::make_unique<CsgShape>();
+        std::vector<int> roots;
+        for (auto &p : parts) {
+            if (auto *c = dynamic_cast<CsgShape *>(p.get()))
+                roots.push_back(csg->absorb(std::move(*c)));
+            else
+                roots.push_back(csg->addLeaf(
+                    std::unique_ptr<LeafShape>(static_cast<LeafShape *>(p.release()))));
+        }
+        csg->addOp(CsgShape::Op::Union, std::move(roots));
+        requireClosedMeshes(*csg);
+        finishObject(*csg, csg->leaves());
+        out.push_back(std::move(csg));
+    }
+
+    /// Parts whose bounds are apart by more than the tie tolerance (touching solids fuse, so
+    /// they are not separable) and whose primitives share one interior (a CSG solid has the
+    /// interior of its first primitive).
+    bool separable(const std::vector<std::unique_ptr<Shape>> &parts) const {
+        const ir::Interior *interior = nullptr;
+        bool same = true;
+        auto checkLeaf = [&](const LeafShape &l) {
+            const ir::Interior &in = scene_.materials[l.material()].interior;
+            if (!interior) interior = &in;
+            same = same && in == *interior;
+        };
+        std::vector<Bounds3> boxes;
+        Vec3 lo(kInfinity), hi(-kInfinity);
+        for (const auto &p : parts) {
+            if (const auto *c = dynamic_cast<const CsgShape *>(p.get()))
+                for (const auto &l : c->leaves()) checkLeaf(*l);
+            else
+                checkLeaf(static_cast<const LeafShape &>(*p));
+            Bounds3 b = p->worldBounds();
+            double size = std::max({std::abs(b.min.x), std::abs(b.min.y), std::abs(b.min.z),
+                                    std::abs(b.max.x), std::abs(b.max.y), std::abs(b.max.z)});
+            double pad = 1e-9 * size;  // far above the tie tolerance, 1e-11 of the coordinates
+            b.min -= Vec3(pad);
+            b.max += Vec3(pad);
+            boxes.push_back(b);
+            lo = min(lo, (b.min + b.max) * 0.5);
+            hi = max(hi, (b.min + b.max) * 0.5);
+        }
+        if (!same) return false;
+        // Sweep along the axis where the parts spread most: each box is compared with those
+        // starting before it ends
+        Vec3 spread = hi - lo;
+        int axis = spread.x >= spread.y && spread.x >= spread.z ? 0 : spread.y >= spread.z ? 1 : 2;
+        std::vector<size_t> order(boxes.size());
+        std::iota(order.begin(), order.end(), size_t(0));
+        std::sort(order.begin(), order.end(),
+                  [&](size_t a, size_t b) { return boxes[a].min[axis] < boxes[b].min[axis]; });
+        for (size_t i = 0; i < order.size(); ++i) {
+            const Bounds3 &a = boxes[order[i]];
+            for (size_t j = i + 1; j < order.size() && boxes[order[j]].min[axis] <= a.max[axis]; ++j) {
+                const Bounds3 &b = boxes[order[j]];
+                bool apart = false;
+                for (int k = 0; k < 3; ++k) apart = apart || a.max[k] < b.min[k] || b.max[k] < a.min[k];
+                if (!apart) return false;
+            }
+        }
+        return true;
+    }
+
     bool checkTransform(const ir::Node &node, const Mat4 &m) {
         if (Transform::fromMatrix(m)) return true;
         diag_.warning(node.loc, m.isFinite()
@@ -194,6 +279,7 @@ class Compiler {
 
     const ir::Scene &scene_;
     DiagnosticSink &diag_;
+    const CompileOptions &options_;
     CompileStats &stats_;
     std::vector<int> ranks_;
     std::unordered_map<int, std::shared_ptr<const TriangleMesh>> meshes_;
@@ -201,20 +287,97 @@ class Compiler {
 
 }  // namespace
 
-std::unique_ptr<RenderScene> RenderScene::compile(const ir::Scene &scene, DiagnosticSink &diag) {
+namespace {
+
+/// Calls f for every primitive or mesh instance of a solid.
+template <typename F>
+void forEachLeaf(const Shape &object, F &&f) {
+    if (const auto *csg = dynamic_cast<const CsgShape *>(&object))
+        for (const auto &l : csg->leaves()) f(*l);
+    else
+        f(static_cast<const LeafShape &>(object));
+}
+
+/// Leaves out solids entirely behind the plane of the camera when no ray can reach them there:
+/// camera rays only go forward, nothing reflects or refracts, and every shadow ray runs from a
+/// visible point to a light in front of the camera (the half-space is convex, so the whole
+/// segment stays in it). Returns why nothing could be dropped, or "".
+std::string dropBehindCamera(const ir::Scene &scene, std::vector<std::unique_ptr<Shape>> &objects,
+                             CompileStats &stats) {
+    const ir::Camera &cam = *scene.camera;
+    Vec3 forward = normalize(cam.lookAt - cam.location);
+    auto depth = [&](const Vec3 &p) { return dot(p - cam.location, forward); };
+    auto behind = [&](const Bounds3 &b) {
+        double scale = length(b.max - b.min) + length(abs(b.max)) + length(abs(b.min)) +
+                       length(abs(cam.location));
+        for (int i = 0; i < 8; ++i) {
+            Vec3 c(i & 1 ? b.max.x : b.min.x, i & 2 ? b.max.y : b.min.y, i & 4 ? b.max.z : b.min.z);
+            if (!(depth(c) < -1e-9 * scale)) return false;
+        }
+        return true;
+    };
+    std::vector<size_t> candidates;
+    for (size_t i = 0; i < objects.size(); ++i)
+        if (behind(objects[i]->worldBounds())) candidates.push_back(i);
+    if (candidates.empty()) return "";
+
+    std::string reason;
+    for (const auto &o : objects)
+        forEachLeaf(*o, [&](const LeafShape &l) {
+            const ir::Material &m = scene.materials[l.material()];
+            if (reason.empty() && m.finish.hasReflection()) reason = "a material reflects";
+            if (reason.empty() && m.isTransparent()) reason = "a material is transparent";
+        });
+    for (const ir::Light &l : scene.lights) {
+        if (!reason.empty()) break;
+        if (l.shadowless) continue;
+        if (l.kind == ir::Light::Kind::Directional) {
+            if (dot(-normalize(l.direction), forward) < 0)
+                reason = "a parallel light shines from the front, so shadow rays run backwards";
+            continue;
+        }
+        bool front = depth(l.position) > 0;
+        if (l.area)
+            for (int i = 0; i < 4; ++i)
+                front = front && depth(l.position + l.areaLight.axis1 * ((i & 1) ? 0.5 : -0.5) +
+                                       l.areaLight.axis2 * ((i & 2) ? 0.5 : -0.5)) > 0;
+        if (!front) reason = "a light is behind the camera";
+    }
+    if (!reason.empty()) return reason;
+    for (auto it = candidates.rbegin(); it != candidates.rend(); ++it) {
+        ++stats.behindCamera;
+        stats.behindCameraPrimitives += objects[*it]->primitiveCount();
+        stats.primitives -= objects[*it]->primitiveCount();
+        objects.erase(objects.begin() + static_cast<long>(*it));
+    }
+    return "";
+}
+
+}  // namespace
+
+std::unique_ptr<RenderScene> RenderScene::compile(const ir::Scene &scene, DiagnosticSink &diag,
+                                                  const CompileOptions &options) {
     if (!scene.camera) throw SceneError({}, "scene has no camera (completeScene not applied)");
     std::unique_ptr<RenderScene> rs(new RenderScene());
+    rs->options_ = options;
     rs->materials_ = scene.materials;
     rs->textures_ = scene.textures;
     rs->lights_ = scene.lights;
     rs->camera_ = *scene.camera;
     rs->settings_ = scene.settings;
-    Compiler compiler(scene, diag, rs->stats_);
+    Compiler compiler(scene, diag, options, rs->stats_);
     compiler.flatten(*scene.root, Mat4(), rs->objects_);
+    if (options.plan)
+        rs->stats_.behindCameraKept = dropBehindCamera(scene, rs->objects_, rs->stats_);
 
+    rs->materialUsed_.assign(scene.materials.size(), false);
     std::vector<Bounds3> bounds;
     bounds.reserve(rs->objects_.size());
-    for (const auto &o : rs->objects_) bounds.push_back(o->worldBounds());
+    for (const auto &o : rs->objects_) {
+        bounds.push_back(o->worldBounds());
+        if (dynamic_cast<const CsgShape *>(o.get())) ++rs->stats_.csgObjects;
+        forEachLeaf(*o, [&](const LeafShape &l) { rs->materialUsed_[l.material()] = true; });
+    }
     rs->bvh_ = Bvh(bounds);
     rs->stats_.objects = rs->objects_.size();
     rs->stats_.bvhDepth = rs->bvh_.depth();

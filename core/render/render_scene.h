@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "core/bvh/bvh.h"
@@ -13,12 +14,25 @@
 
 namespace rt {
 
+/// What the compiler may leave out (the render plan). Every saving keeps the picture: tests
+/// render with the plan on and off and compare.
+struct CompileOptions {
+    /// Off: unions are always span-merged, objects behind the camera are kept and CSG subtrees
+    /// are never pruned, as a naive renderer would; for measuring and testing the plan.
+    bool plan = true;
+};
+
 struct CompileStats {
     size_t objects = 0;         ///< top-level solids
     size_t primitives = 0;      ///< primitives and mesh instances in them
     size_t triangles = 0;       ///< triangles of the distinct meshes
     size_t csgObjects = 0;      ///< solids that need span merging
     size_t emptyDropped = 0;    ///< subtrees with no volume (empty operands, singular transforms)
+    size_t unionsSplit = 0;     ///< unions of disjoint parts rendered as separate solids
+    size_t behindCamera = 0;    ///< objects no ray can reach: behind the camera, nothing reflects
+    size_t behindCameraPrimitives = 0;
+    /// Why objects behind the camera had to be kept (empty when none were, or none are behind)
+    std::string behindCameraKept;
     int bvhDepth = 0;
 };
 
@@ -26,7 +40,8 @@ class RenderScene {
   public:
     /// Builds render objects from a complete scene (ir::completeScene already applied: it must
     /// have a camera). Singular transforms and empty operands are dropped with a located warning.
-    static std::unique_ptr<RenderScene> compile(const ir::Scene &scene, DiagnosticSink &diag);
+    static std::unique_ptr<RenderScene> compile(const ir::Scene &scene, DiagnosticSink &diag,
+                                                const CompileOptions &options = {});
 
     /// Closest surface crossing with tMin < t < tMax. On a miss only si->tie is set: whether the
     /// ray passed coincident faces that cancelled (a zero-thickness face).
@@ -44,6 +59,9 @@ class RenderScene {
     const std::vector<std::unique_ptr<Shape>> &objects() const { return objects_; }
     const Bvh &bvh() const { return bvh_; }
     const CompileStats &stats() const { return stats_; }
+    const CompileOptions &options() const { return options_; }
+    /// Whether some rendered primitive uses the material.
+    bool materialUsed(int index) const { return materialUsed_[index]; }
     /// World bounds of everything renderable.
     Bounds3 bounds() const;
 
@@ -58,6 +76,8 @@ class RenderScene {
     ir::Camera camera_;
     ir::Settings settings_;
     CompileStats stats_;
+    CompileOptions options_;
+    std::vector<bool> materialUsed_;
 };
 
 }  // namespace rt

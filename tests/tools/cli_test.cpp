@@ -165,8 +165,34 @@ TEST_F(Cli, BadNumbersAreLocatedNeverACrash) {
         EXPECT_NE(r.err.find(name + ".scad:2:"), std::string::npos) << r.err;
         EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
         EXPECT_EQ(fs::exists(out), c.exitCode == 0);
-        if (c.exitCode == 0) EXPECT_NE(r.err.find("non-finite pixels: 0\n"), std::string::npos) << r.err;
+        if (c.exitCode == 0) {
+            EXPECT_NE(r.err.find("non-finite pixels: 0\n"), std::string::npos) << r.err;
+        }
     }
+}
+
+TEST_F(Cli, PlanIsPrintedBeforeRendering) {
+    std::string out = (dir / "p.png").string();
+    CliRun r = run("render --plan -W 32 -H 24 " + scene("print_plate.scad") + " -o " + out);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    size_t plan = r.err.find("plan:\n"), summary = r.err.find("scadray: " + out);
+    ASSERT_NE(plan, std::string::npos) << r.err;
+    ASSERT_NE(summary, std::string::npos) << r.err;
+    EXPECT_LT(plan, summary);
+    EXPECT_NE(r.err.find("dropped: 1 behind the camera"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("samples: 1 per pixel (chosen: "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(", 1 spp,"), std::string::npos) << r.err;
+    // A Monte Carlo scene chooses 4 samples; -s overrides
+    CliRun mc = run("render --plan -W 16 -H 12 " + scene("montecarlo/glossy.scad") + " -o " + out);
+    EXPECT_NE(mc.err.find("samples: 4 per pixel (chosen: Monte Carlo"), std::string::npos) << mc.err;
+    EXPECT_NE(mc.err.find(", 4 spp,"), std::string::npos) << mc.err;
+    CliRun given = run("render --plan -s 2 -W 16 -H 12 " + scene("montecarlo/glossy.scad") + " -o " + out);
+    EXPECT_NE(given.err.find("samples: 2 per pixel (given)"), std::string::npos) << given.err;
+    // Without the plan nothing is left out
+    CliRun naive = run("render --plan --no-plan -W 16 -H 12 " + scene("print_plate.scad") + " -o " + out);
+    EXPECT_NE(naive.err.find("plan (disabled"), std::string::npos) << naive.err;
+    EXPECT_NE(naive.err.find("dropped: 0 behind the camera"), std::string::npos) << naive.err;
+    EXPECT_NE(naive.err.find("0 pruned subtrees"), std::string::npos) << naive.err;
 }
 
 TEST_F(Cli, FailureKeepsAnExistingOutput) {

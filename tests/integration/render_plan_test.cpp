@@ -1,0 +1,275 @@
+// SPDX-License-Identifier: MIT
+// The render plan: scenes cast only the rays they need, the plan's savings (unions split into
+// disjoint parts, objects behind the camera dropped, CSG subtrees pruned) never change a
+// picture, and the default sample count follows from whether any effect is Monte Carlo.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "core/ir/scene_defaults.h"
+#include "core/render/render_plan.h"
+#include "core/render/render_scene.h"
+#include "core/render/renderer.h"
+#include "importers/scad/scad_importer.h"
+
+namespace rt {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Compiled {
+    ir::Scene scene;
+    std::unique_ptr<RenderScene> rs;
+};
+
+Compiled compileScene(ir::Scene source, bool plan) {
+    Compiled c{std::move(source), nullptr};
+    DiagnosticSink diag;
+    ir::completeScene(c.scene, diag);
+    CompileOptions co;
+    co.plan = plan;
+    c.rs = RenderScene::compile(c.scene, diag, co);
+    return c;
+}
+
+scad::ImportOptions libraryOptions() {
+    scad::ImportOptions io;
+    io.libraryPaths = {std::string(SCADRAY_SOURCE_DIR) + "/scenes"};
+    return io;
+}
+
+ir::Scene load(const std::string &path) {
+    DiagnosticSink diag;
+    return scad::importScad(path, diag, libraryOptions());
+}
+
+ir::Scene loadText(const std::string &text) {
+    DiagnosticSink diag;
+    return scad::importScadSource("use <scadray.scad>\n" + text,
+                                  std::string(SCADRAY_SOURCE_DIR) + "/scenes/test.scad", diag,
+                                  libraryOptions());
+}
+
+std::string scene(const std::string &name) { return std::string(SCADRAY_SOURCE_DIR) + "/scenes/" + name; }
+
+RenderResult render(const RenderScene &rs, int spp = 1, int width = 96, int height = 72) {
+    RenderOptions o;
+    o.width = width;
+    o.height = height;
+    o.samplesPerPixel = spp;
+    o.threads = 2;
+    return renderImage(rs, o);
+}
+
+/// Largest channel difference between two pictures of the same size.
+double maxDifference(const Image &a, const Image &b) {
+    double d = 0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x) {
+            Rgb p = a.at(x, y), q = b.at(x, y);
+            d = std::max({d, std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b)});
+        }
+    return d;
+}
+
+TEST(RenderPlan, OnlyTheRaysTheMaterialsNeed) {
+    // No transparent material: no refraction, transmission or internal reflection rays; no
+    // reflective one: no reflection rays; nothing glossy, frosted or jittered: no distributed
+    for (const char *name : {"csg_part.scad", "lecture_csg.scad", "openscad_model.scad", "print_plate.scad"}) {
+        SCOPED_TRACE(name);
+        Compiled c = compileScene(load(scene(name)), true);
+        RenderResult r = render(*c.rs, 4);
+        EXPECT_GT(r.stats.camera, 0);
+        EXPECT_GT(r.stats.shadow, 0);
+        EXPECT_EQ(r.stats.refraction, 0);
+        EXPECT_EQ(r.stats.transmission, 0);
+        EXPECT_EQ(r.stats.internalReflection, 0);
+        EXPECT_EQ(r.stats.reflection, 0);
+        EXPECT_EQ(r.stats.distributed, 0);
+        EXPECT_FALSE(makePlan(*c.rs).monteCarlo);
+    }
+    // The glass scene needs them, and says so
+    Compiled glass = compileScene(load(scene("glass.scad")), true);
+    RenderResult g = render(*glass.rs);
+    EXPECT_GT(g.stats.refraction, 0);
+    EXPECT_GT(g.stats.reflection, 0);
+    EXPECT_EQ(g.stats.distributed, 0);
+}
+
+TEST(RenderPlan, ShadowlessAndBackFacingLightsCastNoShadowRays) {
+    const std::string body = "camera(location=[0, -8, 3], look_at=[0, 0, 0]);\n"
+                             "material(color=\"white\") translate([-5, -5, -1]) cube([10, 10, 1]);\n"
+                             "material(color=\"red\") sphere(1);\n";
+    // A shadowless light, and a light below the floor (behind every surface the camera sees,
+    // except the underside of the sphere, which is hidden by the floor)
+    Compiled shadowless = compileScene(loadText(body + "point_light([3, -3, 6], shadowless=true);"), true);
+    EXPECT_EQ(render(*shadowless.rs).stats.shadow, 0);
+    Compiled below = compileScene(loadText(body + "point_light([0, 0, -20]);"), true);
+    EXPECT_EQ(render(*below.rs).stats.shadow, 0);
+    Compiled lit = compileScene(loadText(body + "point_light([3, -3, 6]);"), true);
+    EXPECT_GT(render(*lit.rs).stats.shadow, 0);
+}
+
+TEST(RenderPlan, SharpSceneIsTheSameAtOneAndSixteenSamplesAwayFromEdges) {
+    Compiled c = compileScene(load(scene("csg_part.scad")), true);
+    RenderPlan plan = makePlan(*c.rs);
+    EXPECT_EQ(plan.defaultSamples, 1);
+    RenderResult one = render(*c.rs, 1, 160, 120), sixteen = render(*c.rs, 16, 160, 120);
+    EXPECT_EQ(one.stats.distributed, 0);
+    EXPECT_EQ(sixteen.stats.distributed, 0);
+    EXPECT_EQ(sixteen.stats.camera, 16 * one.stats.camera);
+    // Away from edges (the 5x5 neighbourhood of the 1-sample picture varies by less than 1 %)
+    // more samples only average a smooth shading over the pixel: no noise to remove
+    int smooth = 0, differing = 0;
+    for (int y = 2; y < 118; ++y)
+        for (int x = 2; x < 158; ++x) {
+            double lo = 1e9, hi = -1e9;
+            for (int dy = -2; dy <= 2; ++dy)
+                for (int dx = -2; dx <= 2; ++dx) {
+                    Rgb p = one.image.at(x + dx, y + dy);
+                    lo = std::min({lo, p.r, p.g, p.b});
+                    hi = std::max({hi, p.r, p.g, p.b});
+                }
+            if (hi - lo > 0.01) continue;
+            ++smooth;
+            Rgb p = one.image.at(x, y), q = sixteen.image.at(x, y);
+            differing += std::max({std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b)}) > 1.0 / 1024;
+        }
+    EXPECT_GT(smooth, 160 * 120 / 4);
+    EXPECT_EQ(differing, 0) << "of " << smooth;
+}
+
+TEST(RenderPlan, MonteCarloScenesGetMoreSamples) {
+    for (const char *name : {"montecarlo/glossy.scad", "montecarlo/frosted.scad",
+                             "crosscheck/soft_shadows_jitter.scad"}) {
+        Compiled c = compileScene(load(scene(name)), true);
+        RenderPlan plan = makePlan(*c.rs);
+        EXPECT_TRUE(plan.monteCarlo) << name;
+        EXPECT_EQ(plan.defaultSamples, 4) << name;
+    }
+    // A grid area light without jitter is deterministic
+    Compiled grid = compileScene(load(scene("crosscheck/soft_shadows_grid.scad")), true);
+    EXPECT_FALSE(makePlan(*grid.rs).monteCarlo);
+}
+
+TEST(RenderPlan, NeverChangesThePicture) {
+    // Every scene, rendered with the plan (unions split, hidden objects dropped, CSG pruned)
+    // and without: the same picture, the same tie pixels
+    int scenes = 0;
+    for (const char *dir : {"", "crosscheck", "stiff", "montecarlo"}) {
+        for (const auto &e : fs::directory_iterator(scene(dir))) {
+            if (e.path().extension() != ".scad" || e.path().filename() == "scadray.scad") continue;
+            SCOPED_TRACE(e.path().string());
+            Compiled with = compileScene(load(e.path().string()), true);
+            Compiled without = compileScene(load(e.path().string()), false);
+            RenderResult a = render(*with.rs, 1, 64, 48), b = render(*without.rs, 1, 64, 48);
+            EXPECT_EQ(maxDifference(a.image, b.image), 0);
+            EXPECT_EQ(maxDifference(a.ties, b.ties), 0);
+            EXPECT_EQ(b.stats.prunedSubtrees, 0);
+            EXPECT_LE(a.stats.spanOps, b.stats.spanOps);
+            EXPECT_EQ(a.stats.totalRays(), b.stats.totalRays());
+            ++scenes;
+        }
+    }
+    EXPECT_GE(scenes, 30);
+}
+
+TEST(RenderPlan, PrintPlateSplitsItsUnionAndDropsTheSpool) {
+    Compiled with = compileScene(load(scene("print_plate.scad")), true);
+    Compiled without = compileScene(load(scene("print_plate.scad")), false);
+    const CompileStats &s = with.rs->stats();
+    EXPECT_EQ(s.unionsSplit, 1u);
+    EXPECT_EQ(s.behindCamera, 1u);
+    EXPECT_EQ(s.objects, 49u);  // 48 parts and the plate
+    EXPECT_EQ(s.csgObjects, 48u);
+    EXPECT_EQ(without.rs->stats().objects, 3u);
+    EXPECT_EQ(without.rs->stats().behindCamera, 0u);
+    RenderResult a = render(*with.rs), b = render(*without.rs);
+    EXPECT_EQ(maxDifference(a.image, b.image), 0);
+    // Span merging only within the part a ray meets
+    EXPECT_LT(a.stats.spanOps * 2, b.stats.spanOps);
+}
+
+TEST(RenderPlan, WhatMayBeDroppedBehindTheCamera) {
+    // Camera at the origin looking along +y; a red box behind it, a sphere in front
+    const std::string base = "camera(location=[0, 0, 1], look_at=[0, 10, 1]);\n"
+                             "material(color=\"white\") translate([-5, 5, -1]) cube([10, 10, 1]);\n"
+                             "translate([0, 10, 1]) sphere(1);\n";
+    struct Case {
+        std::string extra;
+        size_t dropped;
+        const char *reason;
+    };
+    const Case cases[] = {
+        {"point_light([2, 4, 6]); material(color=\"red\") translate([-1, -6, 0]) cube(2);", 1, ""},
+        // A shadowless light behind the camera casts no shadow rays
+        {"point_light([2, 4, 6]); point_light([0, -20, 6], shadowless=true);"
+         "material(color=\"red\") translate([-1, -6, 0]) cube(2);",
+         1, ""},
+        {"point_light([0, -20, 6]); material(color=\"red\") translate([-1, -6, 0]) cube(2);", 0,
+         "a light is behind the camera"},
+        {"point_light([2, 4, 6]); material(color=\"red\") translate([-1, -6, 0]) cube(2);"
+         "material(reflection=0.5) translate([3, 8, 0]) cube(1);",
+         0, "a material reflects"},
+        {"point_light([2, 4, 6]); material(color=\"red\", transmit=0.5) translate([-1, -6, 0]) cube(2);",
+         0, "a material is transparent"},
+        // Straddling the camera plane: kept
+        {"point_light([2, 4, 6]); material(color=\"red\") translate([-1, -1, 0]) cube(2);", 0, ""},
+    };
+    for (const Case &c : cases) {
+        SCOPED_TRACE(c.extra);
+        Compiled with = compileScene(loadText(base + c.extra), true);
+        Compiled without = compileScene(loadText(base + c.extra), false);
+        EXPECT_EQ(with.rs->stats().behindCamera, c.dropped);
+        EXPECT_EQ(with.rs->stats().behindCameraKept, c.reason);
+        EXPECT_EQ(maxDifference(render(*with.rs).image, render(*without.rs).image), 0);
+    }
+}
+
+TEST(RenderPlan, UnionsSplitOnlyIntoDisjointPartsWithOneInterior) {
+    struct Case {
+        const char *src;
+        size_t objects, csg;
+    };
+    const Case cases[] = {
+        {"union() { sphere(1); translate([3, 0, 0]) sphere(1); translate([6, 0, 0]) cube(1); }", 3, 0},
+        // Touching boxes fuse: one solid without an inner face
+        {"union() { cube(1); translate([1, 0, 0]) cube(1); }", 1, 1},
+        {"union() { sphere(1); translate([1.5, 0, 0]) sphere(1); }", 1, 1},
+        // Disjoint glass parts of different ior: a CSG solid has one interior, so not split
+        {"union() { material(transmit=0.9, ior=1.5) sphere(1);"
+         " material(transmit=0.9, ior=1.2) translate([3, 0, 0]) sphere(1); }",
+         1, 1},
+        {"material(transmit=0.9, ior=1.5) union() { sphere(1); translate([3, 0, 0]) sphere(1); }", 2, 0},
+        // Nested: the inner union's parts are disjoint from each other and from the difference
+        {"union() { difference() { cube(2); sphere(1); } translate([5, 0, 0]) union() { sphere(1);"
+         " translate([3, 0, 0]) sphere(1); } }",
+         3, 1},
+    };
+    for (const Case &c : cases) {
+        SCOPED_TRACE(c.src);
+        std::string src = std::string("point_light([3, -8, 6]);\n") + c.src;
+        Compiled with = compileScene(loadText(src), true), without = compileScene(loadText(src), false);
+        EXPECT_EQ(with.rs->stats().objects, c.objects);
+        EXPECT_EQ(with.rs->stats().csgObjects, c.csg);
+        EXPECT_EQ(maxDifference(render(*with.rs).image, render(*without.rs).image), 0);
+    }
+}
+
+TEST(RenderPlan, DescribesItself) {
+    Compiled c = compileScene(load(scene("print_plate.scad")), true);
+    RenderPlan plan = makePlan(*c.rs);
+    std::string text = describePlan(*c.rs, c.scene.stats, plan, plan.defaultSamples, true);
+    for (const char *part : {"shadows: rays towards 1 of 2 lights (1 shadowless: none)",
+                             "no material reflects: no reflection rays",
+                             "no material is transparent: no refraction",
+                             "no distributed rays", "49 solids kept (48 with CSG span merging",
+                             "1 union of disjoint parts split", "dropped: 1 behind the camera",
+                             "1 unused material (of 3)", "BVH over 49 solids",
+                             "samples: 1 per pixel (chosen: "})
+        EXPECT_NE(text.find(part), std::string::npos) << part << " not in:\n" << text;
+}
+
+}  // namespace
+}  // namespace rt
