@@ -152,7 +152,8 @@ class Writer {
     }
 
     void materials() {
-        os_ << "// Materials: every pigment and finish value explicit (POV-Ray's defaults differ)\n";
+        os_ << "// Materials: pigment explicit; finish terms that have an effect (ambient and diffuse\n"
+               "// always: POV-Ray's defaults differ)\n";
         for (int i : used_) {
             const ir::Material &m = scene_.materials[i];
             const ir::Finish &f = m.finish;
@@ -172,27 +173,39 @@ class Writer {
                 os_ << "    pigment { rgbft <" << num(m.color.r) << ", " << num(m.color.g) << ", "
                     << num(m.color.b) << ", " << num(m.filter) << ", " << num(m.transmit) << "> }\n";
             }
-            os_
-                << "    finish {\n"
-                << "        ambient " << num(f.ambient) << "\n"
-                << "        emission " << rgb(f.emission) << "\n"
-                << "        diffuse " << num(f.diffuse) << "\n"
-                << "        brilliance " << num(f.brilliance) << "\n"
-                << "        phong " << num(f.phong) << "\n"
-                << "        phong_size " << num(f.phongSize) << "\n"
-                << "        specular " << num(f.specular) << "\n"
-                << "        roughness " << num(f.roughness) << "\n"
-                << "        metallic " << num(f.metallic) << "\n"
-                << "        reflection {\n"
-                << "            " << rgb(f.reflectionMin) << ", " << rgb(f.reflectionMax) << "\n"
-                << "            fresnel " << (f.fresnel ? "on" : "off") << "\n"
-                << "            falloff " << num(f.reflectionFalloff) << "\n"
-                << "            exponent " << num(f.reflectionExponent) << "\n"
-                << "        }\n";
-            if (f.conserveEnergy) os_ << "        conserve_energy\n";
-            os_ << "    }\n}\n";
+            finish(f);
+            os_ << "}\n";
         }
         os_ << "\n";
+    }
+
+    /// The finish terms that have an effect. ambient and diffuse always (POV-Ray's defaults,
+    /// 0.1 and 0.6, differ from the IR's); the rest only where they change the picture: a
+    /// term at POV-Ray's default (emission 0, phong 0, specular 0, no reflection) is left
+    /// out, and so are the parameters of a term that is off (phong_size without phong,
+    /// roughness without specular, metallic without highlights, brilliance without diffuse).
+    void finish(const ir::Finish &f) {
+        os_ << "    finish {\n"
+            << "        ambient " << num(f.ambient) << "\n";
+        if (!f.emission.isBlack()) os_ << "        emission " << rgb(f.emission) << "\n";
+        os_ << "        diffuse " << num(f.diffuse) << "\n";
+        if (f.diffuse != 0 && f.brilliance != 1) os_ << "        brilliance " << num(f.brilliance) << "\n";
+        if (f.phong != 0) os_ << "        phong " << num(f.phong) << "\n";
+        if (f.phong != 0 && f.phongSize != 40) os_ << "        phong_size " << num(f.phongSize) << "\n";
+        if (f.specular != 0) os_ << "        specular " << num(f.specular) << "\n";
+        if (f.specular != 0 && f.roughness != 0.05) os_ << "        roughness " << num(f.roughness) << "\n";
+        if ((f.phong != 0 || f.specular != 0) && f.metallic != 0)
+            os_ << "        metallic " << num(f.metallic) << "\n";
+        if (f.hasReflection()) {
+            os_ << "        reflection {\n"
+                << "            " << rgb(f.reflectionMin) << ", " << rgb(f.reflectionMax) << "\n";
+            if (f.fresnel) os_ << "            fresnel on\n";
+            if (f.reflectionFalloff != 1) os_ << "            falloff " << num(f.reflectionFalloff) << "\n";
+            if (f.reflectionExponent != 1) os_ << "            exponent " << num(f.reflectionExponent) << "\n";
+            os_ << "        }\n";
+        }
+        if (f.conserveEnergy) os_ << "        conserve_energy\n";
+        os_ << "    }\n";
     }
 
     /// POV-Ray 3.7 has no blurred reflection or refraction: the nearest equivalent is the sharp

@@ -38,25 +38,18 @@ light_source {
     shadowless
 }
 
-// Materials: every pigment and finish value explicit (POV-Ray's defaults differ)
+// Materials: pigment explicit; finish terms that have an effect (ambient and diffuse
+// always: POV-Ray's defaults differ)
 // golden.scad:8:1
 #declare Material_0 = texture {
     pigment { rgbft <1, 0, 0, 0, 0> }
     finish {
         ambient 0.15
-        emission rgb <0, 0, 0>
         diffuse 0.75
-        brilliance 1
         phong 0.5
-        phong_size 40
-        specular 0
-        roughness 0.05
-        metallic 0
         reflection {
             rgb <0.1, 0.1, 0.1>, rgb <0.6, 0.6, 0.6>
             fresnel on
-            falloff 1
-            exponent 1
         }
     }
 }
@@ -65,20 +58,7 @@ light_source {
     pigment { rgbft <1, 1, 1, 0, 0.9> }
     finish {
         ambient 0.15
-        emission rgb <0, 0, 0>
         diffuse 0.75
-        brilliance 1
-        phong 0
-        phong_size 40
-        specular 0
-        roughness 0.05
-        metallic 0
-        reflection {
-            rgb <0, 0, 0>, rgb <0, 0, 0>
-            fresnel off
-            falloff 1
-            exponent 1
-        }
     }
 }
 

@@ -114,14 +114,47 @@ TEST(PovWriter, NoSingleChildCsgAndTransformsCompose) {
     EXPECT_NE(t.find("matrix <0, 1, 0,  -1, 0, 0,  0, 0, 1,  1, 0, 0>"), std::string::npos) << t;
 }
 
-TEST(PovWriter, EveryFinishValueExplicitAndOnlyUsedMaterials) {
-    std::string t = exportText("use <scadray.scad> color(\"red\") cube(1); material(phong=0.3) "
-                               "intersection() { sphere(1); translate([5,0,0]) sphere(1); }");
-    for (const char *kw : {"ambient", "emission", "diffuse", "brilliance", "phong", "phong_size",
-                           "specular", "roughness", "metallic", "reflection {", "fresnel", "falloff",
-                           "exponent"})
-        EXPECT_GE(count(t, std::string("        ") + kw), 2) << kw;
-    EXPECT_EQ(count(t, "#declare Material_"), 2);
+/// The finish block of the material declared `index`-th.
+std::string finishOf(const std::string &t, int index) {
+    size_t at = t.find("#declare Material_" + std::to_string(index) + " = texture");
+    if (at == std::string::npos) return "";
+    size_t begin = t.find("finish {", at), end = t.find("\n    }\n", begin);
+    return t.substr(begin, end - begin);
+}
+
+TEST(PovWriter, FinishTermsOnlyWhereTheyHaveAnEffectAndOnlyUsedMaterials) {
+    std::string t = exportText(
+        "use <scadray.scad> color(\"red\") cube(1);\n"
+        "material(phong=0.3) translate([3,0,0]) sphere(1);\n"
+        "material(phong=0.3, phong_size=10, specular=0.2, roughness=0.01, metallic=0.5, "
+        "brilliance=2, emission=0.2, reflection=[0.1, 0.5], fresnel=true, reflection_falloff=2, "
+        "reflection_exponent=0.8, conserve_energy=true) translate([6,0,0]) sphere(1);\n"
+        "material(diffuse=0, brilliance=3, roughness=0.2, metallic=1) translate([9,0,0]) sphere(1);\n"
+        "%material(color=\"blue\") translate([12,0,0]) sphere(1);\n"
+        "material(color=\"green\", reflection=0.4) intersection() { sphere(1); "
+        "translate([5,0,0]) sphere(1); }");
+    // ambient and diffuse always: POV-Ray's defaults (0.1, 0.6) differ from ours
+    EXPECT_EQ(count(t, "        ambient "), 5);
+    EXPECT_EQ(count(t, "        diffuse "), 5);
+    // Nothing at POV-Ray's default or without effect
+    std::string plain = finishOf(t, 0), phong = finishOf(t, 1), full = finishOf(t, 2),
+                dark = finishOf(t, 3);
+    for (const std::string &f : {plain, phong, dark})
+        for (const char *kw : {"emission", "phong_size", "specular", "roughness", "metallic",
+                               "reflection", "brilliance", "conserve_energy"})
+            EXPECT_EQ(count(f, kw), 0) << kw << " in " << f;
+    EXPECT_EQ(count(phong, "phong 0.3"), 1);
+    EXPECT_EQ(count(plain, "phong"), 0);
+    // Every term that changes the picture
+    for (const char *kw : {"emission rgb <0.2, 0.2, 0.2>", "brilliance 2", "phong 0.3",
+                           "phong_size 10", "specular 0.2", "roughness 0.01", "metallic 0.5",
+                           "rgb <0.1, 0.1, 0.1>, rgb <0.5, 0.5, 0.5>", "fresnel on", "falloff 2",
+                           "exponent 0.8", "conserve_energy"})
+        EXPECT_EQ(count(full, kw), 1) << kw << " not in " << full;
+    // A `%` part's material is not declared; an empty intersection's still is (POV-Ray gets
+    // the CSG as written)
+    EXPECT_EQ(count(t, "#declare Material_"), 5);
+    EXPECT_EQ(count(t, "rgbft <0, 0, 1, 0, 0>"), 0);
     EXPECT_EQ(count(t, "rgbft <1, 0, 0, 0, 0>"), 1);
 }
 
