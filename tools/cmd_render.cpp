@@ -120,7 +120,7 @@ void addRenderCommand(CLI::App &app, std::function<int()> &action) {
                   "Print the render plan first: features in use and why, objects kept and "
                   "dropped, the samples per pixel chosen");
     cmd->add_flag("--no-plan", args->noPlan,
-                  "Leave nothing out and prune no CSG subtree (to measure what the plan saves)");
+                  "Leave nothing out, prune no CSG subtree and cast shadow rays to every light (to measure what the plan saves)");
     cmd->add_option("--seed", args->seed, "Seed of the sample pattern")->capture_default_str();
     cmd->add_option("-t,--threads", args->threads, "Render threads (0 = all cores)")
         ->capture_default_str();

@@ -210,8 +210,16 @@ Rgb WhittedIntegrator::localColour(const Ray &ray, const SurfaceInteraction &si,
             if (!(dist > 0)) continue;
             L = toLight / dist;
         }
-        // A light behind the surface, as seen from the viewer, does nothing
+        // A light behind the surface, as seen from the viewer, does nothing, and a shadowless
+        // one needs no shadow ray: the plan casts none. Without it (--no-plan, to measure
+        // what the plan saves) a shadow ray goes to every light, as in a naive ray tracer,
+        // and its answer is thrown away.
         double cosNL = dot(N, L);
+        if (!scene_.options().plan && (cosNL < kPovEpsilon || light.shadowless) && dist > 0) {
+            bool tie = ctx.tie;  // nor may it mark the pixel
+            (void)shadowFilter(si, L, dist, stack, ctx);
+            ctx.tie = tie;
+        }
         if (cosNL < kPovEpsilon) continue;
         Rgb lc = light.color * lightAttenuation(light, L, dist);
         if (!light.shadowless && dist > 0)
