@@ -6,6 +6,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -151,10 +152,16 @@ std::unique_ptr<LoadedFile> loadFile(const std::string &path, const SourceLoc &l
                                       ", column " + m[2].str() + ": " + m[3].str());
         }
         // A number too large for a double (1e999): nlohmann names the token but not where it
-        // is, so find its first standalone occurrence in the text
+        // is, so find its first standalone occurrence in the JSON text (a .glb's JSON chunk
+        // starts at byte 20)
         static const std::regex kOverflow(R"(number overflow parsing '([^']+)')");
-        if (!binary && std::regex_search(message, m, kOverflow)) {
+        if (std::regex_search(message, m, kOverflow)) {
             std::string_view text(reinterpret_cast<const char *>(bytes.data()), bytes.size());
+            if (binary) {
+                uint32_t chunk = 0;
+                if (bytes.size() >= 20) std::memcpy(&chunk, bytes.data() + 12, 4);
+                text = bytes.size() >= 20 ? text.substr(20, chunk) : std::string_view();
+            }
             auto numberChar = [](char c) {
                 return std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == 'e' ||
                        c == 'E' || c == '+' || c == '-';
@@ -165,17 +172,14 @@ std::unique_ptr<LoadedFile> loadFile(const std::string &path, const SourceLoc &l
                 size_t end = at + token.size();
                 if ((at > 0 && numberChar(text[at - 1])) || (end < text.size() && numberChar(text[end])))
                     continue;
-                int line = 1, col = 1;
-                for (size_t i = 0; i < at; ++i) {
-                    if (text[i] == '\n') {
-                        ++line;
-                        col = 1;
-                    } else {
-                        ++col;
-                    }
-                }
-                throw ParseError(SourceLoc(std::make_shared<const std::string>(path), line, col),
-                                 "number " + token + " is too large for a double");
+                int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+                size_t lineStart = text.rfind('\n', at);
+                int col = static_cast<int>(lineStart == std::string_view::npos ? at + 1 : at - lineStart);
+                std::string what = "number " + token + " is too large for a double";
+                if (binary)
+                    throw ParseError(loc, what + " (JSON chunk of the binary glTF, its line " +
+                                              std::to_string(line) + ", column " + std::to_string(col) + ")");
+                throw ParseError(SourceLoc(std::make_shared<const std::string>(path), line, col), what);
             }
         }
         throw ParseError(loc, std::string("cannot load glTF") + (binary ? " binary (.glb)" : "") +
