@@ -39,10 +39,17 @@ void checkNode(const Scene &scene, const Node &node, const Mat4 &m, int *primiti
         if (node.material < 0 || node.material >= static_cast<int>(scene.materials.size()))
             throw SceneError(node.loc, "primitive has no valid material (internal error)");
         Bounds3 b = Transform(here, Mat4()).bounds(primitiveBounds(node.shape, &scene));
-        if (!inRange(b.min) || !inRange(b.max))
-            throw SceneError(node.loc, "object extends to " + vec(b.min) + " .. " + vec(b.max) +
+        if (!inRange(b.min) || !inRange(b.max)) {
+            // Report the corners themselves, not the bounds padded for rounding
+            Bounds3 pb = primitiveBounds(node.shape, &scene), corners;
+            for (int i = 0; i < 8; ++i)
+                corners = unionBounds(corners, here.transformPoint(Vec3(i & 1 ? pb.max.x : pb.min.x,
+                                                                        i & 2 ? pb.max.y : pb.min.y,
+                                                                        i & 4 ? pb.max.z : pb.min.z)));
+            throw SceneError(node.loc, "object extends to " + vec(corners.min) + " .. " + vec(corners.max) +
                                            ", beyond the supported range of ±" +
                                            number(kMaxCoordinate));
+        }
         double extent = maxComponent(b.diagonal());
         if (!(extent >= kMinExtent))
             throw SceneError(node.loc, "object size " + number(extent) +

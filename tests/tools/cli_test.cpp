@@ -131,7 +131,7 @@ TEST_F(Cli, BadNumbersAreLocatedNeverACrash) {
         {"multmatrix([[1, 0, 0, 0], [1, 0, 0, 0], [0, 0, 1, 0]]) cube();", 0, "is singular"},
         {"multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 0]]) cube();", 1,
          "non-affine"},
-        {"scale(1e200) cube();", 1, "beyond the supported range"},
+        {"scale(1e200) cube();", 1, "extends to [0, 0, 0] .. [1e+200, 1e+200, 1e+200], beyond the supported range"},
         {"scale(1e-200) cube();", 1, "below the supported minimum"},
         {"translate([1e300, 0, 0]) sphere(1);", 1, "beyond the supported range"},
         {"translate([0/0, 0, 0]) cube();", 0, "translate("},
