@@ -42,10 +42,7 @@ void checkNode(const Scene &scene, const Node &node, const Mat4 &m, int *primiti
         if (!inRange(b.min) || !inRange(b.max)) {
             // Report the corners themselves, not the bounds padded for rounding
             Bounds3 pb = primitiveBounds(node.shape, &scene), corners;
-            for (int i = 0; i < 8; ++i)
-                corners = unionBounds(corners, here.transformPoint(Vec3(i & 1 ? pb.max.x : pb.min.x,
-                                                                        i & 2 ? pb.max.y : pb.min.y,
-                                                                        i & 4 ? pb.max.z : pb.min.z)));
+            for (int i = 0; i < 8; ++i) corners = unionBounds(corners, here.transformPoint(pb.corner(i)));
             throw SceneError(node.loc, "object extends to " + vec(corners.min) + " .. " + vec(corners.max) +
                                            ", beyond the supported range of ±" +
                                            number(kMaxCoordinate));

@@ -23,6 +23,10 @@ struct Bounds3 {
     bool isFinite() const { return min.isFinite() && max.isFinite(); }
     Vec3 diagonal() const { return max - min; }
     Vec3 centroid() const { return (min + max) * 0.5; }
+    /// Corner i (0..7): bit 0 picks max.x over min.x, bit 1 max.y, bit 2 max.z.
+    Vec3 corner(int i) const {
+        return {i & 1 ? max.x : min.x, i & 2 ? max.y : min.y, i & 4 ? max.z : min.z};
+    }
     double surfaceArea() const {
         if (isEmpty()) return 0;
         Vec3 d = diagonal();

@@ -13,6 +13,15 @@ namespace rt {
 
 namespace {
 
+/// Calls f for every primitive or mesh instance of a solid.
+template <typename F>
+void forEachLeaf(const Shape &object, F &&f) {
+    if (const auto *csg = dynamic_cast<const CsgShape *>(&object))
+        for (const auto &l : csg->leaves()) f(*l);
+    else
+        f(static_cast<const LeafShape &>(object));
+}
+
 class Compiler {
   public:
     Compiler(const ir::Scene &scene, DiagnosticSink &diag, const CompileOptions &options,
@@ -117,39 +126,29 @@ class Compiler {
             same = same && in == *interior;
         };
         std::vector<Bounds3> boxes;
-        Vec3 lo(kInfinity), hi(-kInfinity);
+        Bounds3 centres;
         for (const auto &p : parts) {
-            if (const auto *c = dynamic_cast<const CsgShape *>(p.get()))
-                for (const auto &l : c->leaves()) checkLeaf(*l);
-            else
-                checkLeaf(static_cast<const LeafShape &>(*p));
+            forEachLeaf(*p, checkLeaf);
             Bounds3 b = p->worldBounds();
-            double size = std::max({std::abs(b.min.x), std::abs(b.min.y), std::abs(b.min.z),
-                                    std::abs(b.max.x), std::abs(b.max.y), std::abs(b.max.z)});
-            double pad = 1e-9 * size;  // far above the tie tolerance, 1e-11 of the coordinates
+            // Far above the tie tolerance, 1e-11 of the coordinates
+            double pad = 1e-9 * maxComponent(max(abs(b.min), abs(b.max)));
             b.min -= Vec3(pad);
             b.max += Vec3(pad);
             boxes.push_back(b);
-            lo = min(lo, (b.min + b.max) * 0.5);
-            hi = max(hi, (b.min + b.max) * 0.5);
+            centres = unionBounds(centres, b.centroid());
         }
         if (!same) return false;
         // Sweep along the axis where the parts spread most: each box is compared with those
         // starting before it ends
-        Vec3 spread = hi - lo;
-        int axis = spread.x >= spread.y && spread.x >= spread.z ? 0 : spread.y >= spread.z ? 1 : 2;
+        int axis = maxDimension(centres.diagonal());
         std::vector<size_t> order(boxes.size());
         std::iota(order.begin(), order.end(), size_t(0));
         std::sort(order.begin(), order.end(),
                   [&](size_t a, size_t b) { return boxes[a].min[axis] < boxes[b].min[axis]; });
         for (size_t i = 0; i < order.size(); ++i) {
             const Bounds3 &a = boxes[order[i]];
-            for (size_t j = i + 1; j < order.size() && boxes[order[j]].min[axis] <= a.max[axis]; ++j) {
-                const Bounds3 &b = boxes[order[j]];
-                bool apart = false;
-                for (int k = 0; k < 3; ++k) apart = apart || a.max[k] < b.min[k] || b.max[k] < a.min[k];
-                if (!apart) return false;
-            }
+            for (size_t j = i + 1; j < order.size() && boxes[order[j]].min[axis] <= a.max[axis]; ++j)
+                if (!intersectBounds(a, boxes[order[j]]).isEmpty()) return false;
         }
         return true;
     }
@@ -289,15 +288,6 @@ class Compiler {
 
 namespace {
 
-/// Calls f for every primitive or mesh instance of a solid.
-template <typename F>
-void forEachLeaf(const Shape &object, F &&f) {
-    if (const auto *csg = dynamic_cast<const CsgShape *>(&object))
-        for (const auto &l : csg->leaves()) f(*l);
-    else
-        f(static_cast<const LeafShape &>(object));
-}
-
 /// Leaves out solids entirely behind the plane of the camera when no ray can reach them there:
 /// camera rays only go forward, nothing reflects or refracts, and every shadow ray runs from a
 /// visible point to a light in front of the camera (the half-space is convex, so the whole
@@ -310,10 +300,8 @@ std::string dropBehindCamera(const ir::Scene &scene, std::vector<std::unique_ptr
     auto behind = [&](const Bounds3 &b) {
         double scale = length(b.max - b.min) + length(abs(b.max)) + length(abs(b.min)) +
                        length(abs(cam.location));
-        for (int i = 0; i < 8; ++i) {
-            Vec3 c(i & 1 ? b.max.x : b.min.x, i & 2 ? b.max.y : b.min.y, i & 4 ? b.max.z : b.min.z);
-            if (!(depth(c) < -1e-9 * scale)) return false;
-        }
+        for (int i = 0; i < 8; ++i)
+            if (!(depth(b.corner(i)) < -1e-9 * scale)) return false;
         return true;
     };
     std::vector<size_t> candidates;
