@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <optional>
 #include <regex>
 #include <string_view>
 
@@ -93,6 +94,24 @@ struct LoadedFile {
 };
 
 /// Parses the file, telling .glb from .gltf by its magic bytes, not its extension.
+/// Line and column (from 1) of the first standalone occurrence of a number token in JSON text.
+std::optional<std::pair<int, int>> findNumberToken(std::string_view text, const std::string &token) {
+    auto numberChar = [](char c) {
+        return std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == 'e' || c == 'E' ||
+               c == '+' || c == '-';
+    };
+    for (size_t at = text.find(token); at != std::string_view::npos; at = text.find(token, at + 1)) {
+        size_t end = at + token.size();
+        if ((at > 0 && numberChar(text[at - 1])) || (end < text.size() && numberChar(text[end])))
+            continue;
+        int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+        size_t lineStart = text.rfind('\n', at);
+        int col = static_cast<int>(lineStart == std::string_view::npos ? at + 1 : at - lineStart);
+        return std::pair(line, col);
+    }
+    return std::nullopt;
+}
+
 std::unique_ptr<LoadedFile> loadFile(const std::string &path, const SourceLoc &loc,
                                      DiagnosticSink &diag, bool keepImages) {
     std::error_code ec;
@@ -152,8 +171,7 @@ std::unique_ptr<LoadedFile> loadFile(const std::string &path, const SourceLoc &l
                                       ", column " + m[2].str() + ": " + m[3].str());
         }
         // A number too large for a double (1e999): nlohmann names the token but not where it
-        // is, so find its first standalone occurrence in the JSON text (a .glb's JSON chunk
-        // starts at byte 20)
+        // is (a .glb's JSON chunk starts at byte 20)
         static const std::regex kOverflow(R"(number overflow parsing '([^']+)')");
         if (std::regex_search(message, m, kOverflow)) {
             std::string_view text(reinterpret_cast<const char *>(bytes.data()), bytes.size());
@@ -162,24 +180,14 @@ std::unique_ptr<LoadedFile> loadFile(const std::string &path, const SourceLoc &l
                 if (bytes.size() >= 20) std::memcpy(&chunk, bytes.data() + 12, 4);
                 text = bytes.size() >= 20 ? text.substr(20, chunk) : std::string_view();
             }
-            auto numberChar = [](char c) {
-                return std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == 'e' ||
-                       c == 'E' || c == '+' || c == '-';
-            };
-            const std::string token = m[1].str();
-            for (size_t at = text.find(token); at != std::string_view::npos;
-                 at = text.find(token, at + 1)) {
-                size_t end = at + token.size();
-                if ((at > 0 && numberChar(text[at - 1])) || (end < text.size() && numberChar(text[end])))
-                    continue;
-                int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
-                size_t lineStart = text.rfind('\n', at);
-                int col = static_cast<int>(lineStart == std::string_view::npos ? at + 1 : at - lineStart);
-                std::string what = "number " + token + " is too large for a double";
+            const std::string token = m[1].str(), what = "number " + token + " is too large for a double";
+            if (auto at = findNumberToken(text, token)) {
                 if (binary)
                     throw ParseError(loc, what + " (JSON chunk of the binary glTF, its line " +
-                                              std::to_string(line) + ", column " + std::to_string(col) + ")");
-                throw ParseError(SourceLoc(std::make_shared<const std::string>(path), line, col), what);
+                                              std::to_string(at->first) + ", column " +
+                                              std::to_string(at->second) + ")");
+                throw ParseError(SourceLoc(std::make_shared<const std::string>(path), at->first, at->second),
+                                 what);
             }
         }
         throw ParseError(loc, std::string("cannot load glTF") + (binary ? " binary (.glb)" : "") +
