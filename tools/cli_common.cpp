@@ -20,6 +20,11 @@ void SceneArgs::addTo(CLI::App &cmd) {
     cmd.add_option("scene", input, "Scene file (.scad, .gltf, .glb, .stl, .off)")->required();
     cmd.add_option("-D,--define", defines, "Override a top-level variable: name=value");
     cmd.add_option("-L,--library", libraries, "Extra folder searched by include<> and use<>");
+    cmd.add_option("--facets", facets,
+                   "Spheres and cylinders: smooth (exactly round), openscad (OpenSCAD's $fn/$fa/$fs "
+                   "polygons) or auto (polygons where $fn gives at most " +
+                       std::to_string(ir::kAutoFacetMaxFragments) + " fragments)")
+        ->check(CLI::IsMember({"smooth", "openscad", "auto"}));
 }
 
 LoadOptions SceneArgs::loadOptions(bool quiet) const {
@@ -27,6 +32,9 @@ LoadOptions SceneArgs::loadOptions(bool quiet) const {
     lo.quiet = quiet;
     lo.libraryPaths = libraries;
     for (const auto &d : defines) lo.defines.push_back(parseDefine(d));
+    auto mode = ir::parseFacetMode(facets);
+    if (!mode) throw std::invalid_argument("--facets must be smooth, openscad or auto");
+    lo.facets = *mode;
     return lo;
 }
 
@@ -62,6 +70,8 @@ ir::Scene loadScene(const std::string &path, DiagnosticSink &diag, const LoadOpt
         throw std::runtime_error(path + ": unknown scene type '" + ext +
                                  "' (scadray reads .scad, .gltf, .glb, .stl and .off)");
     }
+    // Facets first: the automatic camera frames the solids as they will be drawn
+    ir::applyFacets(scene, opts.facets, diag);
     ir::completeScene(scene, diag);
     return scene;
 }

@@ -27,12 +27,15 @@ struct LoadOptions {
     std::vector<std::string> libraryPaths;
     std::vector<std::pair<std::string, std::string>> defines;
     bool quiet = false;
+    /// How spheres and cylinders are drawn (`--facets`).
+    ir::FacetMode facets = ir::FacetMode::Auto;
 };
 
 /// The scene argument and the options every scene-reading subcommand takes (-D, -L).
 struct SceneArgs {
     std::string input;
     std::vector<std::string> defines, libraries;
+    std::string facets = "auto";
 
     /// Registers the positional scene and -D/-L on a subcommand.
     void addTo(CLI::App &cmd);

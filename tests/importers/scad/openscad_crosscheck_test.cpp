@@ -296,3 +296,57 @@ TEST(OpenScadCrossCheck, MetadataLibraryIsCleanOpenScad) {
 
 }  // namespace
 }  // namespace rt::scad::test
+
+namespace rt::scad::test {
+namespace {
+
+/// The one primitive of a scene with identity transforms above it.
+const ir::Node *onlyPrimitive(const ir::Node &n) {
+    if (n.kind == ir::NodeKind::Primitive) return &n;
+    const ir::Node *found = nullptr;
+    for (const auto &c : n.children)
+        if (const ir::Node *p = onlyPrimitive(*c)) found = p;
+    return found;
+}
+
+TEST(OpenScadCrossCheck, FacetedPrimitivesHaveOpenScadsVertices) {
+    REQUIRE_OPENSCAD();
+    // OpenSCAD's OFF export of a lone primitive keeps its polygons; its vertices (6 digits)
+    // must be ours, one for one
+    const char *cases[] = {
+        "sphere(r=2, $fn=6);",
+        "sphere(1);",                                   // defaults: 5 fragments, 3 rings
+        "sphere(r=10);",                                // 30 fragments
+        "sphere(r=3, $fn=7);",                          // odd: no equator ring
+        "cylinder(h=3, r1=2, r2=0, $fn=5);",            // cone: one apex
+        "cylinder(h=3, r1=0, r2=1.5, $fn=4, center=true);",
+        "cylinder(h=2, r1=1, r2=2, $fn=7, center=true);",
+        "cylinder(h=1, r=3, $fa=30, $fs=1);",
+        "cylinder(h=4, d=5, $fn=6.8);",                 // $fn truncates in 2021.01
+    };
+    std::string tmp = tempDir();
+    for (const char *src : cases) {
+        SCOPED_TRACE(src);
+        std::string scad = tmp + "/facet.scad", off = tmp + "/facet.off";
+        std::ofstream(scad) << src << "\n";
+        RunResult r = runOpenScad(scad, off);
+        ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+        DiagnosticSink diag;
+        ir::Mesh theirs = meshio::readMeshFile(off, diag);
+        Imported ours = importText(src);
+        ir::applyFacets(ours.scene, ir::FacetMode::OpenScad, ours.diag);
+        const ir::Node *prim = onlyPrimitive(*ours.scene.root);
+        ASSERT_TRUE(prim);
+        const auto *poly = std::get_if<ir::PolytopePrim>(&prim->shape);
+        ASSERT_TRUE(poly);
+        ASSERT_EQ(poly->vertices.size(), theirs.positions.size());
+        for (const Vec3 &v : theirs.positions) {
+            double best = kInfinity;
+            for (const Vec3 &w : poly->vertices) best = std::min(best, length(v - w));
+            EXPECT_LT(best, 1e-5 * std::max(1.0, length(v))) << v.x << " " << v.y << " " << v.z;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace rt::scad::test
