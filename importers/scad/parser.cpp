@@ -61,6 +61,12 @@ class Parser {
         return true;
     }
     Token expect(TokenKind k, const char *context);
+    /// Skips a run of commas (parser.y `optional_commas`); true when there was one.
+    bool skipCommas() {
+        bool any = false;
+        while (accept(TokenKind::Comma)) any = true;
+        return any;
+    }
     [[noreturn]] void unexpected(const char *context) const;
     static void checkChain(int length, const SourceLoc &loc) {
         if (length > kMaxOperatorChain)
@@ -177,6 +183,9 @@ void Parser::parseUse() {
 ParameterList Parser::parseParameters() {
     ParameterList params;
     expect(TokenKind::LParen, "to open the parameter list");
+    // parser.y `parameters optional_commas`: empty elements are skipped anywhere, even before
+    // the first parameter and after the last (`m(,a,,b,)`, `f(,)`)
+    skipCommas();
     while (!at(TokenKind::RParen)) {
         Token name = expect(TokenKind::Identifier, "as parameter name");
         Parameter p;
@@ -184,17 +193,23 @@ ParameterList Parser::parseParameters() {
         p.loc = name.loc;
         if (accept(TokenKind::Assign)) p.defaultExpr = parseExpr();
         params.push_back(std::move(p));
-        if (!accept(TokenKind::Comma)) break;
-        while (accept(TokenKind::Comma)) {
-        }
+        if (!skipCommas()) break;
     }
     expect(TokenKind::RParen, "to close the parameter list");
     return params;
 }
 
 ArgumentList Parser::parseArguments(TokenKind close) {
+    // parser.y `arguments`: empty, or arguments joined by one or more commas, which may also
+    // stand before the first one (`f(,,1)`); but every comma needs an argument after it, so
+    // `f(1,)` and `f(,)` are errors in 2021.01. An empty list also ends at ';' (the empty
+    // init of a C-style `for (; cond; next)`).
     ArgumentList args;
-    while (!at(close)) {
+    if (at(close) || at(TokenKind::Semicolon)) return args;
+    for (;;) {
+        if (skipCommas() && at(close))
+            throw ParseError(cur().loc, "syntax error: unexpected " + describeToken(cur()) +
+                                            " after ',' (an argument list has no trailing comma)");
         Argument a;
         a.loc = cur().loc;
         if (at(TokenKind::Identifier) && peekTok().kind == TokenKind::Assign) {
@@ -203,9 +218,8 @@ ArgumentList Parser::parseArguments(TokenKind close) {
         }
         a.expr = parseExpr();
         args.push_back(std::move(a));
-        if (!accept(TokenKind::Comma)) break;
+        if (!at(TokenKind::Comma)) return args;
     }
-    return args;
 }
 
 void Parser::parseModuleDef(Scope &scope) {
@@ -635,6 +649,12 @@ ExprPtr Parser::parseElement() {
 ExprPtr Parser::parseBracket() {
     auto v = std::make_unique<VectorExpr>(cur().loc);
     ++pos_;
+    // parser.y `'[' optional_commas ']'`: commas alone make an empty vector, but no comma may
+    // come before a first element
+    if (skipCommas() && !at(TokenKind::RBracket))
+        throw ParseError(cur().loc, "syntax error: unexpected " + describeToken(cur()) +
+                                        " after ',' (a vector's first element has no comma "
+                                        "before it)");
     if (accept(TokenKind::RBracket)) {
         v->constant = std::make_unique<Value>(Value::vector(std::vector<Value>()));
         return v;
@@ -655,10 +675,8 @@ ExprPtr Parser::parseBracket() {
         return r;
     }
     v->elements.push_back(std::move(first));
-    while (accept(TokenKind::Comma)) {
-        if (at(TokenKind::RBracket)) break;  // trailing comma
-        v->elements.push_back(parseElement());
-    }
+    // Repeated and trailing commas are empty elements, skipped
+    while (skipCommas() && !at(TokenKind::RBracket)) v->elements.push_back(parseElement());
     expect(TokenKind::RBracket, "to close the vector");
     // Vectors of literals are built once
     bool allConstant = true;
