@@ -169,6 +169,7 @@ ir::Scene Evaluator::evaluate(const SourceFile &main, SourceLoader &loader) {
         scene_.root->children = std::move(nodes);
 
     if (!scene_.camera) cameraFromViewportVariables(main);
+    scene_.fontFiles = loader.fontFiles();
     return std::move(scene_);
 }
 

@@ -2,6 +2,8 @@
 // OpenSCAD parser: grammar and precedence of 2021.01 parser.y, as recursive descent.
 #include "importers/scad/parser.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -32,6 +34,24 @@ constexpr const char *kOpenScadLibraryDir = "/usr/share/openscad/libraries";
 std::string dirOf(const std::string &path) {
     fs::path p(path);
     return p.has_parent_path() ? p.parent_path().string() : std::string(".");
+}
+
+/// use<> of a TrueType/OpenType file registers a font instead of reading source
+/// (2021.01 SourceFile::registerUse compares the extension without case).
+bool isFontFile(const std::string &name) {
+    std::string ext = fs::path(name).extension().string();
+    for (auto &c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext == ".ttf" || ext == ".otf";
+}
+
+/// The first bytes of a font file: TrueType (00 01 00 00 or "true"), OpenType with CFF
+/// outlines ("OTTO") or a TrueType collection ("ttcf").
+bool hasFontSignature(const std::string &path) {
+    char magic[4] = {};
+    std::ifstream in(path, std::ios::binary);
+    if (!in.read(magic, sizeof magic)) return false;
+    std::string m(magic, sizeof magic);
+    return m == std::string("\0\1\0\0", 4) || m == "true" || m == "OTTO" || m == "ttcf";
 }
 
 class Parser {
@@ -172,6 +192,10 @@ void Parser::parseInclude(Scope &scope) {
 
 void Parser::parseUse() {
     Token tok = toks_[pos_++];
+    if (isFontFile(tok.text)) {
+        loader_.registerFont(tok.text, dirOf(*tok.loc.file), tok.loc);
+        return;
+    }
     std::string path = loader_.resolve(tok.text, dirOf(*tok.loc.file));
     if (path.empty()) throw ParseError(tok.loc, "can't find used file '" + tok.text + "'");
     for (const auto &u : root_.uses)
@@ -731,6 +755,23 @@ std::string SourceLoader::resolve(const std::string &name, const std::string &fr
         if (usable(p)) return p.lexically_normal().string();
     }
     return {};
+}
+
+void SourceLoader::registerFont(const std::string &name, const std::string &fromDir,
+                                const SourceLoc &loc) {
+    // OpenSCAD goes on without the font in both failure cases (its messages are unlocated)
+    std::string path = resolve(name, fromDir);
+    if (path.empty()) {
+        diag_.warning(loc, "Can't open library '" + name + "': can't read font with path '" +
+                               name + "'");
+        return;
+    }
+    if (!hasFontSignature(path)) {
+        diag_.warning(loc, "Can't register font '" + path + "': not a TrueType/OpenType file");
+        return;
+    }
+    if (std::find(fontFiles_.begin(), fontFiles_.end(), path) == fontFiles_.end())
+        fontFiles_.push_back(path);
 }
 
 std::string SourceLoader::read(const std::string &path, const SourceLoc &loc) const {

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdlib>
 
+#include "importers/mesh/mesh_test_support.h"
 #include "importers/scad/parser.h"
 #include "importers/scad/test_support.h"
 
@@ -320,6 +321,30 @@ TEST(IncludeUse, DefinesOverrideTopLevelAssignments) {
     Imported r = importText("a = 1; echo(a, b);", "", opts);
     EXPECT_EQ(r.echoes(), Echoes{"5, [2, 4]"});
     EXPECT_FALSE(r.hasWarning("overwritten"));
+}
+
+TEST(IncludeUse, FontFileIsRegisteredNotParsed) {
+    std::string dir = meshio::test::testDir();
+    // Only the signature is looked at; the rest would be a syntax error as source
+    meshio::test::writeFile(dir + "/Font.TTF", std::string("\0\1\0\0", 4) + "}}}{{{");
+    meshio::test::writeFile(dir + "/cff.otf", "OTTO}}}");
+    meshio::test::writeFile(dir + "/fake.ttf", "module q() cube();");
+    std::string main = meshio::test::writeFile(
+        dir + "/main.scad",
+        "use <Font.TTF>\nuse <cff.otf>\nuse <Font.TTF>\nuse <missing.ttf>\nuse <fake.ttf>\n"
+        "echo(1);\n");
+    Imported r;
+    r.scene = importScad(main, r.diag);
+    EXPECT_EQ(r.echoes(), Echoes{"1"});
+    EXPECT_EQ(r.scene.fontFiles, (std::vector<std::string>{dir + "/Font.TTF", dir + "/cff.otf"}));
+    // OpenSCAD goes on without a missing or broken font
+    ASSERT_EQ(r.warnings().size(), 2u);
+    Diagnostic missing = r.warning("missing.ttf");
+    EXPECT_EQ(missing.message,
+              "Can't open library 'missing.ttf': can't read font with path 'missing.ttf'");
+    EXPECT_EQ(missing.loc.toString(), main + ":4:1");
+    EXPECT_EQ(r.warning("fake.ttf").message,
+              "Can't register font '" + dir + "/fake.ttf': not a TrueType/OpenType file");
 }
 
 TEST(Echo, NamedArgumentsAndValueFormatting) {
