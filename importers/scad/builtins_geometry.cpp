@@ -416,11 +416,13 @@ const std::unordered_map<Symbol, Evaluator::ModuleHandler, SymbolHash>
         add("echo", &Evaluator::moduleEcho);
         add("assert", &Evaluator::moduleAssert);
         add("children", &Evaluator::moduleChildren);
+        add("child", &Evaluator::moduleChild);
+        add("assign", &Evaluator::moduleAssign);
         add("polyhedron", &Evaluator::modulePolyhedron);
         add("import", &Evaluator::moduleImport);
         for (const char *name :
              {"hull", "minkowski", "resize", "linear_extrude", "rotate_extrude", "surface", "text",
-              "projection", "offset", "square", "circle", "polygon", "child", "assign"})
+              "projection", "offset", "square", "circle", "polygon"})
             add(name, &Evaluator::moduleUnsupported);
         return t;
     }();

@@ -50,6 +50,13 @@ void forEachElement(Evaluator &ev, const Value &seq, uint64_t limit, const Sourc
     }
 }
 
+/// The call of the innermost user module body lexically around `f`: it owns the children.
+const ModuleCallInfo *enclosingCall(const FramePtr &f) {
+    for (const Frame *p = f.get(); p; p = p->parent.get())
+        if (p->call) return p->call;
+    return nullptr;
+}
+
 }  // namespace
 
 Evaluator::Evaluator(DiagnosticSink &diag, EvalLimits limits) : diag_(diag), limits_(limits) {}
@@ -949,10 +956,58 @@ ir::NodePtr Evaluator::moduleAssert(const ModuleInstantiation &inst, const Frame
     return childrenGroupOrNull(inst, f);
 }
 
+void Evaluator::deprecated(const SourceLoc &loc, const std::string &what, bool oncePerRun) {
+    // OpenSCAD prints each deprecation message once: 2021.01's assign() message names its
+    // file and line, so it comes once per line; child()'s does not, so it comes once per run.
+    std::string key = oncePerRun ? what : loc.fileName() + ":" + std::to_string(loc.line) + what;
+    if (deprecationsShown_.insert(key).second) warn(loc, "DEPRECATED: " + what);
+}
+
+ir::NodePtr Evaluator::moduleAssign(const ModuleInstantiation &inst, const FramePtr &f) {
+    deprecated(inst.loc,
+               "The assign() module will be removed in future releases. Use a regular "
+               "assignment instead.",
+               false);
+    // Parallel, unlike let(): every named value is evaluated in the caller's scope before any
+    // is bound (control.cc ASSIGN); unnamed arguments are ignored, unevaluated
+    std::vector<std::pair<Symbol, Value>> bindings;
+    for (const auto &a : inst.args)
+        if (!a.name.empty()) bindings.emplace_back(a.name, eval(*a.expr, f));
+    FramePtr c = makeFrame(f);
+    FrameGuard g(dyn_, c.get());
+    for (auto &[name, value] : bindings) c->set(name, std::move(value));
+    ir::NodePtr node = newNode(ir::NodeKind::Group, inst.loc);
+    instantiateChildren(inst, c, node->children);
+    return node;
+}
+
+ir::NodePtr Evaluator::moduleChild(const ModuleInstantiation &inst, const FramePtr &f) {
+    deprecated(inst.loc, "child() will be removed in future releases. Use children() instead.",
+               true);
+    // The first argument, whatever its name, picks one child when it is a number; anything
+    // else means child 0 (control.cc CHILD)
+    double index = 0;
+    if (!inst.args.empty()) {
+        Value v = eval(*inst.args[0].expr, f);
+        if (v.isNumber()) index = std::trunc(v.toNumber());
+    }
+    if (index < 0) {
+        warn(inst.loc, "Negative child index (" + formatNumber(index) + ") not allowed");
+        return nullptr;
+    }
+    const ModuleCallInfo *call = enclosingCall(f);
+    if (!call) return nullptr;
+    const auto &kids = call->inst->children.instantiations;
+    if (!(index < static_cast<double>(kids.size()))) {
+        warn(inst.loc, "Child index (" + formatNumber(index) + ") out of bounds (" +
+                           std::to_string(kids.size()) + " children)");
+        return nullptr;
+    }
+    return instantiate(*kids[static_cast<size_t>(index)], call->childFrame);
+}
+
 ir::NodePtr Evaluator::moduleChildren(const ModuleInstantiation &inst, const FramePtr &f) {
-    // The innermost user module body lexically around this call owns the children
-    const ModuleCallInfo *call = nullptr;
-    for (const Frame *p = f.get(); p && !call; p = p->parent.get()) call = p->call;
+    const ModuleCallInfo *call = enclosingCall(f);
     if (!call) return nullptr;
     const auto &kids = call->inst->children.instantiations;
     auto child = [&](const Value &v) -> ir::NodePtr {

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "core/ir/diagnostics.h"
@@ -163,6 +164,11 @@ class Evaluator {
     ir::NodePtr moduleEcho(const ModuleInstantiation &inst, const FramePtr &f);
     ir::NodePtr moduleAssert(const ModuleInstantiation &inst, const FramePtr &f);
     ir::NodePtr moduleChildren(const ModuleInstantiation &inst, const FramePtr &f);
+    // Deprecated 2021.01 modules, still working there
+    ir::NodePtr moduleAssign(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr moduleChild(const ModuleInstantiation &inst, const FramePtr &f);
+    /// Warns "DEPRECATED: what" once per source line, or once per run when `oncePerRun`.
+    void deprecated(const SourceLoc &loc, const std::string &what, bool oncePerRun);
 
     // Geometry builtins (builtins_geometry.cpp)
     ir::NodePtr moduleCube(const ModuleInstantiation &inst, const FramePtr &f);
@@ -247,6 +253,8 @@ class Evaluator {
     /// Frames captured by function literals; a closure stored in a frame it (indirectly)
     /// captures forms a reference cycle, broken when the evaluator goes away.
     std::vector<std::weak_ptr<Frame>> capturedFrames_;
+
+    std::unordered_set<std::string> deprecationsShown_;
 
     int callDepth_ = 0;
     int64_t steps_ = 0;

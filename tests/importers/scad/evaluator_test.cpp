@@ -347,6 +347,36 @@ TEST(IncludeUse, FontFileIsRegisteredNotParsed) {
               "Can't register font '" + dir + "/fake.ttf': not a TrueType/OpenType file");
 }
 
+TEST(Deprecated, AssignBindsInParallelAndWarnsOncePerLine) {
+    Imported r = importText("a = 5;\nfor (i = [0:2]) assign(a = i, b = a + 1) echo(a, b);\n"
+                            "assign(c = 1, 7, $fn = 3) { c = 2; echo(c, $fn); }\n"
+                            "assign(d = 1) cube(d); assign(d = 2) echo(d);");
+    EXPECT_EQ(r.echoes(), (Echoes{"0, 6", "1, 6", "2, 6", "2, 3", "2"}));
+    EXPECT_EQ(r.scene.root->primitiveCount(), 1u);
+    std::vector<int> lines;
+    for (const auto &d : r.diag.all())
+        if (d.message.rfind("DEPRECATED: The assign() module", 0) == 0) lines.push_back(d.loc.line);
+    EXPECT_EQ(lines, (std::vector<int>{2, 3, 4}));
+    EXPECT_EQ(r.warnings().size(), 3u);
+}
+
+TEST(Deprecated, ChildPicksOneChildAndWarnsOncePerRun) {
+    Imported r = importText(
+        "module m() { child(); child(1); child(index = 1); child(\"x\"); child(0.7); }\n"
+        "m() { echo(\"c0\"); echo(\"c1\"); }\n"
+        "module n() child(-1); n() echo(\"no\");\n"
+        "module o() child(2); o() echo(\"no\");\n"
+        "module p() child(); p() cube(); child();");
+    EXPECT_EQ(r.echoes(), (Echoes{"\"c0\"", "\"c1\"", "\"c1\"", "\"c0\"", "\"c0\""}));
+    EXPECT_EQ(r.warnings(),
+              (std::vector<std::string>{
+                  "DEPRECATED: child() will be removed in future releases. Use children() instead.",
+                  "Negative child index (-1) not allowed",
+                  "Child index (2) out of bounds (1 children)"}));
+    EXPECT_EQ(r.warning("Negative").loc.line, 3);
+    EXPECT_EQ(r.scene.root->primitiveCount(), 1u);
+}
+
 TEST(Echo, NamedArgumentsAndValueFormatting) {
     EXPECT_EQ(echoes("echo(a = 1, \"s\", [1, \"x\"], undef, v = [0:2]);"),
               Echoes{"a = 1, \"s\", [1, \"x\"], undef, v = [0 : 1 : 2]"});
