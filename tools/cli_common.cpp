@@ -53,11 +53,14 @@ ir::Scene loadScene(const std::string &path, DiagnosticSink &diag, const LoadOpt
     } else if (ext == ".gltf" || ext == ".glb") {
         scene = gltf::importGltf(path, diag);
     } else if (ext == ".stl" || ext == ".off") {
-        // A bare mesh file: one mesh in OpenSCAD's default colour
+        // A bare mesh file: one mesh in OpenSCAD's default colour; a file without triangles
+        // is an empty scene, as an empty .scad is
         auto mesh = std::make_shared<ir::Mesh>(meshio::readMeshFile(path, diag));
-        scene.meshes.push_back(mesh);
-        scene.root->children.push_back(ir::Node::makePrimitive(
-            ir::MeshPrim{0}, scene.addMaterial(ir::Material()), mesh->loc));
+        if (!mesh->triangles.empty()) {
+            scene.meshes.push_back(mesh);
+            scene.root->children.push_back(ir::Node::makePrimitive(
+                ir::MeshPrim{0}, scene.addMaterial(ir::Material()), mesh->loc));
+        }
     } else {
         throw std::runtime_error(path + ": unknown scene type '" + ext +
                                  "' (scadray reads .scad, .gltf, .glb, .stl and .off)");

@@ -385,10 +385,17 @@ ir::NodePtr Evaluator::moduleGroup(const ModuleInstantiation &inst, const FrameP
     return node;
 }
 
+ir::NodePtr Evaluator::skipUnsupported(const SourceLoc &loc, const std::string &what) {
+    // Inside a `%` part, which is left out of the scene anyway, nothing is lost: no warning
+    if (backgroundDepth_ == 0) {
+        warn(loc, what + " is not supported yet; skipped");
+        ++scene_.stats.skippedModules;
+    }
+    return newNode(ir::NodeKind::Group, loc);
+}
+
 ir::NodePtr Evaluator::moduleUnsupported(const ModuleInstantiation &inst, const FramePtr &) {
-    warn(inst.loc, inst.name.str() + "() is not supported yet; skipped");
-    ++scene_.stats.skippedModules;
-    return newNode(ir::NodeKind::Group, inst.loc);
+    return skipUnsupported(inst.loc, inst.name.str() + "()");
 }
 
 const std::unordered_map<Symbol, Evaluator::ModuleHandler, SymbolHash>

@@ -185,6 +185,8 @@ class Evaluator {
     ir::NodePtr moduleIntersection(const ModuleInstantiation &inst, const FramePtr &f);
     ir::NodePtr moduleGroup(const ModuleInstantiation &inst, const FramePtr &f);
     ir::NodePtr moduleUnsupported(const ModuleInstantiation &inst, const FramePtr &f);
+    /// An empty group for a feature not supported yet, with a warning (none inside `%`).
+    ir::NodePtr skipUnsupported(const SourceLoc &loc, const std::string &what);
     ir::NodePtr csgOperation(ir::NodeKind kind, const ModuleInstantiation &inst, const FramePtr &f);
     ir::NodePtr transformNode(const Mat4 &m, const ModuleInstantiation &inst, const FramePtr &f,
                               const FramePtr &argFrame);

@@ -361,6 +361,14 @@ TEST_F(Cli, BadAreaLightIsALocatedErrorForEveryCommand) {
     EXPECT_FALSE(fs::exists(dir / "conv"));
 }
 
+TEST_F(Cli, EmptyMeshFileIsAnEmptyScene) {
+    std::string in = write("empty.stl", "solid empty\nendsolid empty\n");
+    CliRun r = run("render -W 8 -H 8 " + in + " -o " + (dir / "e.png").string());
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("no geometry"), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::exists(dir / "e.png"));
+}
+
 TEST_F(Cli, ExportWritesMeshesAsMesh2) {
     std::string pov = (dir / "meshes.pov").string();
     CliRun r = run("export " + scene("crosscheck/meshes.scad") + " -o " + pov);

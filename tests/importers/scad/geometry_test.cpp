@@ -360,6 +360,19 @@ TEST(SkippedModules, WarnAndLeaveAnEmptyGroup) {
     }
 }
 
+TEST(SkippedModules, NoWarningInsideBackgroundOrDisabledParts) {
+    // Both are left out of the scene, so nothing is lost; `%` is still evaluated (its echo
+    // prints, as in OpenSCAD), `*` is not
+    Imported r = importText("%hull() cube(); %translate([1, 0, 0]) { text(\"x\"); echo(\"bg\"); }\n"
+                            "*minkowski() cube(); *echo(\"off\"); %import(\"part.dxf\");\n"
+                            "%import(); resize([1, 1, 1]) cube();");
+    EXPECT_EQ(r.warnings(), (std::vector<std::string>{"resize() is not supported yet; skipped"}));
+    EXPECT_EQ(r.echoes(), (std::vector<std::string>{"\"bg\""}));
+    EXPECT_EQ(r.scene.stats.skippedModules, 1);
+    EXPECT_EQ(r.scene.stats.backgroundParts, 4);
+    EXPECT_EQ(r.scene.stats.disabledParts, 2);
+}
+
 TEST(SourceLocations, NodesCarryTheirCallSite) {
     Imported r = importText("translate([1, 0, 0])\n  cube();");
     EXPECT_EQ(top(r).loc.line, 1);
