@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <limits>
 
 #include "importers/scad/utf8.h"
 
@@ -20,6 +21,10 @@ constexpr uint64_t kMaxModuleForRange = 10000;
 constexpr uint64_t kMaxComprehensionRange = 1000000;
 
 constexpr double kPiValue = 3.14159265358979323846;
+
+/// Most bytes one echo() prints: a runaway vector must not write tens of MB of diagnostics.
+/// Longer output is cut here with a warning.
+constexpr size_t kMaxEchoBytes = 64 << 10;
 
 Symbol sym(const char *s) { return Symbol::intern(s); }
 
@@ -59,7 +64,10 @@ const ModuleCallInfo *enclosingCall(const FramePtr &f) {
 
 }  // namespace
 
-Evaluator::Evaluator(DiagnosticSink &diag, EvalLimits limits) : diag_(diag), limits_(limits) {}
+Evaluator::Evaluator(DiagnosticSink &diag, EvalLimits limits)
+    : diag_(diag),
+      limits_(limits),
+      stepCap_(limits.maxSteps > 0 ? limits.maxSteps : std::numeric_limits<int64_t>::max()) {}
 
 Evaluator::~Evaluator() {
     // Every cycle runs through a closure's frame up its parent chain: clearing the variables
@@ -78,11 +86,13 @@ void Evaluator::checkStack(const SourceLoc &loc) {
         throw EvalError(loc, "recursion too deep: the evaluation stack is exhausted");
 }
 
-void Evaluator::step(const SourceLoc &loc) {
-    if (++steps_ > limits_.maxSteps)
+void Evaluator::stepSlow(const SourceLoc &loc) {
+    if (steps_ > stepCap_)
         throw EvalError(loc, "evaluation too long: more than " + std::to_string(limits_.maxSteps) +
                                  " steps (calls, loop iterations and module instances); "
-                                 "runaway loop or recursion?");
+                                 "runaway loop or recursion? If the model needs more, raise the "
+                                 "cap with --max-steps N (0 = no cap)");
+    if ((steps_ & kProgressStepMask) == 0 && progress_) progress_(steps_);
 }
 
 void Evaluator::checkElementBudget(size_t extra, const SourceLoc &loc) {
@@ -446,13 +456,26 @@ Value Evaluator::evalPrefix(const PrefixExpr &p, const FramePtr &f) {
 }
 
 void Evaluator::evalEcho(const ArgumentList &args, const FramePtr &f, const SourceLoc &loc) {
+    // Every argument is evaluated; only the text is capped
+    const size_t limit = kMaxEchoBytes + std::string_view("ECHO: ").size();
     std::string msg = "ECHO: ";
     for (size_t i = 0; i < args.size(); ++i) {
+        Value v = eval(*args[i].expr, f);
+        if (msg.size() > limit) continue;
         if (i) msg += ", ";
         if (!args[i].name.empty()) msg += args[i].name.str() + " = ";
-        msg += eval(*args[i].expr, f).toEchoString();
+        v.appendEchoString(msg, limit + 1);
     }
-    diag_.note(loc, msg);
+    if (msg.size() <= limit) {
+        diag_.note(loc, msg);
+        return;
+    }
+    // Cut at a character boundary, not inside a UTF-8 sequence
+    size_t cut = limit;
+    while (cut > 0 && (static_cast<unsigned char>(msg[cut]) & 0xC0) == 0x80) --cut;
+    msg.resize(cut);
+    diag_.note(loc, msg + " ...");
+    warn(loc, "echo output cut after " + std::to_string(kMaxEchoBytes >> 10) + " KiB");
 }
 
 void Evaluator::evalAssert(const ArgumentList &args, const FramePtr &f, const SourceLoc &loc) {

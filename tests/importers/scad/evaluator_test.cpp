@@ -206,12 +206,62 @@ TEST(Recursion, RunawayTailLoopHitsTheStepBudget) {
     } catch (const EvalError &e) {
         EXPECT_EQ(std::string(e.what()),
                   "evaluation too long: more than 100000 steps (calls, loop iterations and "
-                  "module instances); runaway loop or recursion?");
+                  "module instances); runaway loop or recursion? If the model needs more, raise "
+                  "the cap with --max-steps N (0 = no cap)");
         EXPECT_EQ(e.loc().toString(), "limits.scad:1:17");
     }
     // Loops count too
     EXPECT_THROW(evaluateWithLimits("for (i = [0:999], j = [0:999]) echo();", limits), EvalError);
     EXPECT_NO_THROW(evaluateWithLimits("for (i = [0:99], j = [0:99]) echo();", limits));
+}
+
+TEST(Limits, StepCapComesFromTheImportOptionsAndZeroMeansNone) {
+    const std::string src = "x = [for (i = [0:199999]) i];\necho(len(x));";
+    ImportOptions opts;
+    opts.maxSteps = 1000;
+    try {
+        importText(src, "", opts);
+        FAIL() << "expected EvalError";
+    } catch (const EvalError &e) {
+        EXPECT_NE(std::string(e.what()).find("more than 1000 steps"), std::string::npos);
+        EXPECT_EQ(e.loc().line, 1);
+    }
+    // 0 is no cap, not a cap of 0
+    opts.maxSteps = 0;
+    EXPECT_EQ(importText(src, "", opts).echoes(), Echoes{"200000"});
+}
+
+TEST(Limits, ProgressIsReportedEvery65536Steps) {
+    ImportOptions opts;
+    std::vector<int64_t> calls;
+    opts.progress = [&](int64_t steps) { calls.push_back(steps); };
+    importText("x = [for (i = [0:199999]) i];", "", opts);
+    EXPECT_EQ(calls, (std::vector<int64_t>{65536, 131072, 196608}));
+}
+
+TEST(Limits, HugeEchoIsCutWithALocatedWarning) {
+    Imported r = importText("x = 1;\necho(v = [for (i = [0:99999]) i], w = \"\u00e9\");");
+    ASSERT_EQ(r.echoes().size(), 1u);
+    std::string e = r.echoes()[0];
+    EXPECT_EQ(e.rfind("v = [0, 1, 2, ", 0), 0u);
+    EXPECT_EQ(e.substr(e.size() - 4), " ...");
+    EXPECT_LE(e.size(), (64u << 10) + 4);
+    EXPECT_GE(e.size(), (64u << 10) - 8);
+    Diagnostic w = r.warning("echo output cut");
+    EXPECT_EQ(w.message, "echo output cut after 64 KiB");
+    EXPECT_EQ(w.loc.line, 2);
+    // Below the cap nothing changes; a cut never splits a UTF-8 character
+    EXPECT_EQ(echoOf("echo([for (i = [0:999]) i][999]);"), "999");
+    std::string s;
+    for (int i = 0; i < 40000; ++i) s += "\u00e9";  // two bytes each
+    Imported u = importText("echo(\"" + s + "\");");
+    ASSERT_EQ(u.echoes().size(), 1u);
+    std::string cut = u.echoes()[0];
+    ASSERT_EQ(cut.substr(cut.size() - 4), " ...");
+    cut.resize(cut.size() - 4);
+    EXPECT_EQ(cut[0], '"');
+    EXPECT_EQ((cut.size() - 1) % 2, 0u) << "a character was split";
+    EXPECT_EQ(cut.substr(cut.size() - 2), "\u00e9");
 }
 
 TEST(Limits, HugeListsAndStringsAreLocatedErrors) {
