@@ -49,6 +49,8 @@ struct Scene {
     std::optional<Camera> camera;
     Settings settings;
     ImportStats stats;
+    /// Font files a .scad registered with use<x.ttf> (for text()), in order of registration.
+    std::vector<std::string> fontFiles;
 
     /// Returns the index of a material with the same appearance, adding it if new.
     /// Constant time on average: materials are indexed by a hash of their appearance.
