@@ -408,7 +408,12 @@ ir::NodePtr Evaluator::moduleHull(const ModuleInstantiation &inst, const FramePt
         warn(inst.loc, "hull(): " + std::to_string(hull.unsettledPoints) +
                            " points too close to the hull's surface for the arithmetic to place "
                            "were left out; they lie within rounding of it");
-    if (hull.kind == ir::HullKind::Solid) return primitive(std::move(hull.polytope), inst, f);
+    if (hull.kind == ir::HullKind::Solid) {
+        ir::NodePtr n = primitive(std::move(hull.polytope), inst, f);
+        // Its points are fixed: no $fn/$fa/$fs applies to a hull (nor does --facets)
+        n->fragments = ir::Fragments{};
+        return n;
+    }
     // OpenSCAD makes a flat or empty result; a solid renderer has nothing to draw
     if (hull.kind != ir::HullKind::Empty && backgroundDepth_ == 0)
         warn(inst.loc, "hull(): the children's " + std::to_string(points.size()) +
