@@ -25,7 +25,7 @@ Bounds3 boundsOf(const ir::PolytopePrim &p) {
     return b;
 }
 
-TEST(Hull, TwoCubesGiveOnePolytopeOfTheirOuterCorners) {
+TEST(ScadHull, TwoCubesGiveOnePolytopeOfTheirOuterCorners) {
     Imported r = importText("hull() { cube(1); translate([3, 0, 0]) cube(1); }");
     const ir::PolytopePrim &p = onlyPolytope(r);
     EXPECT_EQ(p.vertices.size(), 8u);
@@ -34,7 +34,7 @@ TEST(Hull, TwoCubesGiveOnePolytopeOfTheirOuterCorners) {
     EXPECT_TRUE(r.warnings().empty());
 }
 
-TEST(Hull, PlacedUnderItsOwnTransformAndColouredByItsContext) {
+TEST(ScadHull, PlacedUnderItsOwnTransformAndColouredByItsContext) {
     // The transform above hull() stays a transform; colours inside do not matter
     Imported r = importText(
         "color(\"red\") translate([10, 0, 0]) hull() { color(\"blue\") cube(2); sphere(1); }");
@@ -48,7 +48,7 @@ TEST(Hull, PlacedUnderItsOwnTransformAndColouredByItsContext) {
     EXPECT_EQ(r.scene.materials.at(n.material).color, Rgb(1, 0, 0));
 }
 
-TEST(Hull, NestedHullsAndTessellationFromDollarVariables) {
+TEST(ScadHull, NestedHullsAndTessellationFromDollarVariables) {
     Imported r = importText("hull($fn = 6) { hull() { sphere(2); } translate([0, 0, 5]) "
                             "cylinder(r = 1, h = 1); }");
     const ir::PolytopePrim &p = onlyPolytope(r);
@@ -60,7 +60,7 @@ TEST(Hull, NestedHullsAndTessellationFromDollarVariables) {
     EXPECT_DOUBLE_EQ(boundsOf(p).max.z, 6);
 }
 
-TEST(Hull, FacetsModeLeavesHullsAlone) {
+TEST(ScadHull, FacetsModeLeavesHullsAlone) {
     Imported r = importText("hull() sphere(5, $fn = 40);");
     ir::PolytopePrim before = onlyPolytope(r);
     for (ir::FacetMode mode : {ir::FacetMode::Smooth, ir::FacetMode::OpenScad}) {
@@ -70,7 +70,7 @@ TEST(Hull, FacetsModeLeavesHullsAlone) {
     }
 }
 
-TEST(Hull, FlatHullsAreLeftOutWithALocatedWarning) {
+TEST(ScadHull, FlatHullsAreLeftOutWithALocatedWarning) {
     Imported r = importText("cube();\n  hull() { translate([0, 0, 1]) cube([1, 1, 0]); "
                             "polyhedron([[0,0,0],[1,0,0],[0,1,0]], [[0,1,2]]); }");
     Diagnostic w = r.warning("hull()");
@@ -82,7 +82,7 @@ TEST(Hull, FlatHullsAreLeftOutWithALocatedWarning) {
     EXPECT_EQ(primitives(*r.scene.root).size(), 1u);
 }
 
-TEST(Hull, FlattenedChildrenStillGivePoints) {
+TEST(ScadHull, FlattenedChildrenStillGivePoints) {
     // scale([1, 1, 0]) flattens the cube to a square, whose corners join the hull (a pyramid)
     Imported r = importText("hull() { scale([1, 1, 0]) cube(2, center = true); "
                             "translate([0, 0, 3]) cube(0.001, center = true); }");
@@ -91,7 +91,7 @@ TEST(Hull, FlattenedChildrenStillGivePoints) {
     EXPECT_FALSE(r.hasWarning("singular"));
 }
 
-TEST(Hull, ApproximatedDifferencesAndTwoDimensionalChildrenAreNamed) {
+TEST(ScadHull, ApproximatedDifferencesAndTwoDimensionalChildrenAreNamed) {
     Imported r = importText("hull() {\n  difference() { cube(4); cube(3); }\n  square(1);\n}");
     Diagnostic d = r.warning("hull() of a difference()");
     EXPECT_EQ(d.loc.line, 2);
@@ -101,7 +101,7 @@ TEST(Hull, ApproximatedDifferencesAndTwoDimensionalChildrenAreNamed) {
     EXPECT_EQ(boundsOf(onlyPolytope(r)).max, Vec3(4, 4, 4));
 }
 
-TEST(Hull, ExactDifferencesAndIntersectionsNeedNoWarning) {
+TEST(ScadHull, ExactDifferencesAndIntersectionsNeedNoWarning) {
     Imported r = importText("hull() { difference() { cube(4); translate([1, 1, -1]) "
                             "cylinder(r = 1, h = 6); } intersection() { sphere(3, $fn = 8); "
                             "cube(2); } }");
@@ -109,7 +109,7 @@ TEST(Hull, ExactDifferencesAndIntersectionsNeedNoWarning) {
     EXPECT_TRUE(r.warnings().empty()) << r.warnings().front();
 }
 
-TEST(Hull, BackgroundHullsAndEmptyHullsAreSilent) {
+TEST(ScadHull, BackgroundHullsAndEmptyHullsAreSilent) {
     Imported r = importText("%hull() cube(); hull(); hull() { cube(0); }");
     EXPECT_EQ(primitives(*r.scene.root).size(), 0u);
     EXPECT_EQ(r.warnings(), (std::vector<std::string>{
