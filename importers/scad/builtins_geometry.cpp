@@ -4,6 +4,7 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "core/ir/hull.h"
 #include "importers/scad/colors.h"
 #include "importers/scad/evaluator.h"
 
@@ -166,7 +167,7 @@ ir::NodePtr Evaluator::transformNode(const Mat4 &m, const ModuleInstantiation &i
     node->matrix = m;
     instantiateChildren(inst, f, node->children);
     worldFromLocal_ = saved;
-    if (!m.affineInverse()) {
+    if (!m.affineInverse() && hullDepth_ == 0) {
         // scale(0) and the like flatten their children to no volume: OpenSCAD's render drops
         // them from 3D results, and a singular matrix cannot be ray traced
         warn(inst.loc, inst.name.str() +
@@ -385,6 +386,42 @@ ir::NodePtr Evaluator::moduleGroup(const ModuleInstantiation &inst, const FrameP
     return node;
 }
 
+ir::NodePtr Evaluator::moduleHull(const ModuleInstantiation &inst, const FramePtr &f) {
+    FramePtr dollars = makeFrame(nullptr);
+    bindBuiltin(inst, {}, f, dollars.get());
+    FrameGuard g(dyn_, dollars.get());
+    // The children are only a source of points; their tree is dropped afterwards
+    ir::NodePtr children = newNode(ir::NodeKind::Group, inst.loc);
+    ++hullDepth_;
+    try {
+        instantiateChildren(inst, f, children->children);
+    } catch (...) {
+        --hullDepth_;
+        throw;
+    }
+    --hullDepth_;
+    std::vector<Vec3> points;
+    if (!ir::gatherHullPoints(*children, scene_, diag_, points))
+        return newNode(ir::NodeKind::Group, inst.loc);
+    ir::HullResult hull = ir::convexHull(points);
+    if (hull.unsettledPoints > 0)
+        warn(inst.loc, "hull(): " + std::to_string(hull.unsettledPoints) +
+                           " points too close to the hull's surface for the arithmetic to place "
+                           "were left out; they lie within rounding of it");
+    if (hull.kind == ir::HullKind::Solid) {
+        ir::NodePtr n = primitive(std::move(hull.polytope), inst, f);
+        // Its points are fixed: no $fn/$fa/$fs applies to a hull (nor does --facets)
+        n->fragments = ir::Fragments{};
+        return n;
+    }
+    // OpenSCAD makes a flat or empty result; a solid renderer has nothing to draw
+    if (hull.kind != ir::HullKind::Empty && backgroundDepth_ == 0)
+        warn(inst.loc, "hull(): the children's " + std::to_string(points.size()) +
+                           " points are " + ir::hullKindName(hull.kind) +
+                           ", so the hull has no volume; left out");
+    return newNode(ir::NodeKind::Group, inst.loc);
+}
+
 ir::NodePtr Evaluator::skipUnsupported(const SourceLoc &loc, const std::string &what) {
     // Inside a `%` part, which is left out of the scene anyway, nothing is lost: no warning
     if (backgroundDepth_ == 0) {
@@ -417,6 +454,7 @@ const std::unordered_map<Symbol, Evaluator::ModuleHandler, SymbolHash>
         add("intersection", &Evaluator::moduleIntersection);
         add("render", &Evaluator::moduleGroup);
         add("group", &Evaluator::moduleGroup);
+        add("hull", &Evaluator::moduleHull);
         add("for", &Evaluator::moduleFor);
         add("intersection_for", &Evaluator::moduleIntersectionFor);
         add("let", &Evaluator::moduleLet);
@@ -428,7 +466,7 @@ const std::unordered_map<Symbol, Evaluator::ModuleHandler, SymbolHash>
         add("polyhedron", &Evaluator::modulePolyhedron);
         add("import", &Evaluator::moduleImport);
         for (const char *name :
-             {"hull", "minkowski", "resize", "linear_extrude", "rotate_extrude", "surface", "text",
+             {"minkowski", "resize", "linear_extrude", "rotate_extrude", "surface", "text",
               "projection", "offset", "square", "circle", "polygon"})
             add(name, &Evaluator::moduleUnsupported);
         return t;

@@ -196,6 +196,9 @@ class Evaluator {
     ir::NodePtr moduleDifference(const ModuleInstantiation &inst, const FramePtr &f);
     ir::NodePtr moduleIntersection(const ModuleInstantiation &inst, const FramePtr &f);
     ir::NodePtr moduleGroup(const ModuleInstantiation &inst, const FramePtr &f);
+    /// hull(): the convex hull of the points OpenSCAD generates for the children, as one
+    /// polytope primitive.
+    ir::NodePtr moduleHull(const ModuleInstantiation &inst, const FramePtr &f);
     ir::NodePtr moduleUnsupported(const ModuleInstantiation &inst, const FramePtr &f);
     /// An empty group for a feature not supported yet, with a warning (none inside `%`).
     ir::NodePtr skipUnsupported(const SourceLoc &loc, const std::string &what);
@@ -248,6 +251,8 @@ class Evaluator {
     std::vector<MaterialSpec> materials_;
     int currentMaterial_ = -1;  ///< material of the current colour/material context, once known
     int backgroundDepth_ = 0;
+    /// Inside hull(): a singular transform's flat children still give points to the hull.
+    int hullDepth_ = 0;
     bool backgroundSet_ = false;
     bool renderSettingsSet_ = false;
 

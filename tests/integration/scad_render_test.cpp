@@ -106,5 +106,28 @@ TEST(ScadRender, ViewportVariablesSetTheCamera) {
     EXPECT_EQ(viaVp.camera->fov, 25);
 }
 
+TEST(ScadRender, HullIsTheSolidItBoundsAndTakesPartInCsg) {
+    // The hull of two cubes is the box they span; the cubes alone leave a gap
+    expectSamePicture("hull() { cube(2); translate([3, 0, 0]) cube(2); }", "cube([5, 2, 2]);");
+    EXPECT_GT(differingFraction(render("cube(2); translate([3, 0, 0]) cube(2);"),
+                                render("cube([5, 2, 2]);")),
+              0.01);
+    expectSamePicture("difference() { hull() { cube(2); translate([3, 0, 0]) cube(2); } "
+                      "translate([1, -1, 1]) cube([3, 4, 2]); }",
+                      "difference() { cube([5, 2, 2]); translate([1, -1, 1]) cube([3, 4, 2]); }");
+}
+
+TEST(ScadRender, RoundHullsGiveFinitePixels) {
+    Image img = render("hull() { sphere(2, $fn=24); translate([4, 0, 1]) sphere(1); "
+                       "translate([0, 0, 3]) rotate([10, 20, 30]) cylinder(r1=1, r2=0, h=2); }",
+                       64, 48);
+    double lit = 0;
+    for (float v : img.data()) {
+        ASSERT_TRUE(std::isfinite(v));
+        lit = std::max(lit, double(v));
+    }
+    EXPECT_GT(lit, 0.1);
+}
+
 }  // namespace
 }  // namespace rt

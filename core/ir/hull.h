@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: MIT
+// Convex hulls (quickhull) of point sets, and the points OpenSCAD 2021.01 hulls for a node tree.
+#pragma once
+
+#include <vector>
+
+#include "core/ir/diagnostics.h"
+#include "core/ir/node.h"
+
+namespace rt::ir {
+
+struct Scene;
+
+/// Points closer than this many units in the last place of the input's coordinate scale
+/// (max|x| + max|y| + max|z|, as in Barber et al.'s qhull and Lloyd's quickhull3d) count as
+/// lying on a plane: a distance to a plane through input points is computed with a few roundings
+/// of that scale, so anything closer is within the noise of the arithmetic, not outside.
+constexpr double kHullToleranceUlps = 8;
+
+/// What the points span.
+enum class HullKind {
+    Empty,  ///< no points
+    Point,  ///< all points coincide (within tolerance)
+    Line,   ///< collinear
+    Flat,   ///< coplanar: a polygon without volume
+    Solid,  ///< a polytope with volume
+};
+
+const char *hullKindName(HullKind kind);
+
+struct HullResult {
+    HullKind kind = HullKind::Empty;
+    /// Solid only: vertices (each an input point) and faces, counter-clockwise seen from
+    /// outside; coplanar triangles are merged into one polygon face.
+    PolytopePrim polytope;
+    /// Points whose position relative to the hull the arithmetic could not settle (they
+    /// would have made the hull's horizon inconsistent); each is within a few tolerances of
+    /// the hull. Zero on all but pathological inputs.
+    int unsettledPoints = 0;
+};
+
+/// The convex hull of `points` (non-finite points must not be given).
+HullResult convexHull(const std::vector<Vec3> &points);
+
+/// The tolerance convexHull uses for these points.
+double hullTolerance(const std::vector<Vec3> &points);
+
+/// More points than this for one hull are refused (a sphere with `$fn=100000` would give
+/// 5e9): the hull is left out with a warning.
+constexpr size_t kMaxHullPoints = 20'000'000;
+
+/// The points whose convex hull is OpenSCAD's hull() of the subtree `node`, in the
+/// coordinates of node's parent: cube corners; spheres, cylinders and cones as OpenSCAD
+/// tessellates them (from the node's $fn/$fa/$fs, whatever the --facets mode); polyhedron and
+/// mesh vertices; polytope vertices. Unions are exact. An intersection of convex operands is
+/// clipped exactly; a difference is exact when the subtracted parts miss every vertex of the
+/// first operand's hull. Other cases are approximated with a warning at the CSG node. Returns
+/// false (after a warning) when there are more than kMaxHullPoints.
+bool gatherHullPoints(const Node &node, const Scene &scene, DiagnosticSink &diag,
+                      std::vector<Vec3> &out);
+
+}  // namespace rt::ir
