@@ -187,6 +187,10 @@ INSTANTIATE_TEST_SUITE_P(
              false},
         Case{"linear_extrude(2) polygon([[0,0],[10,0],[10,10],[0,10],[2,2],[8,2],[8,8],[2,8]], "
              "[[0,1,2,3],[4,5,6,7]]);",
+             false},
+        // Even-odd: an island inside the hole, paths listed clockwise and counter-clockwise
+        Case{"linear_extrude(3) polygon([[0,0],[10,0],[10,10],[0,10],[2,2],[2,8],[8,8],[8,2],"
+             "[4,4],[6,4],[6,6],[4,6]], [[0,1,2,3],[4,5,6,7],[8,9,10,11]]);",
              false}));
 
 }  // namespace
