@@ -104,16 +104,20 @@ ir::NodePtr Evaluator::moduleCube(const ModuleInstantiation &inst, const FramePt
     return primitive(box, inst, f);
 }
 
+Value Evaluator::radiusArgument(const BoundArgs &a, const ModuleInstantiation &inst) {
+    for (size_t i = 0; i < 2; ++i)
+        if (!a[i].isUndef() && !a[i].isNumber())
+            warn(a.loc(i), inst.name.str() + "(" + (i ? "d" : "r") + "=" + argText(a[i]) +
+                               ") is not a number; ignored");
+    return lookupRadius(*this, a[1], a[0], "d", "r", inst.loc);
+}
+
 ir::NodePtr Evaluator::moduleSphere(const ModuleInstantiation &inst, const FramePtr &f) {
     FramePtr dollars = makeFrame(nullptr);
     BoundArgs a = bindBuiltin(inst, {"r", "d"}, f, dollars.get(), 1);
     FrameGuard g(dyn_, dollars.get());
     warnLeafChildren(inst);
-    for (size_t i = 0; i < 2; ++i)
-        if (!a[i].isUndef() && !a[i].isNumber())
-            warn(a.loc(i), std::string("sphere(") + (i ? "d" : "r") + "=" + argText(a[i]) +
-                               ") is not a number; ignored");
-    Value r = lookupRadius(*this, a[1], a[0], "d", "r", inst.loc);
+    Value r = radiusArgument(a, inst);
     double radius = r.isNumber() ? r.toNumber() : 1;
     if (!(radius > 0) || !std::isfinite(radius))
         return emptyPrimitive(inst,
@@ -167,7 +171,9 @@ ir::NodePtr Evaluator::transformNode(const Mat4 &m, const ModuleInstantiation &i
     node->matrix = m;
     instantiateChildren(inst, f, node->children);
     worldFromLocal_ = saved;
-    if (!m.affineInverse() && hullDepth_ == 0) {
+    // Inside a hull flattened points still count; a 2D child is judged by the matrix's 2D
+    // part when it is extruded or drawn
+    if (!m.affineInverse() && hullDepth_ == 0 && contentsOf(*node) != 1) {
         // scale(0) and the like flatten their children to no volume: OpenSCAD's render drops
         // them from 3D results, and a singular matrix cannot be ray traced
         warn(inst.loc, inst.name.str() +
@@ -465,9 +471,12 @@ const std::unordered_map<Symbol, Evaluator::ModuleHandler, SymbolHash>
         add("assign", &Evaluator::moduleAssign);
         add("polyhedron", &Evaluator::modulePolyhedron);
         add("import", &Evaluator::moduleImport);
+        add("square", &Evaluator::moduleSquare);
+        add("circle", &Evaluator::moduleCircle);
+        add("polygon", &Evaluator::modulePolygon);
+        add("linear_extrude", &Evaluator::moduleLinearExtrude);
         for (const char *name :
-             {"minkowski", "resize", "linear_extrude", "rotate_extrude", "surface", "text",
-              "projection", "offset", "square", "circle", "polygon"})
+             {"minkowski", "resize", "rotate_extrude", "surface", "text", "projection", "offset"})
             add(name, &Evaluator::moduleUnsupported);
         return t;
     }();

@@ -184,6 +184,7 @@ ir::Scene Evaluator::evaluate(const SourceFile &main, SourceLoader &loader) {
         scene_.root->children.push_back(std::move(rootNode_));
     else
         scene_.root->children = std::move(nodes);
+    if (!shapes2d_.empty()) finish2d(*scene_.root, true);
 
     if (!scene_.camera) cameraFromViewportVariables(main);
     scene_.fontFiles = loader.fontFiles();

@@ -18,6 +18,7 @@
 #include "importers/scad/environment.h"
 #include "importers/scad/parser.h"
 #include "importers/scad/scad_importer.h"
+#include "importers/scad/shape2d.h"
 
 namespace rt::scad {
 
@@ -68,6 +69,20 @@ struct BoundArgs {
 
     const Value &operator[](size_t i) const { return values[i]; }
     const SourceLoc &loc(size_t i) const { return given[i] ? locs[i] : callLoc; }
+};
+
+/// A resolved linear_extrude (or the plate OpenSCAD's preview draws for a top-level 2D object).
+struct ExtrudeSpec {
+    double z0 = 0, z1 = 1;
+    Vec2 scale{1, 1};
+    double twist = 0;
+    int slices = 1;               ///< the mesh path's slice count, once known
+    int sliceArg = 0;             ///< `slices` as given (0: computed)
+    ir::Fragments fragments;      ///< $fn/$fa/$fs at the call, for the slice count
+    int material = -1;            ///< -1: each 2D primitive keeps its own material
+    bool previewTransforms = false;  ///< plates: transforms act in 3D, as in the preview
+    bool meshPath = false;        ///< twist or non-uniform scale: swept triangle meshes
+    SourceLoc loc;
 };
 
 class Evaluator;
@@ -208,7 +223,35 @@ class Evaluator {
     ir::NodePtr primitive(ir::PrimShape shape, const ModuleInstantiation &inst, const FramePtr &f);
     ir::NodePtr emptyPrimitive(const ModuleInstantiation &inst, const std::string &why);
     ir::Fragments currentFragments(const SourceLoc &loc);
+    /// sphere()/circle() radius from `r` and `d` (bound first and second): a numeric d wins,
+    /// with OpenSCAD's warning when r is given too; undef when neither is a number.
+    Value radiusArgument(const BoundArgs &a, const ModuleInstantiation &inst);
     void warnLeafChildren(const ModuleInstantiation &inst);
+
+    // 2D shapes and linear_extrude (builtins_2d.cpp)
+    ir::NodePtr moduleSquare(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr moduleCircle(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr modulePolygon(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr moduleLinearExtrude(const ModuleInstantiation &inst, const FramePtr &f);
+    /// An empty group standing for a 2D shape in the node tree until an extrusion lifts it.
+    ir::NodePtr shape2dNode(Shape2d shape, const ModuleInstantiation &inst);
+    const Shape2d *shape2dOf(const ir::Node &n) const;
+    /// Bit 1: the subtree holds 2D shapes; bit 2: it holds 3D primitives.
+    int contentsOf(const ir::Node &n) const;
+    /// OpenSCAD's dimension of a node: that of its first child with geometry (0: none).
+    int dimensionOf(const ir::Node &n) const;
+    /// The 3D solid of a 2D subtree swept as `spec` says; null when nothing is left.
+    ir::NodePtr lift2d(const ir::Node &n, const ExtrudeSpec &spec, const Affine2 &placed,
+                       double pad);
+    ir::NodePtr liftShape(const Shape2d &s, const ExtrudeSpec &spec, const Affine2 &placed,
+                          double pad);
+    ir::NodePtr sweptSolid(const Outline &ccw, const ExtrudeSpec &spec, double pad,
+                           int material, const SourceLoc &loc);
+    void extentOf2d(const ir::Node &n, const Affine2 &placed, Vec2 scale, double &rSqr,
+                    double &deltaSqr) const;
+    /// Draws the 2D subtrees left outside any extrusion as OpenSCAD's preview does.
+    int finish2d(ir::Node &n, bool top);
+    ir::NodePtr makeLifted(ir::PrimShape shape, int material, const SourceLoc &loc);
 
     // Mesh modules (builtins_mesh.cpp)
     ir::NodePtr modulePolyhedron(const ModuleInstantiation &inst, const FramePtr &f);
@@ -274,6 +317,9 @@ class Evaluator {
     std::vector<std::weak_ptr<Frame>> capturedFrames_;
 
     std::unordered_set<std::string> deprecationsShown_;
+
+    std::vector<Shape2d> shapes2d_;  ///< 2D shapes, indexed from their placeholder nodes
+    bool plateWarned_ = false;
 
     int callDepth_ = 0;
     int64_t steps_ = 0;

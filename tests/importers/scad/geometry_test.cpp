@@ -344,9 +344,8 @@ TEST(Modifiers, RootReplacesTheSceneWithoutItsParents) {
 }
 
 TEST(SkippedModules, WarnAndLeaveAnEmptyGroup) {
-    const char *names[] = {"minkowski", "resize",     "linear_extrude", "rotate_extrude",
-                           "surface",   "text",       "projection",     "offset",
-                           "square",    "circle",     "polygon"};
+    const char *names[] = {"minkowski", "resize", "rotate_extrude", "surface",
+                           "text",      "projection", "offset"};
     for (const char *name : names) {
         Imported r = importText(std::string("difference() { ") + name + "() cube(); sphere(); }");
         EXPECT_EQ(r.scene.stats.skippedModules, 1) << name;

@@ -1,0 +1,513 @@
+// SPDX-License-Identifier: MIT
+// 2D primitives (square, circle, polygon) and linear_extrude, lifted to exact 3D CSG: the
+// extrusion distributes over 2D booleans and 2D transforms, so each 2D primitive becomes a
+// box, cylinder, polytope or planar-faced mesh (OpenSCAD 2021.01 primitives.cc,
+// linearextrude.cc, GeometryEvaluator.cc).
+#include <algorithm>
+#include <cmath>
+
+#include "core/ir/facets.h"
+#include "importers/scad/evaluator.h"
+#include "importers/scad/extrude.h"
+
+namespace rt::scad {
+
+namespace {
+
+/// Label prefix of the placeholder node of a 2D shape; the rest is its index in shapes2d_.
+constexpr std::string_view kShape2dTag = "\x1f" "2d:";
+
+/// Label of the group of linear_extrude's children: OpenSCAD unions them without its mixing
+/// warning (applyToChildren2D), only ignoring 3D ones.
+constexpr std::string_view kExtrudeChildren = "linear_extrude children";
+
+constexpr int k2d = 1, k3d = 2;
+
+/// Subtrahends of a lifted difference reach this fraction of the height beyond the minuend's
+/// caps at each end. The result is the same set (the minuend ends at its caps), but no cap
+/// of a subtrahend lies in the plane of a minuend cap, which ray tracers would shade at
+/// random. 0.05 of a 1-unit plate is also what OpenSCAD's preview adds to subtracted 2D
+/// objects (polyset-gl.cc: differences 1.1 thick).
+constexpr double kSubtrahendPad = 0.05;
+
+/// A non-uniform scale with one zero axis flattens the top to a segment, which leaves the
+/// swept mesh open; that axis is scaled by this instead (far below any visible size).
+constexpr double kMinAxisScale = 1e-9;
+
+/// More slices than this are refused: they would only multiply triangles.
+constexpr int kMaxSlices = 100000;
+
+/// Plates drawn for top-level 2D objects, as OpenSCAD's preview draws them (polyset-gl.cc).
+constexpr double kPlateThickness = 1;
+
+bool getVec2(const Value &v, double &x, double &y) {
+    if (!v.isVector() || v.toVector().size() != 2) return false;
+    const auto &e = v.toVector();
+    if (!e[0].isNumber() || !e[1].isNumber()) return false;
+    x = e[0].toNumber();
+    y = e[1].toNumber();
+    return true;
+}
+
+/// The z range an extrusion covers with `pad` more at each end where the scale stays at
+/// least half of what it is at the nearer end (scale 0 at the top: no pad there), and the
+/// scale at both ends of that range.
+struct Range {
+    double za, zb, ka, kb;
+};
+
+Range paddedRange(const ExtrudeSpec &spec, double pad) {
+    double h = spec.z1 - spec.z0, s = spec.scale.x;
+    double padBottom = s > 1 ? std::min(pad, 0.5 * h / (s - 1)) : pad;
+    double padTop = s < 1 ? std::min(pad, 0.5 * s * h / (1 - s)) : pad;
+    auto k = [&](double z) { return 1 + (s - 1) * (z - spec.z0) / h; };
+    Range r;
+    r.za = spec.z0 - padBottom;
+    r.zb = spec.z1 + padTop;
+    r.ka = padBottom == 0 ? 1 : k(r.za);
+    r.kb = padTop == 0 ? s : k(r.zb);
+    return r;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// 2D shapes in the node tree
+
+ir::NodePtr Evaluator::shape2dNode(Shape2d shape, const ModuleInstantiation &inst) {
+    shape.material = resolveMaterial(inst.loc);
+    shape.loc = inst.loc;
+    ir::NodePtr n = newNode(ir::NodeKind::Group, inst.loc);
+    n->label = std::string(kShape2dTag) + std::to_string(shapes2d_.size());
+    shapes2d_.push_back(std::move(shape));
+    return n;
+}
+
+const Shape2d *Evaluator::shape2dOf(const ir::Node &n) const {
+    if (n.kind != ir::NodeKind::Group || !n.children.empty() ||
+        n.label.compare(0, kShape2dTag.size(), kShape2dTag) != 0)
+        return nullptr;
+    size_t i = std::stoul(n.label.substr(kShape2dTag.size()));
+    return i < shapes2d_.size() ? &shapes2d_[i] : nullptr;
+}
+
+int Evaluator::contentsOf(const ir::Node &n) const {
+    if (shape2dOf(n)) return k2d;
+    if (n.kind == ir::NodeKind::Primitive) return k3d;
+    int m = 0;
+    for (const auto &c : n.children) m |= contentsOf(*c);
+    return m;
+}
+
+int Evaluator::dimensionOf(const ir::Node &n) const {
+    if (shape2dOf(n)) return 2;
+    if (n.kind == ir::NodeKind::Primitive) return 3;
+    for (const auto &c : n.children)
+        if (int d = dimensionOf(*c)) return d;
+    return 0;
+}
+
+ir::NodePtr Evaluator::moduleSquare(const ModuleInstantiation &inst, const FramePtr &f) {
+    FramePtr dollars = makeFrame(nullptr);
+    BoundArgs a = bindBuiltin(inst, {"size", "center"}, f, dollars.get());
+    FrameGuard g(dyn_, dollars.get());
+    warnLeafChildren(inst);
+    double x = 1, y = 1;
+    const Value &size = a[0];
+    if (size.isNumber()) {
+        x = y = size.toNumber();
+    } else if (!size.isUndef() && !getVec2(size, x, y)) {
+        warn(a.loc(0), "Unable to convert square(size=" + size.toEchoString() +
+                           ", ...) parameter to a number or a vec2 of numbers");
+        x = y = 1;
+    }
+    bool center = a[1].isBool() && a[1].boolValue();
+    if (!(x > 0 && y > 0) || !std::isfinite(x) || !std::isfinite(y))
+        return emptyPrimitive(inst, "size [" + formatNumber(x) + ", " + formatNumber(y) +
+                                        "] is not positive and finite");
+    Shape2d s;
+    s.kind = Shape2dKind::Square;
+    s.min = center ? Vec2{-x / 2, -y / 2} : Vec2{0, 0};
+    s.max = center ? Vec2{x / 2, y / 2} : Vec2{x, y};
+    return shape2dNode(std::move(s), inst);
+}
+
+ir::NodePtr Evaluator::moduleCircle(const ModuleInstantiation &inst, const FramePtr &f) {
+    FramePtr dollars = makeFrame(nullptr);
+    BoundArgs a = bindBuiltin(inst, {"r", "d"}, f, dollars.get(), 1);
+    FrameGuard g(dyn_, dollars.get());
+    warnLeafChildren(inst);
+    Value rv = radiusArgument(a, inst);
+    double r = rv.isNumber() ? rv.toNumber() : 1;
+    if (!(r > 0) || !std::isfinite(r))
+        return emptyPrimitive(inst, "radius " + formatNumber(r) + " is not positive and finite");
+    Shape2d s;
+    s.kind = Shape2dKind::Circle;
+    s.radius = r;
+    s.fragments = currentFragments(inst.loc);
+    return shape2dNode(std::move(s), inst);
+}
+
+ir::NodePtr Evaluator::modulePolygon(const ModuleInstantiation &inst, const FramePtr &f) {
+    FramePtr dollars = makeFrame(nullptr);
+    BoundArgs a = bindBuiltin(inst, {"points", "paths", "convexity"}, f, dollars.get());
+    FrameGuard g(dyn_, dollars.get());
+    warnLeafChildren(inst);
+    // Points: vec2s of finite numbers; one bad point empties the polygon (an error there)
+    Outline points;
+    if (a[0].isVector()) {
+        const auto &pv = a[0].toVector();
+        points.reserve(pv.size());
+        for (size_t i = 0; i < pv.size(); ++i) {
+            double x, y;
+            if (!getVec2(pv[i], x, y) || !std::isfinite(x) || !std::isfinite(y))
+                return emptyPrimitive(inst, "Unable to convert points[" + std::to_string(i) +
+                                                "] = " + pv[i].toEchoString() +
+                                                " to a vec2 of numbers");
+            points.push_back({x, y});
+        }
+    } else if (!a[0].isUndef()) {
+        warn(a.loc(0), "polygon(points=" + a[0].toEchoString() + ") is not a list of points");
+    }
+    Shape2d s;
+    s.kind = Shape2dKind::Polygon;
+    const Value &paths = a[1];
+    bool noPaths = !paths.isVector() || paths.toVector().empty();
+    if (noPaths) {
+        if (points.size() > 2) s.outlines.push_back(points);
+    } else {
+        // Each path lists point indices; an index is truncated to an unsigned integer and one
+        // out of range is skipped with a warning. A path that is not a list is empty.
+        const auto &pl = paths.toVector();
+        for (size_t p = 0; p < pl.size(); ++p) {
+            Outline o;
+            if (pl[p].isVector()) {
+                const auto &idx = pl[p].toVector();
+                for (size_t k = 0; k < idx.size(); ++k) {
+                    double v = idx[k].isNumber() ? idx[k].toNumber() : 0;
+                    if (v > -1 && v < static_cast<double>(points.size())) {
+                        o.push_back(points[static_cast<size_t>(v)]);
+                    } else {
+                        warn(a.loc(1), "Point index " + formatNumber(v) +
+                                           " is out of bounds (from paths[" + std::to_string(p) +
+                                           "][" + std::to_string(k) + "])");
+                    }
+                }
+            }
+            s.outlines.push_back(std::move(o));
+        }
+    }
+    return shape2dNode(std::move(s), inst);
+}
+
+// ---------------------------------------------------------------------------------------------
+// linear_extrude
+
+ir::NodePtr Evaluator::moduleLinearExtrude(const ModuleInstantiation &inst, const FramePtr &f) {
+    FramePtr dollars = makeFrame(nullptr);
+    // Positional order of 2021.01: file, layer, height, origin, scale, center, twist, slices
+    BoundArgs a = bindBuiltin(inst,
+                              {"file", "layer", "height", "origin", "scale", "center", "twist",
+                               "slices", "convexity"},
+                              f, dollars.get(), 8);
+    FrameGuard g(dyn_, dollars.get());
+    ExtrudeSpec spec;
+    spec.loc = inst.loc;
+    spec.fragments = currentFragments(inst.loc);
+
+    // Height: 100 unless a finite `height`, or a first unnamed number (which binds to `file`)
+    double height = 100;
+    if (a.given[2]) {
+        a[2].getFiniteNumber(height);
+    } else if (!inst.args.empty() && inst.args[0].name.empty() && a[0].isNumber()) {
+        a[0].getFiniteNumber(height);
+    }
+    if (a[0].isString())
+        warn(a.loc(0), "linear_extrude(file=...) (DXF import) is not supported yet; the file "
+                       "is ignored");
+    double ox, oy;
+    if (a.given[3] && !(getVec2(a[3], ox, oy) && std::isfinite(ox) && std::isfinite(oy)))
+        warn(a.loc(3), "linear_extrude(..., origin=" + a[3].toEchoString() +
+                           ") could not be converted");
+    // Scale: a number or a vec2 (a bad one keeps [1, 1]); negative axes clamp to 0
+    Vec2 scale{1, 1};
+    if (a[4].isNumber() && std::isfinite(a[4].toNumber())) {
+        scale = {a[4].toNumber(), a[4].toNumber()};
+    } else if (!a[4].isUndef()) {
+        double sx, sy;
+        if (getVec2(a[4], sx, sy) && std::isfinite(sx) && std::isfinite(sy))
+            scale = {sx, sy};
+        else
+            warn(a.loc(4), "linear_extrude(..., scale=" + a[4].toEchoString() +
+                               ") could not be converted");
+    }
+    scale.x = std::max(scale.x, 0.0);
+    scale.y = std::max(scale.y, 0.0);
+    bool center = a[5].isBool() && a[5].boolValue();
+    a[6].getFiniteNumber(spec.twist);
+    double slices = 0;
+    a[7].getFiniteNumber(slices);
+    spec.sliceArg = slices >= 1 ? static_cast<int>(std::min(slices, 2.0 * kMaxSlices)) : 0;
+
+    // The extrusion takes the colour and material at the call, as OpenSCAD's preview does
+    spec.material = resolveMaterial(inst.loc);
+    ir::NodePtr children = newNode(ir::NodeKind::Group, inst.loc);
+    children->label = kExtrudeChildren;
+    instantiateChildren(inst, f, children->children);
+    ir::NodePtr out = newNode(ir::NodeKind::Group, inst.loc);
+    out->label = "linear_extrude";
+    if (!(height > 0)) {
+        warn(inst.loc, "linear_extrude(): height " + formatNumber(height) +
+                           " is not positive; OpenSCAD makes empty geometry");
+        return out;
+    }
+    spec.z0 = center ? -height / 2 : 0;
+    spec.z1 = center ? height / 2 : height;
+    if ((scale.x == 0) != (scale.y == 0)) {
+        (scale.x == 0 ? scale.x : scale.y) = kMinAxisScale;
+    }
+    spec.scale = scale;
+    spec.meshPath = spec.twist != 0 || scale.x != scale.y;
+    if (spec.meshPath) {
+        // One slice count for the whole 2D child, from its farthest points (extrudePolygon)
+        double rSqr = 0, deltaSqr = 0;
+        extentOf2d(*children, Affine2(), scale, rSqr, deltaSqr);
+        spec.slices = extrudeSlices(spec.sliceArg, height, spec.twist, scale, rSqr, deltaSqr,
+                                    spec.fragments);
+        if (spec.slices > kMaxSlices) {
+            warn(inst.loc, "linear_extrude(): " + std::to_string(spec.slices) +
+                               " slices are too many; using " + std::to_string(kMaxSlices));
+            spec.slices = kMaxSlices;
+        }
+    }
+    if (ir::NodePtr solid = lift2d(*children, spec, Affine2(), 0))
+        out->children.push_back(std::move(solid));
+    return out;
+}
+
+void Evaluator::extentOf2d(const ir::Node &n, const Affine2 &placed, Vec2 scale, double &rSqr,
+                           double &deltaSqr) const {
+    if (const Shape2d *s = shape2dOf(n)) {
+        for (const Outline &o : shapeOutlines(*s))
+            for (Vec2 p : o) {
+                Vec2 v = placed.apply(p);
+                rSqr = std::max(rSqr, v.x * v.x + v.y * v.y);
+                Vec2 d{v.x - v.x * scale.x, v.y - v.y * scale.y};
+                deltaSqr = std::max(deltaSqr, d.x * d.x + d.y * d.y);
+            }
+        return;
+    }
+    if (n.kind == ir::NodeKind::Primitive || dimensionOf(n) == 3) return;
+    Affine2 inner = placed;
+    if (n.kind == ir::NodeKind::Transform) inner = placed * Affine2::fromMat4(n.matrix);
+    for (const auto &c : n.children) extentOf2d(*c, inner, scale, rSqr, deltaSqr);
+}
+
+ir::NodePtr Evaluator::makeLifted(ir::PrimShape shape, int material, const SourceLoc &loc) {
+    if (++nodes_ > limits_.maxNodes)
+        throw EvalError(loc,
+                        "too many geometry nodes: more than " + std::to_string(limits_.maxNodes));
+    return ir::Node::makePrimitive(std::move(shape), material, loc);
+}
+
+ir::NodePtr Evaluator::lift2d(const ir::Node &n, const ExtrudeSpec &spec, const Affine2 &placed,
+                              double pad) {
+    if (const Shape2d *s = shape2dOf(n)) return liftShape(*s, spec, placed, pad);
+    if (n.kind == ir::NodeKind::Primitive) return nullptr;
+
+    // A transform: in 3D for preview plates; else its 2D part (rows and columns 0, 1, 3),
+    // folded into the outlines on the mesh path or lifted to an exact 3D affine map
+    Affine2 inner = placed;
+    ir::NodePtr out;
+    if (n.kind == ir::NodeKind::Transform) {
+        Affine2 t = Affine2::fromMat4(n.matrix);
+        if (spec.previewTransforms && n.matrix.affineInverse()) {
+            out = newNode(ir::NodeKind::Transform, n.loc);
+            out->matrix = n.matrix;
+        } else if (!(t.det() != 0)) {
+            warn(n.loc, "Scaling a 2D object with 0 - removing object");
+            return nullptr;
+        } else if (spec.meshPath) {
+            inner = placed * t;
+            out = newNode(ir::NodeKind::Group, n.loc);
+        } else {
+            // E(A p) = S (M (+) 1) E(p), S(x, y, z) = (x + t k(z), z) with k(z) affine in z
+            double beta = (spec.scale.x - 1) / (spec.z1 - spec.z0);
+            Mat4 m;
+            m.m[0][0] = t.m00;
+            m.m[0][1] = t.m01;
+            m.m[1][0] = t.m10;
+            m.m[1][1] = t.m11;
+            m.m[0][2] = t.tx * beta;
+            m.m[1][2] = t.ty * beta;
+            m.m[0][3] = t.tx * (1 - beta * spec.z0);
+            m.m[1][3] = t.ty * (1 - beta * spec.z0);
+            out = newNode(ir::NodeKind::Transform, n.loc);
+            out->matrix = m;
+        }
+    } else {
+        out = newNode(n.kind, n.loc);
+    }
+    out->label = n.label;
+    out->highlight = n.highlight;
+
+    // Children: 3D ones are ignored, with OpenSCAD's warnings; a difference's subtrahends
+    // reach beyond the minuend's caps
+    int firstDim = 0;
+    bool mixWarned = false;
+    size_t operands = 0;
+    double step = kSubtrahendPad * (spec.z1 - spec.z0);
+    for (const auto &c : n.children) {
+        int d = dimensionOf(*c);
+        if (d == 0) continue;
+        if (!firstDim) firstDim = d;
+        if (d == 3) {
+            if (firstDim == 2 && !mixWarned && n.label != kExtrudeChildren) {
+                warn(n.loc, "Mixing 2D and 3D objects is not supported");
+                mixWarned = true;
+            }
+            warn(c->loc, "Ignoring 3D child object for 2D operation");
+            continue;
+        }
+        bool subtrahend = n.kind == ir::NodeKind::Difference && operands > 0;
+        ir::NodePtr lifted = lift2d(*c, spec, inner, subtrahend ? pad + step : pad);
+        ++operands;
+        if (lifted) {
+            out->children.push_back(std::move(lifted));
+        } else if ((n.kind == ir::NodeKind::Difference && operands == 1) ||
+                   n.kind == ir::NodeKind::Intersection) {
+            return nullptr;  // nothing to subtract from, or to intersect with
+        }
+    }
+    return out;
+}
+
+ir::NodePtr Evaluator::sweptSolid(const Outline &ccw, const ExtrudeSpec &spec, double pad,
+                                  int material, const SourceLoc &loc) {
+    Sweep sweep;
+    if (spec.meshPath) {
+        sweep.z0 = spec.z0;
+        sweep.z1 = spec.z1;
+        sweep.scale1 = spec.scale;
+        sweep.rot1 = spec.twist;
+        sweep.slices = spec.slices;
+    } else {
+        Range r = paddedRange(spec, pad);
+        if (isConvex(ccw))
+            return makeLifted(sweepPolytope(ccw, r.za, r.zb, r.ka, r.kb), material, loc);
+        sweep.z0 = r.za;
+        sweep.z1 = r.zb;
+        sweep.scale0 = {r.ka, r.ka};
+        sweep.scale1 = {r.kb, r.kb};
+    }
+    ir::Mesh mesh;
+    mesh.name = "linear_extrude";
+    mesh.loc = loc;
+    if (!sweepMesh(ccw, sweep, mesh)) {
+        warn(loc, "linear_extrude(): an outline of no area is left out");
+        return nullptr;
+    }
+    return makeLifted(ir::MeshPrim{addMesh(std::move(mesh))}, material, loc);
+}
+
+ir::NodePtr Evaluator::liftShape(const Shape2d &s, const ExtrudeSpec &spec, const Affine2 &placed,
+                                 double pad) {
+    int material = spec.material >= 0 ? spec.material : s.material;
+    if (!spec.meshPath && s.kind == Shape2dKind::Square) {
+        Range r = paddedRange(spec, pad);
+        if (r.ka == 1 && r.kb == 1) {
+            ir::BoxPrim box;
+            box.min = Vec3(s.min.x, s.min.y, r.za);
+            box.max = Vec3(s.max.x, s.max.y, r.zb);
+            return makeLifted(box, material, s.loc);
+        }
+        return makeLifted(sweepPolytope(shapeOutlines(s)[0], r.za, r.zb, r.ka, r.kb), material,
+                          s.loc);
+    }
+    if (!spec.meshPath && s.kind == Shape2dKind::Circle) {
+        // A cylinder, or a cone when scaled; its polygon has the circle's fragment count
+        Range r = paddedRange(spec, pad);
+        ir::CylinderPrim c{r.za, r.zb, s.radius * r.ka, s.radius * r.kb};
+        // The facets pass counts from the larger radius: $fs grows with it, so that
+        // 2 pi r / $fs, and the count, stay the circle's ($fn, when set, does not depend on r)
+        ir::Fragments fr = s.fragments;
+        if (fr.fn <= 0) fr.fs *= std::max(c.r1, c.r2) / s.radius;
+        ir::NodePtr node = makeLifted(c, material, s.loc);
+        node->fragments = fr;
+        return node;
+    }
+
+    // Outlines (placed on the mesh path), cleaned, as even-odd regions with holes
+    std::vector<Outline> outlines;
+    for (Outline o : shapeOutlines(s)) {
+        for (Vec2 &p : o) p = placed.apply(p);
+        o = cleanOutline(o);
+        if (!o.empty()) outlines.push_back(std::move(o));
+    }
+    if (outlines.empty()) {
+        warn(s.loc, "polygon(): no outline with area; nothing to extrude");
+        return nullptr;
+    }
+    if (s.kind == Shape2dKind::Polygon && outlinesIntersect(outlines))
+        warn(s.loc, "polygon(): outlines that cross themselves or each other are not supported "
+                    "yet; they are filled by nesting, not by OpenSCAD's even-odd rule");
+    std::vector<Region> regions = evenOddRegions(outlines);
+    double step = kSubtrahendPad * (spec.z1 - spec.z0);
+    ir::NodePtr group = newNode(ir::NodeKind::Group, s.loc);
+    for (const Region &region : regions) {
+        ir::NodePtr solid = sweptSolid(region.outer, spec, pad, material, s.loc);
+        if (!solid) continue;
+        if (!region.holes.empty()) {
+            ir::NodePtr diff = newNode(ir::NodeKind::Difference, s.loc);
+            diff->children.push_back(std::move(solid));
+            for (const Outline &hole : region.holes)
+                if (ir::NodePtr h = sweptSolid(hole, spec, pad + step, material, s.loc))
+                    diff->children.push_back(std::move(h));
+            solid = std::move(diff);
+        }
+        group->children.push_back(std::move(solid));
+    }
+    if (group->children.size() == 1) return std::move(group->children[0]);
+    return group;
+}
+
+// ---------------------------------------------------------------------------------------------
+// 2D objects outside any extrusion
+
+int Evaluator::finish2d(ir::Node &n, bool top) {
+    if (shape2dOf(n)) return k2d;
+    if (n.kind == ir::NodeKind::Primitive) return k3d;
+    std::vector<int> masks;
+    int all = 0;
+    for (auto &c : n.children) {
+        masks.push_back(finish2d(*c, false));
+        all |= masks.back();
+    }
+    // Where 3D meets 2D, and at the top, the pure 2D children become plates
+    if (all != (k2d | k3d) && !(top && all == k2d)) return all;
+    bool pure2d = std::find(masks.begin(), masks.end(), k2d) != masks.end();
+    bool with3d = std::any_of(masks.begin(), masks.end(), [](int m) { return m & k3d; });
+    if (pure2d && with3d) warn(n.loc, "Mixing 2D and 3D objects is not supported");
+    ExtrudeSpec plate;
+    plate.z0 = -kPlateThickness / 2;
+    plate.z1 = kPlateThickness / 2;
+    plate.previewTransforms = true;
+    size_t operands = 0;
+    for (size_t i = 0; i < n.children.size(); ++i) {
+        if (masks[i] == 0) continue;
+        bool subtrahend = n.kind == ir::NodeKind::Difference && operands++ > 0;
+        if (masks[i] != k2d) continue;
+        if (!plateWarned_) {
+            warn(n.children[i]->loc,
+                 "2D objects outside linear_extrude() are drawn as OpenSCAD's preview draws "
+                 "them: plates 1 unit thick, from z = -0.5 to 0.5");
+            plateWarned_ = true;
+        }
+        ir::NodePtr lifted = lift2d(*n.children[i], plate, Affine2(),
+                                    subtrahend ? kSubtrahendPad * kPlateThickness : 0);
+        n.children[i] = lifted ? std::move(lifted) : newNode(ir::NodeKind::Group, n.loc);
+    }
+    return all;
+}
+
+}  // namespace rt::scad

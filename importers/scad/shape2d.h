@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: MIT
+// The importer's 2D shapes (square, circle, polygon) and the outline geometry that linear
+// extrusion needs; none of it reaches the IR, which is 3D only.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/ir/node.h"
+#include "core/ir/source_loc.h"
+
+namespace rt::scad {
+
+struct Vec2 {
+    double x = 0, y = 0;
+};
+
+inline Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
+inline Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
+inline bool operator==(Vec2 a, Vec2 b) { return a.x == b.x && a.y == b.y; }
+inline bool operator!=(Vec2 a, Vec2 b) { return !(a == b); }
+
+/// A closed polygon outline (the last point joins the first).
+using Outline = std::vector<Vec2>;
+
+/// A 2D affine map p -> M p + t, as OpenSCAD applies a 4x4 transform to 2D objects (rows and
+/// columns 0, 1 and 3 of the matrix).
+struct Affine2 {
+    double m00 = 1, m01 = 0, m10 = 0, m11 = 1, tx = 0, ty = 0;
+
+    static Affine2 fromMat4(const Mat4 &m);
+    Vec2 apply(Vec2 p) const { return {m00 * p.x + m01 * p.y + tx, m10 * p.x + m11 * p.y + ty}; }
+    double det() const { return m00 * m11 - m01 * m10; }
+    Affine2 operator*(const Affine2 &o) const;
+    bool isIdentity() const;
+};
+
+enum class Shape2dKind { Square, Circle, Polygon };
+
+/// One 2D primitive as its module made it. The evaluator keeps these beside the node tree.
+struct Shape2d {
+    Shape2dKind kind = Shape2dKind::Square;
+    Vec2 min, max;                  ///< Square: its corners
+    double radius = 1;              ///< Circle
+    ir::Fragments fragments;        ///< Circle: $fn/$fa/$fs at the call
+    std::vector<Outline> outlines;  ///< Polygon: the paths, filled by the even-odd rule
+    int material = -1;              ///< material at the call (top-level 2D keeps its own)
+    SourceLoc loc;
+};
+
+/// The shape's outlines as OpenSCAD 2021.01 builds them (a circle is its n-gon).
+std::vector<Outline> shapeOutlines(const Shape2d &s);
+
+/// Twice the signed area (positive when counter-clockwise).
+double twiceSignedArea(const Outline &o);
+
+/// Drops repeated points and corners on a straight line (relative tolerance), so that
+/// convexity and orientation tests see a proper polygon. Fewer than 3 points: no area.
+Outline cleanOutline(const Outline &o);
+
+/// A cleaned, counter-clockwise outline that turns left at every corner and winds once.
+bool isConvex(const Outline &ccw);
+
+/// Even-odd point-in-outline test.
+bool insideOutline(Vec2 p, const Outline &o);
+
+/// Whether any two edges of the outlines cross or overlap (not counting edges meeting at a
+/// shared corner of one outline).
+bool outlinesIntersect(const std::vector<Outline> &outlines);
+
+/// The even-odd fill of non-crossing outlines as disjoint regions: an outer outline (nesting
+/// depth even) minus the outlines directly inside it. All outlines are counter-clockwise.
+struct Region {
+    Outline outer;
+    std::vector<Outline> holes;
+};
+std::vector<Region> evenOddRegions(const std::vector<Outline> &outlines);
+
+}  // namespace rt::scad
