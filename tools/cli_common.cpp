@@ -3,8 +3,14 @@
 #include "tools/cli_common.h"
 
 #include <CLI/CLI.hpp>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <stdexcept>
 
 #include "core/image/image_io.h"
@@ -16,23 +22,69 @@
 
 namespace rt::cli {
 
+namespace {
+
+/// A .scad evaluation shows its progress line after this long.
+constexpr auto kProgressDelay = std::chrono::seconds(1);
+/// and updates it at most this often.
+constexpr auto kProgressInterval = std::chrono::milliseconds(250);
+
+/// Whether the `evaluating:` line is on the terminal (it is written from the evaluating
+/// thread): a diagnostic, or the end of the evaluation, clears it first.
+std::atomic<bool> progressLineShown{false};
+
+void clearProgressLine() {
+    if (progressLineShown.exchange(false)) std::fputs("\r\033[K", stderr);
+}
+
+/// An ImportOptions::progress that prints the step count once the evaluation is slow.
+std::function<void(int64_t)> evaluationProgress() {
+    auto start = std::chrono::steady_clock::now();
+    auto next = start + kProgressDelay;
+    return [next](int64_t steps) mutable {
+        auto now = std::chrono::steady_clock::now();
+        if (now < next) return;
+        next = now + kProgressInterval;
+        std::fprintf(stderr, "\revaluating: %.1f M steps", static_cast<double>(steps) / 1e6);
+        std::fflush(stderr);
+        progressLineShown = true;
+    };
+}
+
+}  // namespace
+
 void SceneArgs::addTo(CLI::App &cmd) {
     cmd.add_option("scene", input, "Scene file (.scad, .gltf, .glb, .stl, .off)")->required();
     cmd.add_option("-D,--define", defines, "Override a top-level variable: name=value");
     cmd.add_option("-L,--library", libraries, "Extra folder searched by include<> and use<>");
+    cmd.add_option("--facets", facets,
+                   "Spheres and cylinders: smooth (exactly round), openscad (OpenSCAD's $fn/$fa/$fs "
+                   "polygons) or auto (polygons where $fn gives at most " +
+                       std::to_string(ir::kAutoFacetMaxFragments) + " fragments)")
+        ->check(CLI::IsMember({"smooth", "openscad", "auto"}));
+    cmd.add_option("--max-steps", maxSteps,
+                   "Cap on .scad evaluation steps (calls, loop iterations, module instances) "
+                   "that stops runaway programs; 0 = no cap")
+        ->check(CLI::Range(int64_t{0}, std::numeric_limits<int64_t>::max()))
+        ->capture_default_str();
 }
 
 LoadOptions SceneArgs::loadOptions(bool quiet) const {
     LoadOptions lo;
     lo.quiet = quiet;
+    lo.maxSteps = maxSteps;
     lo.libraryPaths = libraries;
     for (const auto &d : defines) lo.defines.push_back(parseDefine(d));
+    auto mode = ir::parseFacetMode(facets);
+    if (!mode) throw std::invalid_argument("--facets must be smooth, openscad or auto");
+    lo.facets = *mode;
     return lo;
 }
 
 void attachPrinter(DiagnosticSink &diag, bool quiet) {
     diag.setListener([quiet](const Diagnostic &d) {
         if (quiet && d.severity == Severity::Note) return;
+        clearProgressLine();
         std::cerr << formatDiagnostic(d, d.severity != Severity::Note) << "\n";
     });
 }
@@ -49,19 +101,29 @@ ir::Scene loadScene(const std::string &path, DiagnosticSink &diag, const LoadOpt
         scad::ImportOptions io;
         io.libraryPaths = opts.libraryPaths;
         io.defines = opts.defines;
+        io.maxSteps = opts.maxSteps;
+        if (!opts.quiet && isatty(STDERR_FILENO)) io.progress = evaluationProgress();
+        struct ClearAtEnd {
+            ~ClearAtEnd() { clearProgressLine(); }
+        } clearAtEnd;
         scene = scad::importScad(path, diag, io);
     } else if (ext == ".gltf" || ext == ".glb") {
         scene = gltf::importGltf(path, diag);
     } else if (ext == ".stl" || ext == ".off") {
-        // A bare mesh file: one mesh in OpenSCAD's default colour
+        // A bare mesh file: one mesh in OpenSCAD's default colour; a file without triangles
+        // is an empty scene, as an empty .scad is
         auto mesh = std::make_shared<ir::Mesh>(meshio::readMeshFile(path, diag));
-        scene.meshes.push_back(mesh);
-        scene.root->children.push_back(ir::Node::makePrimitive(
-            ir::MeshPrim{0}, scene.addMaterial(ir::Material()), mesh->loc));
+        if (!mesh->triangles.empty()) {
+            scene.meshes.push_back(mesh);
+            scene.root->children.push_back(ir::Node::makePrimitive(
+                ir::MeshPrim{0}, scene.addMaterial(ir::Material()), mesh->loc));
+        }
     } else {
         throw std::runtime_error(path + ": unknown scene type '" + ext +
                                  "' (scadray reads .scad, .gltf, .glb, .stl and .off)");
     }
+    // Facets first: the automatic camera frames the solids as they will be drawn
+    ir::applyFacets(scene, opts.facets, diag);
     ir::completeScene(scene, diag);
     return scene;
 }

@@ -3,6 +3,7 @@
 // diagnostics, and the exit codes.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "core/ir/diagnostics.h"
 #include "core/ir/scene_ir.h"
 #include "exporters/povray/pov_runner.h"
+#include "importers/scad/scad_importer.h"
 
 namespace CLI {
 class App;
@@ -26,13 +28,19 @@ constexpr int kExitUsage = 2;
 struct LoadOptions {
     std::vector<std::string> libraryPaths;
     std::vector<std::pair<std::string, std::string>> defines;
-    bool quiet = false;
+    bool quiet = false;  ///< no progress line while a long .scad evaluates
+    /// How spheres and cylinders are drawn (`--facets`).
+    ir::FacetMode facets = ir::FacetMode::Auto;
+    int64_t maxSteps = scad::kDefaultMaxSteps;  ///< .scad evaluation step cap; 0 = none
 };
 
-/// The scene argument and the options every scene-reading subcommand takes (-D, -L).
+/// The scene argument and the options every scene-reading subcommand takes (-D, -L,
+/// --max-steps, --facets).
 struct SceneArgs {
     std::string input;
     std::vector<std::string> defines, libraries;
+    std::string facets = "auto";
+    int64_t maxSteps = scad::kDefaultMaxSteps;
 
     /// Registers the positional scene and -D/-L on a subcommand.
     void addTo(CLI::App &cmd);
@@ -40,11 +48,14 @@ struct SceneArgs {
     LoadOptions loadOptions(bool quiet) const;
 };
 
-/// Prints warnings (and notes unless quiet) to stderr as they are reported.
+/// Prints warnings (and notes unless quiet) to stderr as they are reported, first clearing
+/// the progress line of a long evaluation if one is shown.
 void attachPrinter(DiagnosticSink &diag, bool quiet);
 
 /// Reads a scene by extension (.scad) and completes it (automatic camera, default lights).
-/// Throws LocatedError for problems in the file, std::runtime_error for others.
+/// Throws LocatedError for problems in the file, std::runtime_error for others. A .scad
+/// evaluation that takes over a second shows an `evaluating: N M steps` line on a terminal
+/// stderr (unless opts.quiet), cleared when it ends.
 ir::Scene loadScene(const std::string &path, DiagnosticSink &diag, const LoadOptions &opts);
 
 /// POV-Ray's picture of a scene, as `check` and `converge` take it: exported to

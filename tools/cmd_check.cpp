@@ -151,7 +151,7 @@ int runCheck(const CheckArgs &a) {
 
     DiagnosticSink diag;
     attachPrinter(diag, true);
-    ir::Scene scene = loadScene(a.scene.input, diag, a.scene.loadOptions(true));
+    ir::Scene scene = loadScene(a.scene.input, diag, a.scene.loadOptions(a.quiet));
 
     // POV-Ray: export, render k times larger without antialiasing, box-downsample
     PovReference pov = renderPovReference(scene, dir.string(), stem,

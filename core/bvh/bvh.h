@@ -3,6 +3,7 @@
 // 4.3.2), flattened depth-first nodes, front-to-back traversal with a caller-supplied visitor.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -60,7 +61,10 @@ inline bool Bvh::hitNode(const Bounds3 &b, const Ray &ray, const Vec3 &invDir,
     for (int i = 0; i < 3; ++i) {
         double tNear = ((*corners[dirIsNeg[i]])[i] - ray.o[i]) * invDir[i];
         double tFar = ((*corners[1 - dirIsNeg[i]])[i] - ray.o[i]) * invDir[i];
-        tFar *= 1 + 2 * gamma(3);
+        // Grow the far distance by its rounding error (pbrt's 1 + 2 gamma(3)) away from zero:
+        // span queries look behind the origin too (tMin = -inf), and scaling a negative tFar
+        // would shrink it, so a flat node (one face of a mesh) behind the origin was missed
+        tFar += 2 * gamma(3) * std::abs(tFar);
         t0 = tNear > t0 ? tNear : t0;
         t1 = tFar < t1 ? tFar : t1;
         if (t0 > t1) return false;

@@ -17,6 +17,8 @@ std::unique_ptr<Primitive> Primitive::create(const ir::PrimShape &shape) {
     if (const auto *b = std::get_if<ir::BoxPrim>(&shape)) return std::make_unique<Box>(b->min, b->max);
     if (const auto *c = std::get_if<ir::CylinderPrim>(&shape))
         return std::make_unique<Cone>(c->z0, c->z1, c->r1, c->r2);
+    if (const auto *p = std::get_if<ir::PolytopePrim>(&shape))
+        return std::make_unique<ConvexPolytope>(*p);
     throw std::logic_error("Primitive::create: meshes are MeshInstances, not primitives");
 }
 
@@ -207,6 +209,73 @@ ObjectSurface Cone::surface(const Vec3 &p, int face) const {
     Vec3 n(refined.x, refined.y, -rz * slope_);
     if (lengthSquared(n) == 0) n = Vec3(0, 0, slope_ > 0 ? 1 : -1);  // apex
     return {refined, abs(refined) * gamma(6), n};
+}
+
+// ---------------------------------------------------------------------------------------------
+// Convex polytope
+
+ConvexPolytope::ConvexPolytope(const ir::PolytopePrim &p) : planes_(ir::polytopePlanes(p)) {
+    for (const Vec3 &v : p.vertices) bounds_ = unionBounds(bounds_, v);
+}
+
+bool ConvexPolytope::intersect(const Ray &r, PrimitiveSpan *span) const {
+    double t0 = -kInfinity, t1 = kInfinity;
+    int face0 = -1, face1 = -1;
+    for (size_t i = 0; i < planes_.size(); ++i) {
+        const ir::FacePlane &pl = planes_[i];
+        // Signed distance of the origin outside the plane, and the rate the ray closes on it;
+        // an axis plane reads its coordinate directly, as Box does
+        double dist, rate;
+        if (pl.axis >= 0) {
+            dist = pl.normal[pl.axis] * r.o[pl.axis] - pl.offset;
+            rate = pl.normal[pl.axis] * r.d[pl.axis];
+        } else {
+            dist = dot(pl.normal, r.o) - pl.offset;
+            rate = dot(pl.normal, r.d);
+        }
+        if (rate == 0) {
+            // Parallel: inside this half-space everywhere or nowhere
+            if (dist > 0) return false;
+            continue;
+        }
+        double t = -dist / rate;
+        if (rate < 0) {
+            if (t > t0) {
+                t0 = t;
+                face0 = static_cast<int>(i);
+            }
+        } else if (t < t1) {
+            t1 = t;
+            face1 = static_cast<int>(i);
+        }
+        // The half-spaces already leave nothing of the line
+        if (!(t0 < t1)) return false;
+    }
+    if (face0 < 0 || face1 < 0) return false;
+    *span = {t0, t1, face0, face1};
+    return true;
+}
+
+bool ConvexPolytope::inside(const Vec3 &p) const {
+    for (const auto &pl : planes_)
+        if (dot(pl.normal, p) > pl.offset) return false;
+    return true;
+}
+
+ObjectSurface ConvexPolytope::surface(const Vec3 &p, int face) const {
+    const ir::FacePlane &pl = planes_[face];
+    if (pl.axis >= 0) {
+        // The face coordinate is exact; the others carry the error of o + t d
+        Vec3 refined = p;
+        refined[pl.axis] = pl.normal[pl.axis] * pl.offset;
+        Vec3 err = abs(refined) * gamma(3);
+        err[pl.axis] = 0;
+        return {refined, err, pl.normal};
+    }
+    // Project onto the plane; the projection adds a few roundings of |p| and of the offset
+    Vec3 refined = p - pl.normal * (dot(pl.normal, p) - pl.offset);
+    Vec3 err = abs(refined) * gamma(6) + Vec3(std::abs(pl.offset) * gamma(4));
+    return {refined, err, pl.normal};
 }
 
 }  // namespace rt

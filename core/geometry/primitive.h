@@ -4,7 +4,9 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
+#include "core/ir/facets.h"
 #include "core/ir/node.h"
 #include "core/math/bounds3.h"
 #include "core/math/ray.h"
@@ -77,6 +79,24 @@ class Cone final : public Primitive {
 
     double z0_, z1_, r1_, r2_;
     double slope_;  ///< dr/dz
+};
+
+/// Convex polytope (OpenSCAD's faceted sphere, cylinder, cone; hulls): the intersection of
+/// its faces' half-spaces, so the line's span is the latest entry and the earliest exit over
+/// the planes (Kay and Kajiya 1986; Haines, "Fast ray-convex polyhedron intersection",
+/// Graphics Gems II). Face i of a span is plane i.
+class ConvexPolytope final : public Primitive {
+  public:
+    explicit ConvexPolytope(const ir::PolytopePrim &p);
+    Bounds3 objectBounds() const override { return bounds_; }
+    bool intersect(const Ray &r, PrimitiveSpan *span) const override;
+    bool inside(const Vec3 &p) const override;
+    ObjectSurface surface(const Vec3 &p, int face) const override;
+    size_t planeCount() const { return planes_.size(); }
+
+  private:
+    std::vector<ir::FacePlane> planes_;
+    Bounds3 bounds_;
 };
 
 }  // namespace rt

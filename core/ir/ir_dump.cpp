@@ -53,6 +53,19 @@ void dumpNode(const Node &n, int indent, std::ostringstream &os) {
                 os << "box min " << vec(b->min) << " max " << vec(b->max);
             else if (const auto *m = std::get_if<MeshPrim>(&n.shape))
                 os << "mesh " << m->mesh;
+            else if (const auto *p = std::get_if<PolytopePrim>(&n.shape)) {
+                os << "polytope vertices [";
+                for (size_t i = 0; i < p->vertices.size(); ++i)
+                    os << (i ? " " : "") << vec(p->vertices[i]);
+                os << "] faces [";
+                for (size_t i = 0; i < p->faces.size(); ++i) {
+                    os << (i ? " [" : "[");
+                    for (size_t j = 0; j < p->faces[i].size(); ++j)
+                        os << (j ? " " : "") << p->faces[i][j];
+                    os << "]";
+                }
+                os << "]";
+            }
             else {
                 const auto &c = std::get<CylinderPrim>(n.shape);
                 os << "cylinder z0 " << formatNumber(c.z0) << " z1 " << formatNumber(c.z1)

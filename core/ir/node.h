@@ -36,7 +36,15 @@ struct MeshPrim {
     int mesh = -1;
 };
 
-using PrimShape = std::variant<SpherePrim, BoxPrim, CylinderPrim, MeshPrim>;
+/// A convex polytope: the intersection of the half-spaces behind its faces. Faces are planar
+/// vertex loops, counter-clockwise seen from outside; OpenSCAD's faceted spheres, cylinders
+/// and cones (`--facets openscad`) and hulls are such solids.
+struct PolytopePrim {
+    std::vector<Vec3> vertices;
+    std::vector<std::vector<int>> faces;
+};
+
+using PrimShape = std::variant<SpherePrim, BoxPrim, CylinderPrim, MeshPrim, PolytopePrim>;
 
 /// OpenSCAD's $fn/$fa/$fs at the primitive, for the tessellated comparison mode.
 struct Fragments {

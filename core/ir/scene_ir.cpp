@@ -104,6 +104,11 @@ Bounds3 primitiveBounds(const PrimShape &shape, const Scene *scene) {
     if (const auto *s = std::get_if<SpherePrim>(&shape))
         return Bounds3(Vec3(-s->radius), Vec3(s->radius));
     if (const auto *b = std::get_if<BoxPrim>(&shape)) return Bounds3(b->min, b->max);
+    if (const auto *p = std::get_if<PolytopePrim>(&shape)) {
+        Bounds3 bounds;
+        for (const Vec3 &v : p->vertices) bounds = unionBounds(bounds, v);
+        return bounds;
+    }
     const auto &c = std::get<CylinderPrim>(shape);
     double r = std::max(c.r1, c.r2);
     return Bounds3(Vec3(-r, -r, c.z0), Vec3(r, r, c.z1));

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/ir/camera.h"
+#include "core/ir/facets.h"
 #include "core/ir/light.h"
 #include "core/ir/material.h"
 #include "core/ir/mesh.h"
@@ -35,6 +36,8 @@ struct ImportStats {
     int backgroundParts = 0;   ///< `%` subtrees (OpenSCAD excludes them from renders)
     int disabledParts = 0;     ///< `*` subtrees
     int skippedModules = 0;    ///< unsupported modules skipped with a warning
+    /// How round primitives were drawn (`--facets`); unset when the pass did not run.
+    std::optional<FacetStats> facets;
 };
 
 struct Scene {
@@ -46,6 +49,8 @@ struct Scene {
     std::optional<Camera> camera;
     Settings settings;
     ImportStats stats;
+    /// Font files a .scad registered with use<x.ttf> (for text()), in order of registration.
+    std::vector<std::string> fontFiles;
 
     /// Returns the index of a material with the same appearance, adding it if new.
     /// Constant time on average: materials are indexed by a hash of their appearance.

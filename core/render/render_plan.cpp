@@ -111,6 +111,8 @@ std::string describePlan(const RenderScene &scene, const ir::ImportStats &import
        << ", " << plural(u.unused, "unused material", "unused materials") << " (of "
        << scene.materials().size() << ")\n";
 
+    if (imported.facets) os << "  facets: " << imported.facets->describe() << "\n";
+
     // Acceleration
     os << "  acceleration: ";
     if (st.objects <= 1)

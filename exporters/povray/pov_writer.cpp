@@ -339,6 +339,16 @@ class Writer {
                 shape = "box { " + vec(b->min) + ", " + vec(b->max);
             else if (const auto *mp = std::get_if<ir::MeshPrim>(&cur->shape))
                 shape = "object { Mesh_" + std::to_string(mp->mesh);
+            else if (const auto *p = std::get_if<ir::PolytopePrim>(&cur->shape)) {
+                // A convex polytope is exactly the intersection of its faces' half-spaces
+                // (POV-Ray's plane is inside on the side opposite its normal), so it stays a
+                // solid in CSG with no mesh parity tests
+                shape = "intersection {";
+                std::string pad(4 * (indent + 1), ' ');
+                for (const auto &pl : ir::polytopePlanes(*p))
+                    shape += "\n" + pad + "plane { " + vec(pl.normal) + ", " + num(pl.offset) + " }";
+                shape += "\n" + pad;
+            }
             else {
                 const auto &c = std::get<ir::CylinderPrim>(cur->shape);
                 shape = "cone { <0, 0, " + num(c.z0) + ">, " + num(c.r1) + ", <0, 0, " +

@@ -14,8 +14,10 @@ namespace rt::meshio {
 
 /// Reads an STL file (binary or ASCII, told apart by size and content, not by the "solid"
 /// prefix). Identical vertex positions are merged, so closedness can be judged. Problems are
-/// ParseErrors at file:line:col (ASCII) or at the file with a byte offset (binary); a file
-/// without triangles is one too.
+/// ParseErrors at file:line:col (ASCII) or at the file with a byte offset (binary), and so is
+/// a file whose triangles are all degenerate. A file without triangles (an empty file, a
+/// solid without facets, a binary count of 0) gives an empty mesh: OpenSCAD imports it as
+/// empty geometry.
 ir::Mesh readStl(const std::string &path, DiagnosticSink &diag);
 
 /// Reads an OFF file (polygons are triangulated). Problems are ParseErrors at file:line:col.

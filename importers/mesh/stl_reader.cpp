@@ -75,7 +75,7 @@ ir::Mesh readBinary(const std::string &path, const std::string &data,
                     const std::shared_ptr<const std::string> &file, DiagnosticSink &diag) {
     uint32_t count = readLe32(data.data() + kHeaderBytes);
     ir::Mesh mesh = newMesh(path, file);
-    if (count == 0) throw detail::byteError(file, kHeaderBytes, "binary STL holds no triangles");
+    if (count == 0) return mesh;
     detail::PositionWelder welder(mesh.positions);
     welder.reserve(count / 2 + 3);
     mesh.triangles.reserve(count);
@@ -117,7 +117,7 @@ class AsciiStlParser {
         detail::PositionWelder welder(mesh.positions);
         size_t degenerate = 0;
         Token t;
-        if (!scan_.next(t)) throw ParseError(scan_.endLoc(), "empty file: expected 'solid'");
+        if (!scan_.next(t)) return mesh;  // nothing at all, as OpenSCAD reads it: no triangles
         if (!detail::equalsKeyword(t.text, "solid"))
             throw ParseError(scan_.loc(t), "unexpected '" + std::string(t.text) +
                                                "': expected 'solid' (not an STL file?)");
@@ -143,10 +143,8 @@ class AsciiStlParser {
             detail::checkIndexRange(mesh.positions.size(), mesh.loc);
         }
         noteDegenerate(diag_, mesh, degenerate);
-        if (mesh.triangles.empty())
-            throw ParseError(scan_.loc(endsolid), degenerate
-                                                      ? "STL file holds only degenerate triangles"
-                                                      : "STL file holds no triangles");
+        if (mesh.triangles.empty() && degenerate > 0)
+            throw ParseError(scan_.loc(endsolid), "STL file holds only degenerate triangles");
         return mesh;
     }
 

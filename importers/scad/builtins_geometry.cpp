@@ -385,10 +385,17 @@ ir::NodePtr Evaluator::moduleGroup(const ModuleInstantiation &inst, const FrameP
     return node;
 }
 
+ir::NodePtr Evaluator::skipUnsupported(const SourceLoc &loc, const std::string &what) {
+    // Inside a `%` part, which is left out of the scene anyway, nothing is lost: no warning
+    if (backgroundDepth_ == 0) {
+        warn(loc, what + " is not supported yet; skipped");
+        ++scene_.stats.skippedModules;
+    }
+    return newNode(ir::NodeKind::Group, loc);
+}
+
 ir::NodePtr Evaluator::moduleUnsupported(const ModuleInstantiation &inst, const FramePtr &) {
-    warn(inst.loc, inst.name.str() + "() is not supported yet; skipped");
-    ++scene_.stats.skippedModules;
-    return newNode(ir::NodeKind::Group, inst.loc);
+    return skipUnsupported(inst.loc, inst.name.str() + "()");
 }
 
 const std::unordered_map<Symbol, Evaluator::ModuleHandler, SymbolHash>
@@ -416,11 +423,13 @@ const std::unordered_map<Symbol, Evaluator::ModuleHandler, SymbolHash>
         add("echo", &Evaluator::moduleEcho);
         add("assert", &Evaluator::moduleAssert);
         add("children", &Evaluator::moduleChildren);
+        add("child", &Evaluator::moduleChild);
+        add("assign", &Evaluator::moduleAssign);
         add("polyhedron", &Evaluator::modulePolyhedron);
         add("import", &Evaluator::moduleImport);
         for (const char *name :
              {"hull", "minkowski", "resize", "linear_extrude", "rotate_extrude", "surface", "text",
-              "projection", "offset", "square", "circle", "polygon", "child", "assign"})
+              "projection", "offset", "square", "circle", "polygon"})
             add(name, &Evaluator::moduleUnsupported);
         return t;
     }();

@@ -19,6 +19,8 @@ namespace fs = std::filesystem;
 
 /// At most this many skipped-face warnings per polyhedron; the rest are counted in a summary.
 constexpr int kMaxFaceWarnings = 10;
+/// meshFiles_ entry of a mesh file without triangles: nothing to place.
+constexpr int kNoMesh = -1;
 
 std::string argText(const Value &v) { return v.toEchoString(); }
 
@@ -209,21 +211,24 @@ ir::NodePtr Evaluator::moduleImport(const ModuleInstantiation &inst, const Frame
     }
     if (a[1].isUndef() && !a[8].isUndef())
         warn(a.loc(8), "DEPRECATED: layername= is deprecated. Please use layer=");
+    // Any value names a file by its text; undef (or no file at all) names none
     const Value &file = a[fileArg];
-    if (!file.isString() || file.toStr().empty())
-        throw EvalError(a.loc(fileArg), "import() needs a file name, not " + argText(file));
-
-    const std::string &name = file.toStr();
+    std::string name = file.isString()  ? file.toStr()
+                       : file.isUndef() ? std::string()
+                                        : file.toEchoString();
     std::string ext = lowercase(fs::path(name).extension().string());
-    bool meshFile = ext == ".stl" || ext == ".off";
-    bool gltfFile = ext == ".gltf" || ext == ".glb";
-    if (!meshFile && !gltfFile) {
-        warn(inst.loc, ext.empty() ? "import of files without an extension is not supported; "
-                                     "skipped"
-                                   : "import of " + ext + " files is not supported yet; skipped");
-        ++scene_.stats.skippedModules;
+    if (ext.empty()) {
+        // OpenSCAD reports a file without a format (or none) and goes on with empty geometry;
+        // a `%` part never gets that far
+        if (backgroundDepth_ == 0)
+            warn(a.loc(fileArg), "import(): unsupported file format while trying to import "
+                                 "file '" +
+                                     name + "'; empty geometry");
         return newNode(ir::NodeKind::Group, inst.loc);
     }
+    bool meshFile = ext == ".stl" || ext == ".off";
+    bool gltfFile = ext == ".gltf" || ext == ".glb";
+    if (!meshFile && !gltfFile) return skipUnsupported(inst.loc, "import of " + ext + " files");
 
     std::string path = resolveImportPath(name, inst.loc);
     std::error_code ec;
@@ -252,9 +257,11 @@ ir::NodePtr Evaluator::importMeshFile(const std::string &path, const ModuleInsta
         if (!problem.empty())
             warn(inst.loc, "import(): the mesh of '" + path + "' " + problem +
                                "; it may not render as a solid");
-        index = addMesh(std::move(mesh));
+        index = mesh.triangles.empty() ? kNoMesh : addMesh(std::move(mesh));
         meshFiles_.emplace(key, index);
     }
+    // A file without triangles is empty geometry, silently, as in OpenSCAD
+    if (index == kNoMesh) return newNode(ir::NodeKind::Group, inst.loc);
     return primitive(ir::MeshPrim{index}, inst, f);
 }
 

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <limits>
 
 #include "importers/scad/utf8.h"
 
@@ -20,6 +21,10 @@ constexpr uint64_t kMaxModuleForRange = 10000;
 constexpr uint64_t kMaxComprehensionRange = 1000000;
 
 constexpr double kPiValue = 3.14159265358979323846;
+
+/// Most bytes one echo() prints: a runaway vector must not write tens of MB of diagnostics.
+/// Longer output is cut here with a warning.
+constexpr size_t kMaxEchoBytes = 64 << 10;
 
 Symbol sym(const char *s) { return Symbol::intern(s); }
 
@@ -50,9 +55,19 @@ void forEachElement(Evaluator &ev, const Value &seq, uint64_t limit, const Sourc
     }
 }
 
+/// The call of the innermost user module body lexically around `f`: it owns the children.
+const ModuleCallInfo *enclosingCall(const FramePtr &f) {
+    for (const Frame *p = f.get(); p; p = p->parent.get())
+        if (p->call) return p->call;
+    return nullptr;
+}
+
 }  // namespace
 
-Evaluator::Evaluator(DiagnosticSink &diag, EvalLimits limits) : diag_(diag), limits_(limits) {}
+Evaluator::Evaluator(DiagnosticSink &diag, EvalLimits limits)
+    : diag_(diag),
+      limits_(limits),
+      stepCap_(limits.maxSteps > 0 ? limits.maxSteps : std::numeric_limits<int64_t>::max()) {}
 
 Evaluator::~Evaluator() {
     // Every cycle runs through a closure's frame up its parent chain: clearing the variables
@@ -71,11 +86,13 @@ void Evaluator::checkStack(const SourceLoc &loc) {
         throw EvalError(loc, "recursion too deep: the evaluation stack is exhausted");
 }
 
-void Evaluator::step(const SourceLoc &loc) {
-    if (++steps_ > limits_.maxSteps)
+void Evaluator::stepSlow(const SourceLoc &loc) {
+    if (steps_ > stepCap_)
         throw EvalError(loc, "evaluation too long: more than " + std::to_string(limits_.maxSteps) +
                                  " steps (calls, loop iterations and module instances); "
-                                 "runaway loop or recursion?");
+                                 "runaway loop or recursion? If the model needs more, raise the "
+                                 "cap with --max-steps N (0 = no cap)");
+    if ((steps_ & kProgressStepMask) == 0 && progress_) progress_(steps_);
 }
 
 void Evaluator::checkElementBudget(size_t extra, const SourceLoc &loc) {
@@ -169,6 +186,7 @@ ir::Scene Evaluator::evaluate(const SourceFile &main, SourceLoader &loader) {
         scene_.root->children = std::move(nodes);
 
     if (!scene_.camera) cameraFromViewportVariables(main);
+    scene_.fontFiles = loader.fontFiles();
     return std::move(scene_);
 }
 
@@ -438,13 +456,26 @@ Value Evaluator::evalPrefix(const PrefixExpr &p, const FramePtr &f) {
 }
 
 void Evaluator::evalEcho(const ArgumentList &args, const FramePtr &f, const SourceLoc &loc) {
+    // Every argument is evaluated; only the text is capped
+    const size_t limit = kMaxEchoBytes + std::string_view("ECHO: ").size();
     std::string msg = "ECHO: ";
     for (size_t i = 0; i < args.size(); ++i) {
+        Value v = eval(*args[i].expr, f);
+        if (msg.size() > limit) continue;
         if (i) msg += ", ";
         if (!args[i].name.empty()) msg += args[i].name.str() + " = ";
-        msg += eval(*args[i].expr, f).toEchoString();
+        v.appendEchoString(msg, limit + 1);
     }
-    diag_.note(loc, msg);
+    if (msg.size() <= limit) {
+        diag_.note(loc, msg);
+        return;
+    }
+    // Cut at a character boundary, not inside a UTF-8 sequence
+    size_t cut = limit;
+    while (cut > 0 && (static_cast<unsigned char>(msg[cut]) & 0xC0) == 0x80) --cut;
+    msg.resize(cut);
+    diag_.note(loc, msg + " ...");
+    warn(loc, "echo output cut after " + std::to_string(kMaxEchoBytes >> 10) + " KiB");
 }
 
 void Evaluator::evalAssert(const ArgumentList &args, const FramePtr &f, const SourceLoc &loc) {
@@ -948,10 +979,58 @@ ir::NodePtr Evaluator::moduleAssert(const ModuleInstantiation &inst, const Frame
     return childrenGroupOrNull(inst, f);
 }
 
+void Evaluator::deprecated(const SourceLoc &loc, const std::string &what, bool oncePerRun) {
+    // OpenSCAD prints each deprecation message once: 2021.01's assign() message names its
+    // file and line, so it comes once per line; child()'s does not, so it comes once per run.
+    std::string key = oncePerRun ? what : loc.fileName() + ":" + std::to_string(loc.line) + what;
+    if (deprecationsShown_.insert(key).second) warn(loc, "DEPRECATED: " + what);
+}
+
+ir::NodePtr Evaluator::moduleAssign(const ModuleInstantiation &inst, const FramePtr &f) {
+    deprecated(inst.loc,
+               "The assign() module will be removed in future releases. Use a regular "
+               "assignment instead.",
+               false);
+    // Parallel, unlike let(): every named value is evaluated in the caller's scope before any
+    // is bound (control.cc ASSIGN); unnamed arguments are ignored, unevaluated
+    std::vector<std::pair<Symbol, Value>> bindings;
+    for (const auto &a : inst.args)
+        if (!a.name.empty()) bindings.emplace_back(a.name, eval(*a.expr, f));
+    FramePtr c = makeFrame(f);
+    FrameGuard g(dyn_, c.get());
+    for (auto &[name, value] : bindings) c->set(name, std::move(value));
+    ir::NodePtr node = newNode(ir::NodeKind::Group, inst.loc);
+    instantiateChildren(inst, c, node->children);
+    return node;
+}
+
+ir::NodePtr Evaluator::moduleChild(const ModuleInstantiation &inst, const FramePtr &f) {
+    deprecated(inst.loc, "child() will be removed in future releases. Use children() instead.",
+               true);
+    // The first argument, whatever its name, picks one child when it is a number; anything
+    // else means child 0 (control.cc CHILD)
+    double index = 0;
+    if (!inst.args.empty()) {
+        Value v = eval(*inst.args[0].expr, f);
+        if (v.isNumber()) index = std::trunc(v.toNumber());
+    }
+    if (index < 0) {
+        warn(inst.loc, "Negative child index (" + formatNumber(index) + ") not allowed");
+        return nullptr;
+    }
+    const ModuleCallInfo *call = enclosingCall(f);
+    if (!call) return nullptr;
+    const auto &kids = call->inst->children.instantiations;
+    if (!(index < static_cast<double>(kids.size()))) {
+        warn(inst.loc, "Child index (" + formatNumber(index) + ") out of bounds (" +
+                           std::to_string(kids.size()) + " children)");
+        return nullptr;
+    }
+    return instantiate(*kids[static_cast<size_t>(index)], call->childFrame);
+}
+
 ir::NodePtr Evaluator::moduleChildren(const ModuleInstantiation &inst, const FramePtr &f) {
-    // The innermost user module body lexically around this call owns the children
-    const ModuleCallInfo *call = nullptr;
-    for (const Frame *p = f.get(); p && !call; p = p->parent.get()) call = p->call;
+    const ModuleCallInfo *call = enclosingCall(f);
     if (!call) return nullptr;
     const auto &kids = call->inst->children.instantiations;
     auto child = [&](const Value &v) -> ir::NodePtr {

@@ -3,11 +3,13 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <initializer_list>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "core/ir/diagnostics.h"
@@ -15,14 +17,17 @@
 #include "importers/scad/ast.h"
 #include "importers/scad/environment.h"
 #include "importers/scad/parser.h"
+#include "importers/scad/scad_importer.h"
 
 namespace rt::scad {
 
 /// Resource bounds that turn runaway programs into located EvalErrors.
 /// The defaults stop a runaway program within about 10 s and a few hundred MB.
 struct EvalLimits {
-    int maxCallDepth = 10000;       ///< nested user function/module calls (OpenSCAD fails near it)
-    int64_t maxSteps = 30'000'000;  ///< calls + loop iterations + instantiations
+    int maxCallDepth = 10000;  ///< nested user function/module calls (OpenSCAD fails near it)
+    /// Calls + loop iterations + instantiations; 0 = no cap. A legitimate model may need more
+    /// (scadray --max-steps), so the error names the option.
+    int64_t maxSteps = kDefaultMaxSteps;
     int64_t maxLiveElements = 8'000'000;     ///< vector elements alive at once (~24 bytes each)
     int64_t maxLiveStringBytes = 256 << 20;  ///< bytes of string values alive at once
     int64_t maxNodes = 1'500'000;            ///< IR nodes produced (~300 bytes each)
@@ -86,7 +91,13 @@ class Evaluator {
     /// Throws when a vector of `extra` more elements would exceed the element budget.
     void checkElementBudget(size_t extra, const SourceLoc &loc);
     /// Counts one unit of work (call, iteration, instantiation) against the step budget.
-    void step(const SourceLoc &loc);
+    void step(const SourceLoc &loc) {
+        if ((++steps_ & kProgressStepMask) == 0 || steps_ > stepCap_) stepSlow(loc);
+    }
+    /// Called with the step count every kProgressStepMask + 1 steps while evaluating.
+    void setProgress(std::function<void(int64_t steps)> progress) {
+        progress_ = std::move(progress);
+    }
     uint64_t randomSeed() { return ++randomCounter_; }
 
     /// The user module names on the call stack, innermost last (parent_module()).
@@ -131,6 +142,8 @@ class Evaluator {
                         const FramePtr &argFrame, Frame &into, const FramePtr &defaultsFrame,
                         const SourceLoc &callLoc);
     void checkStack(const SourceLoc &loc);
+    void stepSlow(const SourceLoc &loc);
+    static constexpr int64_t kProgressStepMask = (1 << 16) - 1;
 
     // Scopes and module instantiation (evaluator.cpp)
     void applyAssignments(const std::vector<Assignment> &as, const FramePtr &f);
@@ -163,6 +176,11 @@ class Evaluator {
     ir::NodePtr moduleEcho(const ModuleInstantiation &inst, const FramePtr &f);
     ir::NodePtr moduleAssert(const ModuleInstantiation &inst, const FramePtr &f);
     ir::NodePtr moduleChildren(const ModuleInstantiation &inst, const FramePtr &f);
+    // Deprecated 2021.01 modules, still working there
+    ir::NodePtr moduleAssign(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr moduleChild(const ModuleInstantiation &inst, const FramePtr &f);
+    /// Warns "DEPRECATED: what" once per source line, or once per run when `oncePerRun`.
+    void deprecated(const SourceLoc &loc, const std::string &what, bool oncePerRun);
 
     // Geometry builtins (builtins_geometry.cpp)
     ir::NodePtr moduleCube(const ModuleInstantiation &inst, const FramePtr &f);
@@ -179,6 +197,8 @@ class Evaluator {
     ir::NodePtr moduleIntersection(const ModuleInstantiation &inst, const FramePtr &f);
     ir::NodePtr moduleGroup(const ModuleInstantiation &inst, const FramePtr &f);
     ir::NodePtr moduleUnsupported(const ModuleInstantiation &inst, const FramePtr &f);
+    /// An empty group for a feature not supported yet, with a warning (none inside `%`).
+    ir::NodePtr skipUnsupported(const SourceLoc &loc, const std::string &what);
     ir::NodePtr csgOperation(ir::NodeKind kind, const ModuleInstantiation &inst, const FramePtr &f);
     ir::NodePtr transformNode(const Mat4 &m, const ModuleInstantiation &inst, const FramePtr &f,
                               const FramePtr &argFrame);
@@ -248,8 +268,12 @@ class Evaluator {
     /// captures forms a reference cycle, broken when the evaluator goes away.
     std::vector<std::weak_ptr<Frame>> capturedFrames_;
 
+    std::unordered_set<std::string> deprecationsShown_;
+
     int callDepth_ = 0;
     int64_t steps_ = 0;
+    int64_t stepCap_;  ///< limits_.maxSteps, or the largest count when there is no cap
+    std::function<void(int64_t)> progress_;
     int64_t nodes_ = 0;
     uint64_t randomCounter_ = 0;
     const char *stackLow_ = nullptr;

@@ -18,6 +18,33 @@ int hexValue(char c) {
     return -1;
 }
 
+/// A byte of U+00A0 no-break space in UTF-8 (C2 A0) or Latin-1 (A0).
+bool isNoBreakSpaceByte(char c) {
+    return static_cast<unsigned char>(c) == 0xC2 || static_cast<unsigned char>(c) == 0xA0;
+}
+
+/// Length of the run of UTF-8 sequences starting at `s[pos]` as lexer.l's `{UNICODE}+`
+/// matches them (lead bytes C2-DF, E0-EF, F0-F4 with their continuation bytes 80-BF).
+size_t utf8RunLength(const std::string &s, size_t pos) {
+    auto continuation = [&](size_t i) {
+        return i < s.size() && (static_cast<unsigned char>(s[i]) & 0xC0) == 0x80;
+    };
+    size_t p = pos;
+    while (p < s.size()) {
+        auto lead = static_cast<unsigned char>(s[p]);
+        size_t n = lead >= 0xC2 && lead <= 0xDF   ? 2
+                   : lead >= 0xE0 && lead <= 0xEF ? 3
+                   : lead >= 0xF0 && lead <= 0xF4 ? 4
+                                                  : 0;
+        if (n == 0) break;
+        size_t k = 1;
+        while (k < n && continuation(p + k)) ++k;
+        if (k < n) break;
+        p += n;
+    }
+    return p - pos;
+}
+
 struct Keyword {
     const char *text;
     TokenKind kind;
@@ -137,6 +164,14 @@ void Lexer::skipSpaceAndComments() {
         char c = peek();
         if (c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v') {
             advance();
+        } else if (isNoBreakSpaceByte(c)) {
+            // lexer.l `[\xc2\xa0]+`: any run of the bytes C2 and A0 is white space (so UTF-8
+            // and Latin-1 no-break spaces both are), unless the longer match of `{UNICODE}+`,
+            // an error token, wins; lexOperator then reports the character.
+            size_t run = 1;
+            while (isNoBreakSpaceByte(peek(run))) ++run;
+            if (utf8RunLength(src_, pos_) > run) return;
+            advance(run);
         } else if (c == '/' && peek(1) == '/') {
             while (pos_ < src_.size() && peek() != '\n') advance();
         } else if (c == '/' && peek(1) == '*') {

@@ -2,6 +2,8 @@
 // OpenSCAD parser: grammar and precedence of 2021.01 parser.y, as recursive descent.
 #include "importers/scad/parser.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -34,6 +36,24 @@ std::string dirOf(const std::string &path) {
     return p.has_parent_path() ? p.parent_path().string() : std::string(".");
 }
 
+/// use<> of a TrueType/OpenType file registers a font instead of reading source
+/// (2021.01 SourceFile::registerUse compares the extension without case).
+bool isFontFile(const std::string &name) {
+    std::string ext = fs::path(name).extension().string();
+    for (auto &c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext == ".ttf" || ext == ".otf";
+}
+
+/// The first bytes of a font file: TrueType (00 01 00 00 or "true"), OpenType with CFF
+/// outlines ("OTTO") or a TrueType collection ("ttcf").
+bool hasFontSignature(const std::string &path) {
+    char magic[4] = {};
+    std::ifstream in(path, std::ios::binary);
+    if (!in.read(magic, sizeof magic)) return false;
+    std::string m(magic, sizeof magic);
+    return m == std::string("\0\1\0\0", 4) || m == "true" || m == "OTTO" || m == "ttcf";
+}
+
 class Parser {
   public:
     Parser(std::vector<Token> tokens, SourceLoader &loader, SourceFile &root, int includeDepth)
@@ -61,6 +81,12 @@ class Parser {
         return true;
     }
     Token expect(TokenKind k, const char *context);
+    /// Skips a run of commas (parser.y `optional_commas`); true when there was one.
+    bool skipCommas() {
+        bool any = false;
+        while (accept(TokenKind::Comma)) any = true;
+        return any;
+    }
     [[noreturn]] void unexpected(const char *context) const;
     static void checkChain(int length, const SourceLoc &loc) {
         if (length > kMaxOperatorChain)
@@ -166,6 +192,10 @@ void Parser::parseInclude(Scope &scope) {
 
 void Parser::parseUse() {
     Token tok = toks_[pos_++];
+    if (isFontFile(tok.text)) {
+        loader_.registerFont(tok.text, dirOf(*tok.loc.file), tok.loc);
+        return;
+    }
     std::string path = loader_.resolve(tok.text, dirOf(*tok.loc.file));
     if (path.empty()) throw ParseError(tok.loc, "can't find used file '" + tok.text + "'");
     for (const auto &u : root_.uses)
@@ -177,6 +207,9 @@ void Parser::parseUse() {
 ParameterList Parser::parseParameters() {
     ParameterList params;
     expect(TokenKind::LParen, "to open the parameter list");
+    // parser.y `parameters optional_commas`: empty elements are skipped anywhere, even before
+    // the first parameter and after the last (`m(,a,,b,)`, `f(,)`)
+    skipCommas();
     while (!at(TokenKind::RParen)) {
         Token name = expect(TokenKind::Identifier, "as parameter name");
         Parameter p;
@@ -184,17 +217,23 @@ ParameterList Parser::parseParameters() {
         p.loc = name.loc;
         if (accept(TokenKind::Assign)) p.defaultExpr = parseExpr();
         params.push_back(std::move(p));
-        if (!accept(TokenKind::Comma)) break;
-        while (accept(TokenKind::Comma)) {
-        }
+        if (!skipCommas()) break;
     }
     expect(TokenKind::RParen, "to close the parameter list");
     return params;
 }
 
 ArgumentList Parser::parseArguments(TokenKind close) {
+    // parser.y `arguments`: empty, or arguments joined by one or more commas, which may also
+    // stand before the first one (`f(,,1)`); but every comma needs an argument after it, so
+    // `f(1,)` and `f(,)` are errors in 2021.01. An empty list also ends at ';' (the empty
+    // init of a C-style `for (; cond; next)`).
     ArgumentList args;
-    while (!at(close)) {
+    if (at(close) || at(TokenKind::Semicolon)) return args;
+    for (;;) {
+        if (skipCommas() && at(close))
+            throw ParseError(cur().loc, "syntax error: unexpected " + describeToken(cur()) +
+                                            " after ',' (an argument list has no trailing comma)");
         Argument a;
         a.loc = cur().loc;
         if (at(TokenKind::Identifier) && peekTok().kind == TokenKind::Assign) {
@@ -203,9 +242,8 @@ ArgumentList Parser::parseArguments(TokenKind close) {
         }
         a.expr = parseExpr();
         args.push_back(std::move(a));
-        if (!accept(TokenKind::Comma)) break;
+        if (!at(TokenKind::Comma)) return args;
     }
-    return args;
 }
 
 void Parser::parseModuleDef(Scope &scope) {
@@ -635,6 +673,12 @@ ExprPtr Parser::parseElement() {
 ExprPtr Parser::parseBracket() {
     auto v = std::make_unique<VectorExpr>(cur().loc);
     ++pos_;
+    // parser.y `'[' optional_commas ']'`: commas alone make an empty vector, but no comma may
+    // come before a first element
+    if (skipCommas() && !at(TokenKind::RBracket))
+        throw ParseError(cur().loc, "syntax error: unexpected " + describeToken(cur()) +
+                                        " after ',' (a vector's first element has no comma "
+                                        "before it)");
     if (accept(TokenKind::RBracket)) {
         v->constant = std::make_unique<Value>(Value::vector(std::vector<Value>()));
         return v;
@@ -655,10 +699,8 @@ ExprPtr Parser::parseBracket() {
         return r;
     }
     v->elements.push_back(std::move(first));
-    while (accept(TokenKind::Comma)) {
-        if (at(TokenKind::RBracket)) break;  // trailing comma
-        v->elements.push_back(parseElement());
-    }
+    // Repeated and trailing commas are empty elements, skipped
+    while (skipCommas() && !at(TokenKind::RBracket)) v->elements.push_back(parseElement());
     expect(TokenKind::RBracket, "to close the vector");
     // Vectors of literals are built once
     bool allConstant = true;
@@ -713,6 +755,23 @@ std::string SourceLoader::resolve(const std::string &name, const std::string &fr
         if (usable(p)) return p.lexically_normal().string();
     }
     return {};
+}
+
+void SourceLoader::registerFont(const std::string &name, const std::string &fromDir,
+                                const SourceLoc &loc) {
+    // OpenSCAD goes on without the font in both failure cases (its messages are unlocated)
+    std::string path = resolve(name, fromDir);
+    if (path.empty()) {
+        diag_.warning(loc, "Can't open library '" + name + "': can't read font with path '" +
+                               name + "'");
+        return;
+    }
+    if (!hasFontSignature(path)) {
+        diag_.warning(loc, "Can't register font '" + path + "': not a TrueType/OpenType file");
+        return;
+    }
+    if (std::find(fontFiles_.begin(), fontFiles_.end(), path) == fontFiles_.end())
+        fontFiles_.push_back(path);
 }
 
 std::string SourceLoader::read(const std::string &path, const SourceLoc &loc) const {

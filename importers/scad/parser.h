@@ -29,6 +29,12 @@ class SourceLoader {
     std::shared_ptr<SourceFile> loadUsed(const std::string &path, const SourceLoc &loc);
     const std::map<std::string, std::shared_ptr<SourceFile>> &usedFiles() const { return used_; }
 
+    /// use<x.ttf>/use<x.otf>: records the font file for text(), resolved like a library;
+    /// a missing or unreadable font is a warning at `loc`, as OpenSCAD goes on without it.
+    void registerFont(const std::string &name, const std::string &fromDir, const SourceLoc &loc);
+    /// Registered font files, in order of first use<>.
+    const std::vector<std::string> &fontFiles() const { return fontFiles_; }
+
     const std::vector<std::string> &libraryPaths() const { return libraryPaths_; }
     DiagnosticSink &diag() { return diag_; }
 
@@ -36,6 +42,7 @@ class SourceLoader {
     std::vector<std::string> libraryPaths_;
     DiagnosticSink &diag_;
     std::map<std::string, std::shared_ptr<SourceFile>> used_;
+    std::vector<std::string> fontFiles_;
 };
 
 /// Search path of include<>/use<> after the including file's folder: the options' folders,

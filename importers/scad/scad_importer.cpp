@@ -78,7 +78,10 @@ ir::Scene importScadSource(const std::string &source, const std::string &virtual
             ExprPtr e = parseExpressionText(expr, "<-D " + name + ">", loader);
             addAssignment(file->top, Symbol::intern(name), std::move(e), loc, &diag, true);
         }
-        Evaluator evaluator(diag);
+        EvalLimits limits;
+        limits.maxSteps = opts.maxSteps;
+        Evaluator evaluator(diag, limits);
+        evaluator.setProgress(opts.progress);
         scene = evaluator.evaluate(*file, loader);
     });
     return scene;

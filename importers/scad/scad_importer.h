@@ -2,6 +2,8 @@
 // Entry point of the OpenSCAD-subset importer: .scad file -> ir::Scene.
 #pragma once
 
+#include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -11,12 +13,20 @@
 
 namespace rt::scad {
 
+/// Default evaluation step cap: stops a runaway program within about 10 s.
+constexpr int64_t kDefaultMaxSteps = 30'000'000;
+
 struct ImportOptions {
     /// Extra folders searched by include<>/use<> after the including file's folder.
     std::vector<std::string> libraryPaths;
     /// Top-level overrides, as `openscad -D name=expr`: each expression is parsed and assigned
     /// after the main file's own assignments.
     std::vector<std::pair<std::string, std::string>> defines;
+    /// Evaluation step cap (calls, loop iterations, module instances); 0 = no cap.
+    int64_t maxSteps = kDefaultMaxSteps;
+    /// Called now and then during evaluation with the steps taken so far (on the evaluating
+    /// thread); for a progress display.
+    std::function<void(int64_t steps)> progress;
 };
 
 /// Reads, parses and evaluates a .scad file. Non-fatal problems go to `diag`; fatal ones throw

@@ -3,6 +3,7 @@
 #include "importers/scad/value.h"
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
@@ -198,14 +199,9 @@ std::string Value::toString(bool quoteStrings) const {
         case Type::Number: return formatNumber(toNumber());
         case Type::String: return quoteStrings ? "\"" + toStr() + "\"" : toStr();
         case Type::Vector: {
-            std::string s = "[";
-            bool first = true;
-            for (const auto &e : toVector()) {
-                if (!first) s += ", ";
-                first = false;
-                s += e.toString(true);
-            }
-            return s + "]";
+            std::string s;
+            appendEchoString(s, SIZE_MAX);
+            return s;
         }
         case Type::Range: {
             const auto &r = toRange();
@@ -215,6 +211,22 @@ std::string Value::toString(bool quoteStrings) const {
         case Type::Function: return functionLiteralToString(*toFunction().def);
     }
     return "";
+}
+
+void Value::appendEchoString(std::string &out, size_t limit) const {
+    if (!isVector()) {
+        out += toString(true);
+        return;
+    }
+    out += '[';
+    bool first = true;
+    for (const auto &e : toVector()) {
+        if (out.size() >= limit) return;
+        if (!first) out += ", ";
+        first = false;
+        e.appendEchoString(out, limit);
+    }
+    out += ']';
 }
 
 const char *binaryOpSpelling(BinaryOp op) {

@@ -108,6 +108,9 @@ class Value {
     /// OpenSCAD's echo/str formatting: strings quoted when `quoteStrings`.
     std::string toString(bool quoteStrings) const;
     std::string toEchoString() const { return toString(true); }
+    /// Appends the echo form to `out`, stopping soon after `out` reaches `limit` bytes (the
+    /// text is then cut short, mid-element), so a huge value is never formatted whole.
+    void appendEchoString(std::string &out, size_t limit) const;
     /// Name of the type in OpenSCAD's warnings ("number", "vector", "undefined", ...).
     static const char *typeName(Type t);
     const char *typeName() const { return typeName(type()); }

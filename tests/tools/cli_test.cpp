@@ -361,6 +361,62 @@ TEST_F(Cli, BadAreaLightIsALocatedErrorForEveryCommand) {
     EXPECT_FALSE(fs::exists(dir / "conv"));
 }
 
+TEST_F(Cli, MaxStepsCapsEveryCommandAndIsNamedWhenHit) {
+    std::string in = write("steps.scad", "x = 1;\n  y = [for (i = [0:99999]) i];\necho(len(y));\n");
+    for (const std::string &cmd :
+         {"dump " + in, "render " + in + " -W 8 -H 8 -o " + (dir / "s.png").string(),
+          "export " + in + " -o " + (dir / "s.pov").string(),
+          "converge " + in + " --max-samples 2 -W 8 -H 8 -o " + (dir / "conv").string()}) {
+        SCOPED_TRACE(cmd);
+        CliRun r = run(cmd + " --max-steps 1000");
+        EXPECT_EQ(r.exitCode, 1) << r.err;
+        EXPECT_NE(r.err.find("steps.scad:2:8: error: evaluation too long: more than 1000 steps"),
+                  std::string::npos)
+            << r.err;
+        EXPECT_NE(r.err.find("--max-steps"), std::string::npos) << r.err;
+    }
+    EXPECT_FALSE(fs::exists(dir / "s.png"));
+    // The default and no cap at all both let it through; a negative cap is a usage error
+    EXPECT_EQ(run("dump " + in).exitCode, 0);
+    CliRun r = run("dump --max-steps 0 " + in);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(run("dump --max-steps -1 " + in).exitCode, 2);
+}
+
+TEST_F(Cli, ProgressOfALongEvaluationOnlyOnATerminal) {
+    // About 15 M steps: several seconds here, over the 1 s delay on any machine
+    std::string in = write("long.scad", "function f(n) = n == 0 ? 0 : f(n - 1);\n"
+                                        "x = [for (i = [0:149]) f(100000)];\ncube();\n");
+    CliRun plain = run("dump " + in);
+    ASSERT_EQ(plain.exitCode, 0) << plain.err;
+    EXPECT_EQ(plain.err.find("evaluating"), std::string::npos) << plain.err;
+    if (std::system("command -v script >/dev/null 2>&1") != 0)
+        GTEST_SKIP() << "script(1) is not installed: no terminal to test the progress line on";
+    // script(1) gives the command a terminal; its output (stdout and stderr) lands in the file
+    std::string typescript = (dir / "typescript").string();
+    std::string cmd = "script -qec '" + std::string(SCADRAY_BINARY) + " dump --max-steps 0 " + in +
+                      " >/dev/null' " + typescript + " >/dev/null 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0);
+    std::string tty = slurp(typescript);
+    EXPECT_NE(tty.find("\revaluating: "), std::string::npos) << tty;
+    EXPECT_NE(tty.find(" M steps"), std::string::npos) << tty;
+    // Cleared at the end
+    EXPECT_NE(tty.find("\r\033[K"), std::string::npos) << tty;
+    // -q keeps it quiet
+    cmd = "script -qec '" + std::string(SCADRAY_BINARY) + " render -q -W 8 -H 8 " + in + " -o " +
+          (dir / "q.png").string() + "' " + typescript + " >/dev/null 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0);
+    EXPECT_EQ(slurp(typescript).find("evaluating"), std::string::npos);
+}
+
+TEST_F(Cli, EmptyMeshFileIsAnEmptyScene) {
+    std::string in = write("empty.stl", "solid empty\nendsolid empty\n");
+    CliRun r = run("render -W 8 -H 8 " + in + " -o " + (dir / "e.png").string());
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("no geometry"), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::exists(dir / "e.png"));
+}
+
 TEST_F(Cli, ExportWritesMeshesAsMesh2) {
     std::string pov = (dir / "meshes.pov").string();
     CliRun r = run("export " + scene("crosscheck/meshes.scad") + " -o " + pov);

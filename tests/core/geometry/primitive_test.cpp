@@ -31,6 +31,11 @@ std::vector<Case> cases() {
         {"cone", ir::CylinderPrim{0, 2, 1, 0}},
         {"cone_up", ir::CylinderPrim{-0.5, 1, 0, 1.2}},
         {"frustum", ir::CylinderPrim{0, 1.5, 1.5, 0.4}},
+        // OpenSCAD's faceted solids (--facets openscad): convex polytopes
+        {"polytope_sphere", ir::openscadSphere(1.5, 7)},
+        {"polytope_hexagon", ir::openscadCylinder(ir::CylinderPrim{-1, 1, 0.8, 0.8}, 6)},
+        {"polytope_pyramid", ir::openscadCylinder(ir::CylinderPrim{0, 2, 1, 0}, 4)},
+        {"polytope_frustum", ir::openscadCylinder(ir::CylinderPrim{0, 1.5, 1.5, 0.4}, 5)},
     };
     for (auto &[n, s] : shapes) {
         out.push_back({n, s, Mat4()});

@@ -60,6 +60,31 @@ TEST(TriangleMesh, CubeSpansMatchTheAnalyticBox) {
     EXPECT_GT(hits, 1000);
 }
 
+TEST(TriangleMesh, SpansOfRaysStartingInsideSeeTheFacesBehind) {
+    // A shadow ray leaving a cut face into a mesh subtrahend starts inside the mesh, a hair
+    // above its flat bottom face: the whole-line span must still begin at that face (behind
+    // the origin), or the difference() is not cut along the ray and the face looks shadowed
+    auto mesh = std::make_shared<TriangleMesh>(cubeMesh(Vec3(-20, -20, 4), Vec3(20, 20, 44)));
+    MeshInstance inst(mesh, Transform(), 0);
+    PrimitiveInstance box(std::make_unique<Box>(Vec3(-20, -20, 4), Vec3(20, 20, 44)), Transform(), 0);
+    Rng rng(11);
+    for (double above : {1e-12, 1e-9, 1e-6, 1e-3, 1.0}) {
+        for (int i = 0; i < 200; ++i) {
+            Vec3 o(rng.uniform() * 30 - 15, rng.uniform() * 30 - 15, 4 + above);
+            Vec3 d = normalize(Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, 1));
+            Ray r(o, d);
+            SpanList a, b;
+            inst.lineSpans(r, a);
+            box.lineSpans(r, b);
+            ASSERT_EQ(a.size(), 1u) << "above " << above;
+            ASSERT_EQ(b.size(), 1u);
+            EXPECT_LT(a[0].in.t, 0);
+            EXPECT_NEAR(a[0].in.t, b[0].in.t, 1e-12 * 50);
+            EXPECT_NEAR(a[0].out.t, b[0].out.t, 1e-12 * 50);
+        }
+    }
+}
+
 TEST(TriangleMesh, RaysThroughVerticesAndEdgesNeverSlipThrough) {
     // Watertightness: a ray aimed exactly at a vertex or an edge midpoint of a closed convex
     // mesh, from outside towards the centre, enters and leaves exactly once

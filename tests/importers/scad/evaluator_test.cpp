@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdlib>
 
+#include "importers/mesh/mesh_test_support.h"
 #include "importers/scad/parser.h"
 #include "importers/scad/test_support.h"
 
@@ -205,12 +206,62 @@ TEST(Recursion, RunawayTailLoopHitsTheStepBudget) {
     } catch (const EvalError &e) {
         EXPECT_EQ(std::string(e.what()),
                   "evaluation too long: more than 100000 steps (calls, loop iterations and "
-                  "module instances); runaway loop or recursion?");
+                  "module instances); runaway loop or recursion? If the model needs more, raise "
+                  "the cap with --max-steps N (0 = no cap)");
         EXPECT_EQ(e.loc().toString(), "limits.scad:1:17");
     }
     // Loops count too
     EXPECT_THROW(evaluateWithLimits("for (i = [0:999], j = [0:999]) echo();", limits), EvalError);
     EXPECT_NO_THROW(evaluateWithLimits("for (i = [0:99], j = [0:99]) echo();", limits));
+}
+
+TEST(Limits, StepCapComesFromTheImportOptionsAndZeroMeansNone) {
+    const std::string src = "x = [for (i = [0:199999]) i];\necho(len(x));";
+    ImportOptions opts;
+    opts.maxSteps = 1000;
+    try {
+        importText(src, "", opts);
+        FAIL() << "expected EvalError";
+    } catch (const EvalError &e) {
+        EXPECT_NE(std::string(e.what()).find("more than 1000 steps"), std::string::npos);
+        EXPECT_EQ(e.loc().line, 1);
+    }
+    // 0 is no cap, not a cap of 0
+    opts.maxSteps = 0;
+    EXPECT_EQ(importText(src, "", opts).echoes(), Echoes{"200000"});
+}
+
+TEST(Limits, ProgressIsReportedEvery65536Steps) {
+    ImportOptions opts;
+    std::vector<int64_t> calls;
+    opts.progress = [&](int64_t steps) { calls.push_back(steps); };
+    importText("x = [for (i = [0:199999]) i];", "", opts);
+    EXPECT_EQ(calls, (std::vector<int64_t>{65536, 131072, 196608}));
+}
+
+TEST(Limits, HugeEchoIsCutWithALocatedWarning) {
+    Imported r = importText("x = 1;\necho(v = [for (i = [0:99999]) i], w = \"\u00e9\");");
+    ASSERT_EQ(r.echoes().size(), 1u);
+    std::string e = r.echoes()[0];
+    EXPECT_EQ(e.rfind("v = [0, 1, 2, ", 0), 0u);
+    EXPECT_EQ(e.substr(e.size() - 4), " ...");
+    EXPECT_LE(e.size(), (64u << 10) + 4);
+    EXPECT_GE(e.size(), (64u << 10) - 8);
+    Diagnostic w = r.warning("echo output cut");
+    EXPECT_EQ(w.message, "echo output cut after 64 KiB");
+    EXPECT_EQ(w.loc.line, 2);
+    // Below the cap nothing changes; a cut never splits a UTF-8 character
+    EXPECT_EQ(echoOf("echo([for (i = [0:999]) i][999]);"), "999");
+    std::string s;
+    for (int i = 0; i < 40000; ++i) s += "\u00e9";  // two bytes each
+    Imported u = importText("echo(\"" + s + "\");");
+    ASSERT_EQ(u.echoes().size(), 1u);
+    std::string cut = u.echoes()[0];
+    ASSERT_EQ(cut.substr(cut.size() - 4), " ...");
+    cut.resize(cut.size() - 4);
+    EXPECT_EQ(cut[0], '"');
+    EXPECT_EQ((cut.size() - 1) % 2, 0u) << "a character was split";
+    EXPECT_EQ(cut.substr(cut.size() - 2), "\u00e9");
 }
 
 TEST(Limits, HugeListsAndStringsAreLocatedErrors) {
@@ -320,6 +371,60 @@ TEST(IncludeUse, DefinesOverrideTopLevelAssignments) {
     Imported r = importText("a = 1; echo(a, b);", "", opts);
     EXPECT_EQ(r.echoes(), Echoes{"5, [2, 4]"});
     EXPECT_FALSE(r.hasWarning("overwritten"));
+}
+
+TEST(IncludeUse, FontFileIsRegisteredNotParsed) {
+    std::string dir = meshio::test::testDir();
+    // Only the signature is looked at; the rest would be a syntax error as source
+    meshio::test::writeFile(dir + "/Font.TTF", std::string("\0\1\0\0", 4) + "}}}{{{");
+    meshio::test::writeFile(dir + "/cff.otf", "OTTO}}}");
+    meshio::test::writeFile(dir + "/fake.ttf", "module q() cube();");
+    std::string main = meshio::test::writeFile(
+        dir + "/main.scad",
+        "use <Font.TTF>\nuse <cff.otf>\nuse <Font.TTF>\nuse <missing.ttf>\nuse <fake.ttf>\n"
+        "echo(1);\n");
+    Imported r;
+    r.scene = importScad(main, r.diag);
+    EXPECT_EQ(r.echoes(), Echoes{"1"});
+    EXPECT_EQ(r.scene.fontFiles, (std::vector<std::string>{dir + "/Font.TTF", dir + "/cff.otf"}));
+    // OpenSCAD goes on without a missing or broken font
+    ASSERT_EQ(r.warnings().size(), 2u);
+    Diagnostic missing = r.warning("missing.ttf");
+    EXPECT_EQ(missing.message,
+              "Can't open library 'missing.ttf': can't read font with path 'missing.ttf'");
+    EXPECT_EQ(missing.loc.toString(), main + ":4:1");
+    EXPECT_EQ(r.warning("fake.ttf").message,
+              "Can't register font '" + dir + "/fake.ttf': not a TrueType/OpenType file");
+}
+
+TEST(Deprecated, AssignBindsInParallelAndWarnsOncePerLine) {
+    Imported r = importText("a = 5;\nfor (i = [0:2]) assign(a = i, b = a + 1) echo(a, b);\n"
+                            "assign(c = 1, 7, $fn = 3) { c = 2; echo(c, $fn); }\n"
+                            "assign(d = 1) cube(d); assign(d = 2) echo(d);");
+    EXPECT_EQ(r.echoes(), (Echoes{"0, 6", "1, 6", "2, 6", "2, 3", "2"}));
+    EXPECT_EQ(r.scene.root->primitiveCount(), 1u);
+    std::vector<int> lines;
+    for (const auto &d : r.diag.all())
+        if (d.message.rfind("DEPRECATED: The assign() module", 0) == 0) lines.push_back(d.loc.line);
+    EXPECT_EQ(lines, (std::vector<int>{2, 3, 4}));
+    EXPECT_EQ(r.warnings().size(), 3u);
+}
+
+TEST(Deprecated, ChildPicksOneChildAndWarnsOncePerRun) {
+    Imported r = importText(
+        "module m() { child(); child(1); child(index = 1); child(\"x\"); child(0.7); }\n"
+        "m() { echo(\"c0\"); echo(\"c1\"); }\n"
+        "module n() child(-1); n() echo(\"no\");\n"
+        "module o() child(2); o() echo(\"no\");\n"
+        "module p() child(); p() cube(); child();");
+    EXPECT_EQ(r.echoes(), (Echoes{"\"c0\"", "\"c1\"", "\"c1\"", "\"c0\"", "\"c0\""}));
+    EXPECT_EQ(r.warnings(),
+              (std::vector<std::string>{
+                  "DEPRECATED: child() will be removed in future releases. Use children() instead.",
+                  "Negative child index (-1) not allowed",
+                  "Child index (2) out of bounds (1 children)"}));
+    EXPECT_EQ(r.warning("Negative").loc.line, 3);
+    EXPECT_EQ(r.scene.root->primitiveCount(), 1u);
 }
 
 TEST(Echo, NamedArgumentsAndValueFormatting) {

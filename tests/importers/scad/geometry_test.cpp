@@ -344,9 +344,9 @@ TEST(Modifiers, RootReplacesTheSceneWithoutItsParents) {
 }
 
 TEST(SkippedModules, WarnAndLeaveAnEmptyGroup) {
-    const char *names[] = {"hull",    "minkowski", "resize",     "linear_extrude", "rotate_extrude",
-                           "surface", "text",      "projection", "offset",         "square",
-                           "circle",  "polygon",   "child",      "assign"};
+    const char *names[] = {"hull",       "minkowski", "resize", "linear_extrude",
+                           "rotate_extrude", "surface", "text",    "projection",
+                           "offset",     "square",    "circle", "polygon"};
     for (const char *name : names) {
         Imported r = importText(std::string("difference() { ") + name + "() cube(); sphere(); }");
         EXPECT_EQ(r.scene.stats.skippedModules, 1) << name;
@@ -358,6 +358,19 @@ TEST(SkippedModules, WarnAndLeaveAnEmptyGroup) {
         EXPECT_EQ(diff.children[0]->kind, ir::NodeKind::Group);
         EXPECT_TRUE(diff.children[0]->children.empty());
     }
+}
+
+TEST(SkippedModules, NoWarningInsideBackgroundOrDisabledParts) {
+    // Both are left out of the scene, so nothing is lost; `%` is still evaluated (its echo
+    // prints, as in OpenSCAD), `*` is not
+    Imported r = importText("%hull() cube(); %translate([1, 0, 0]) { text(\"x\"); echo(\"bg\"); }\n"
+                            "*minkowski() cube(); *echo(\"off\"); %import(\"part.dxf\");\n"
+                            "%import(); resize([1, 1, 1]) cube();");
+    EXPECT_EQ(r.warnings(), (std::vector<std::string>{"resize() is not supported yet; skipped"}));
+    EXPECT_EQ(r.echoes(), (std::vector<std::string>{"\"bg\""}));
+    EXPECT_EQ(r.scene.stats.skippedModules, 1);
+    EXPECT_EQ(r.scene.stats.backgroundParts, 4);
+    EXPECT_EQ(r.scene.stats.disabledParts, 2);
 }
 
 TEST(SourceLocations, NodesCarryTheirCallSite) {

@@ -102,11 +102,42 @@ TEST(Import, MissingFileIsAnErrorAtTheCall) {
     writeFile(main, "import(\"dir.stl\");");
     e = errorOf<EvalError>(main);
     EXPECT_NE(std::string(e.what()).find("not a regular file"), std::string::npos);
-    // Nor is nothing
-    writeFile(main, "import(file = 5);");
-    e = errorOf<EvalError>(main);
-    EXPECT_EQ(std::string(e.what()), "import() needs a file name, not 5");
-    EXPECT_EQ(e.loc().col, 8);
+}
+
+TEST(Import, NoFileIsEmptyGeometryWithAWarning) {
+    // OpenSCAD: "Unsupported file format while trying to import file ''", then goes on; the
+    // empty node stays a difference()'s minuend
+    for (const char *call : {"import()", "import(file = undef)", "import(\"\")", "import(5)",
+                             "import(\"noext\")"}) {
+        Imported r = importText(std::string("difference() {\n  ") + call + "; cube(); }");
+        ASSERT_EQ(r.warnings().size(), 1u) << call;
+        Diagnostic w = r.warning("unsupported file format");
+        EXPECT_EQ(w.loc.line, 2) << call;
+        EXPECT_EQ(r.scene.stats.skippedModules, 0) << call;
+        const ir::Node &diff = *r.scene.root->children.at(0);
+        ASSERT_EQ(diff.children.size(), 2u) << call;
+        EXPECT_EQ(diff.children[0]->kind, ir::NodeKind::Group) << call;
+        EXPECT_TRUE(diff.children[0]->children.empty()) << call;
+    }
+    EXPECT_EQ(importText("import(5);").warning("unsupported").message,
+              "import(): unsupported file format while trying to import file '5'; empty geometry");
+}
+
+TEST(Import, StlWithoutTrianglesIsSilentEmptyGeometry) {
+    std::string dir = testDir();
+    writeFile(dir + "/empty.stl", "solid empty\nendsolid empty\n");
+    writeFile(dir + "/empty_bin.stl", std::string(80, '\0') + std::string(4, '\0'));
+    std::string main = writeFile(dir + "/main.scad",
+                                 "difference() { import(\"empty.stl\"); cube(); }\n"
+                                 "import(\"empty_bin.stl\"); import(\"empty.stl\");\n");
+    Imported r = importFile(main);
+    EXPECT_TRUE(r.diag.all().empty());
+    EXPECT_TRUE(r.scene.meshes.empty());
+    EXPECT_EQ(r.scene.root->primitiveCount(), 1u);  // the cube
+    ASSERT_EQ(r.scene.root->children.size(), 3u);
+    const ir::Node &diff = *r.scene.root->children[0];
+    ASSERT_EQ(diff.children.size(), 2u);
+    EXPECT_TRUE(diff.children[0]->children.empty());
 }
 
 TEST(Import, ReaderErrorsAreLocatedInTheMeshFile) {

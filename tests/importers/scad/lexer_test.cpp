@@ -130,34 +130,51 @@ TEST(Lexer, IncludeAndUseTokens) {
     EXPECT_EQ(t[2].text, "include");
 }
 
-TEST(Lexer, UnterminatedStringIsLocatedError) {
+/// The ParseError lexing `src` throws, as "location: message"; fails the test without one.
+std::string lexError(const std::string &src) {
     try {
-        lex("x = 1;\necho(\"abc);");
-        FAIL() << "expected ParseError";
+        lex(src);
     } catch (const ParseError &e) {
-        EXPECT_EQ(e.loc().toString(), "lex.scad:2:6");
-        EXPECT_STREQ(e.what(), "unterminated string");
+        return e.loc().toString() + ": " + e.what();
     }
+    ADD_FAILURE() << "expected a ParseError for: " << src;
+    return "";
+}
+
+TEST(Lexer, UnterminatedStringIsLocatedError) {
+    EXPECT_EQ(lexError("x = 1;\necho(\"abc);"), "lex.scad:2:6: unterminated string");
 }
 
 TEST(Lexer, UnterminatedCommentIsLocatedError) {
-    try {
-        lex("a\n  /* never closed");
-        FAIL() << "expected ParseError";
-    } catch (const ParseError &e) {
-        EXPECT_EQ(e.loc().toString(), "lex.scad:2:3");
-        EXPECT_STREQ(e.what(), "unterminated comment");
-    }
+    EXPECT_EQ(lexError("a\n  /* never closed"), "lex.scad:2:3: unterminated comment");
 }
 
 TEST(Lexer, StrayCharacterIsLocatedError) {
-    try {
-        lex("cube(1) @;");
-        FAIL() << "expected ParseError";
-    } catch (const ParseError &e) {
-        EXPECT_EQ(e.loc().toString(), "lex.scad:1:9");
-        EXPECT_STREQ(e.what(), "unexpected character '@'");
-    }
+    EXPECT_EQ(lexError("cube(1) @;"), "lex.scad:1:9: unexpected character '@'");
+}
+
+TEST(Lexer, NoBreakSpaceIsWhiteSpaceBetweenTokens) {
+    // UTF-8 C2 A0, a lone Latin-1 A0, runs of both, and (as lexer.l's byte class has it) a
+    // lone C2
+    auto t = lex("x\xC2\xA0=\xA0" "1\xC2\xA0\xA0\xC2\xA0+\xC2" "2;");
+    EXPECT_EQ(kinds(t), (std::vector<TokenKind>{TokenKind::Identifier, TokenKind::Assign,
+                                                TokenKind::Number, TokenKind::Plus,
+                                                TokenKind::Number, TokenKind::Semicolon,
+                                                TokenKind::End}));
+    // Columns count bytes, as OpenSCAD's do
+    EXPECT_EQ(t[1].loc.col, 4);
+    EXPECT_EQ(t[2].loc.col, 6);
+}
+
+TEST(Lexer, NoBreakSpaceInsideAStringIsKept) {
+    auto t = lex("\"a\xC2\xA0" "b\xA0" "c\"");
+    EXPECT_EQ(t[0].text, "a\xC2\xA0" "b\xA0" "c");
+}
+
+TEST(Lexer, NoBreakSpaceStartingALongerUtf8RunIsAnError) {
+    // `{UNICODE}+` matches C2 A0 C3 A9 (4 bytes), longer than the white-space run (2 bytes)
+    EXPECT_EQ(lexError("x =\xC2\xA0\xC3\xA9;"), "lex.scad:1:4: unexpected character '\\xC2'");
+    EXPECT_EQ(lexError("echo(\xC2\xA2);"), "lex.scad:1:6: unexpected character '\\xC2'");
 }
 
 }  // namespace

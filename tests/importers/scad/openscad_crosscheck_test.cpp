@@ -296,3 +296,194 @@ TEST(OpenScadCrossCheck, MetadataLibraryIsCleanOpenScad) {
 
 }  // namespace
 }  // namespace rt::scad::test
+
+namespace rt::scad::test {
+namespace {
+
+std::string readAll(const std::string &path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+size_t countLinesStartingWith(const std::string &text, const std::string &prefix) {
+    size_t n = 0;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);)
+        if (line.rfind(prefix, 0) == 0) ++n;
+    return n;
+}
+
+/// A snippet for both programs: whether they accept it, what it echoes, how many DEPRECATED
+/// messages it gives, and (when set) a message each must give about it.
+struct Probe {
+    std::string src;
+    const char *openscadSays = nullptr;  ///< in OpenSCAD's .echo output
+    const char *weSay = nullptr;         ///< in one of our warnings
+};
+
+void expectSameVerdict(const Probe &p, const std::string &tmp, int index) {
+    SCOPED_TRACE(p.src);
+    std::string scad = tmp + "/probe" + std::to_string(index) + ".scad";
+    std::ofstream(scad, std::ios::binary) << p.src;
+    RunResult r = runOpenScad(scad, scad + ".echo");
+    std::string theirs = readAll(scad + ".echo");
+    bool theyAccept = theirs.find("Parser error") == std::string::npos;
+    EXPECT_EQ(r.exitCode == 0, theyAccept) << theirs << r.stderrText;
+    Imported ours;
+    bool weAccept = true;
+    try {
+        ours.scene = importScadSource(p.src, scad, ours.diag);
+    } catch (const ParseError &) {
+        weAccept = false;
+    }
+    ASSERT_EQ(weAccept, theyAccept) << theirs;
+    if (!theyAccept) return;
+    EXPECT_EQ(ours.echoes(), echoLines(scad + ".echo"));
+    size_t ourDeprecations = 0;
+    for (const auto &w : ours.warnings()) ourDeprecations += w.rfind("DEPRECATED: ", 0) == 0;
+    EXPECT_EQ(ourDeprecations, countLinesStartingWith(theirs, "DEPRECATED: ")) << theirs;
+    if (p.openscadSays) {
+        EXPECT_NE(theirs.find(p.openscadSays), std::string::npos) << theirs;
+    }
+    if (p.weSay) {
+        EXPECT_TRUE(ours.hasWarning(p.weSay));
+    }
+}
+
+TEST(OpenScadCrossCheck, LanguageGapProbesAgree) {
+    REQUIRE_OPENSCAD();
+    std::string tmp = tempDir() + "/probes";
+    fs::create_directories(tmp);
+    const Probe probes[] = {
+        // Empty elements: accepted
+        {"echo([8, 1.4,,\"E\"], [,], [1,,]);"},
+        {"cylinder(h=2, r1=2,, $fn=50); echo(,,1, 2);"},
+        {"module m(,a,,) echo(a); m(,1);"},
+        {"x = [let(a = 1,, b = 2) for (i = [a:b]) i]; echo(x);"},
+        // and rejected: trailing commas in arguments, a comma before a vector's first element
+        {"echo(1, 2,);"},
+        {"echo(,);"},
+        {"cube(1,);"},
+        {"for (i = [0:1],) echo(i);"},
+        {"x = let(a = 1,) a;"},
+        {"x = [let(a = 1,) for (i = [0:1]) i];"},
+        {"x = [, 1];"},
+        // C-style for: init and update may be empty, the condition not
+        {"i = 0; echo([for (; i < 2; i = i + 1) i], [for (j = 0; j < 0; ) j]);"},
+        {"x = [for (i = 0; ; i = i + 1) i];"},
+        {"x = [for (i = 0,; i < 1; i = i + 1) i];"},
+        // No-break space between tokens, not inside a name or number
+        {"echo(\xC2\xA0" "1\xA0+\xC2\xA0\xA0" "2, \"a\xC2\xA0" "b\");"},
+        {"echo(1\xC2\xA0" "2);"},
+        {"echo(\xC2\xA2);"},
+        // Deprecated modules
+        {"assign(a = 1, b = 2) echo(a, b); for (i = [0:1]) assign(c = i) echo(c);"},
+        {"module m() { child(); child(1); } m() { echo(0); echo(1); }"},
+        // A background part is evaluated, a disabled one is not
+        {"%echo(\"bg\"); *echo(\"off\"); %union() { assign(x = 2) echo(x); }"},
+        // A missing font is reported and skipped
+        {"use <no_such_font.ttf>\necho(1);", "Can't read font", "can't read font"},
+    };
+    int index = 0;
+    for (const auto &p : probes) expectSameVerdict(p, tmp, index++);
+}
+
+TEST(OpenScadCrossCheck, ImportWithoutFileOrTrianglesIsEmptyGeometry) {
+    REQUIRE_OPENSCAD();
+    std::string tmp = tempDir() + "/empty_import";
+    fs::create_directories(tmp);
+    std::ofstream(tmp + "/empty.stl") << "solid empty\nendsolid empty\n";
+    std::ofstream(tmp + "/empty_bin.stl", std::ios::binary) << std::string(84, '\0');
+    struct Case {
+        const char *src;
+        const char *openscadSays;  ///< on stderr of the STL export, or null: no warning at all
+    };
+    const Case cases[] = {
+        {"import(); cube();", "Unsupported file format"},
+        {"difference() { import(\"empty.stl\"); cube(); } import(\"empty_bin.stl\"); cube();",
+         nullptr},
+    };
+    int index = 0;
+    for (const auto &c : cases) {
+        SCOPED_TRACE(c.src);
+        std::string scad = tmp + "/case" + std::to_string(index++) + ".scad";
+        std::ofstream(scad) << c.src;
+        // The STL export evaluates the geometry (the .csg export would not read the files)
+        RunResult r = runOpenScad(scad, scad + ".stl");
+        EXPECT_EQ(r.exitCode, 0) << r.stderrText;
+        // One unit cube survives: 12 triangles
+        EXPECT_EQ(countLinesStartingWith(readAll(scad + ".stl"), "  facet"), 12u);
+        Imported ours;
+        ours.scene = importScad(scad, ours.diag);
+        EXPECT_TRUE(ours.scene.meshes.empty());
+        std::vector<PlacedPrimitive> prims = primitives(*ours.scene.root);
+        if (c.openscadSays) {
+            EXPECT_NE(r.stderrText.find(c.openscadSays), std::string::npos) << r.stderrText;
+            EXPECT_TRUE(ours.hasWarning("unsupported file format"));
+            EXPECT_EQ(prims.size(), 1u);
+        } else {
+            EXPECT_EQ(r.stderrText.find("WARNING"), std::string::npos) << r.stderrText;
+            EXPECT_EQ(r.stderrText.find("ERROR"), std::string::npos) << r.stderrText;
+            EXPECT_TRUE(ours.warnings().empty());
+        }
+    }
+}
+
+}  // namespace
+}  // namespace rt::scad::test
+
+namespace rt::scad::test {
+namespace {
+
+/// The one primitive of a scene with identity transforms above it.
+const ir::Node *onlyPrimitive(const ir::Node &n) {
+    if (n.kind == ir::NodeKind::Primitive) return &n;
+    const ir::Node *found = nullptr;
+    for (const auto &c : n.children)
+        if (const ir::Node *p = onlyPrimitive(*c)) found = p;
+    return found;
+}
+
+TEST(OpenScadCrossCheck, FacetedPrimitivesHaveOpenScadsVertices) {
+    REQUIRE_OPENSCAD();
+    // OpenSCAD's OFF export of a lone primitive keeps its polygons; its vertices (6 digits)
+    // must be ours, one for one
+    const char *cases[] = {
+        "sphere(r=2, $fn=6);",
+        "sphere(1);",                                   // defaults: 5 fragments, 3 rings
+        "sphere(r=10);",                                // 30 fragments
+        "sphere(r=3, $fn=7);",                          // odd: no equator ring
+        "cylinder(h=3, r1=2, r2=0, $fn=5);",            // cone: one apex
+        "cylinder(h=3, r1=0, r2=1.5, $fn=4, center=true);",
+        "cylinder(h=2, r1=1, r2=2, $fn=7, center=true);",
+        "cylinder(h=1, r=3, $fa=30, $fs=1);",
+        "cylinder(h=4, d=5, $fn=6.8);",                 // $fn truncates in 2021.01
+    };
+    std::string tmp = tempDir();
+    for (const char *src : cases) {
+        SCOPED_TRACE(src);
+        std::string scad = tmp + "/facet.scad", off = tmp + "/facet.off";
+        std::ofstream(scad) << src << "\n";
+        RunResult r = runOpenScad(scad, off);
+        ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+        DiagnosticSink diag;
+        ir::Mesh theirs = meshio::readMeshFile(off, diag);
+        Imported ours = importText(src);
+        ir::applyFacets(ours.scene, ir::FacetMode::OpenScad, ours.diag);
+        const ir::Node *prim = onlyPrimitive(*ours.scene.root);
+        ASSERT_TRUE(prim);
+        const auto *poly = std::get_if<ir::PolytopePrim>(&prim->shape);
+        ASSERT_TRUE(poly);
+        ASSERT_EQ(poly->vertices.size(), theirs.positions.size());
+        for (const Vec3 &v : theirs.positions) {
+            double best = kInfinity;
+            for (const Vec3 &w : poly->vertices) best = std::min(best, length(v - w));
+            EXPECT_LT(best, 1e-5 * std::max(1.0, length(v))) << v.x << " " << v.y << " " << v.z;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace rt::scad::test

@@ -120,7 +120,7 @@ TEST(ParserStatements, ModifiersIfElseAndChildBlocks) {
 TEST(ParserStatements, KeywordModulesAndTrailingCommas) {
     DiagnosticSink diag;
     auto f =
-        parse("for (i = [0:2],) echo(i); let (a = 1) echo(a); assert(true); module m(a, b = 1,) {}",
+        parse("for (i = [0:2]) echo(i); let (a = 1) echo(a); assert(true); module m(a, b = 1,) {}",
               diag);
     ASSERT_EQ(f->top.instantiations.size(), 3u);
     EXPECT_EQ(f->top.instantiations[0]->name.str(), "for");
@@ -128,6 +128,64 @@ TEST(ParserStatements, KeywordModulesAndTrailingCommas) {
     EXPECT_EQ(f->top.instantiations[1]->name.str(), "let");
     EXPECT_EQ(f->top.instantiations[2]->name.str(), "assert");
     EXPECT_EQ(f->top.modules.begin()->second->params.size(), 2u);
+}
+
+TEST(ParserCommas, EmptyElementsAreSkippedWhere2021Allows) {
+    // Vectors: repeated and trailing commas; commas alone are an empty vector
+    EXPECT_EQ(test::echoOf("echo([8, 1.4,,\"E\"], [1,,,2,,,], [,], [,,], [1,,for(i=[0:1]) i]);"),
+              "[8, 1.4, \"E\"], [1, 2], [], [], [1, 0, 1]");
+    // Arguments: repeated commas, and commas before the first argument
+    EXPECT_EQ(test::echoOf("function f(a, b) = a + b; echo(f(1,,2), f(,,1, 2), ,x = 5);"),
+              "3, 3, x = 5");
+    // Parameters: anywhere, even alone
+    EXPECT_EQ(test::echoOf("function f(,a,,b,,) = a + b; g = function(,) 7; echo(f(1, 2), g());"),
+              "3, 7");
+    EXPECT_EQ(test::echoOf("module m(a,,b,) echo(a, b); m(1,, 2);"), "1, 2");
+    EXPECT_EQ(test::echoOf("echo(let(a = 1,, b = 2) a + b, [let(,a = 1) for (i = [0,,a]) i]);"),
+              "3, [0, 1]");
+    test::Imported r = test::importText("cylinder(h=2, r1=2,, $fn=50); for (i = [0:1],, j = [2]) "
+                                        "echo(i, j); let(a = 1,, b = 2) echo(a, b);");
+    EXPECT_EQ(r.echoes(), (std::vector<std::string>{"0, 2", "1, 2", "1, 2"}));
+    EXPECT_EQ(r.scene.root->primitiveCount(), 1u);
+}
+
+TEST(ParserCommas, TrailingCommaInArgumentsIsASyntaxError) {
+    DiagnosticSink diag;
+    for (const char *src : {"echo(1, 2,);", "cube(1,);", "for (i = [0:2],) echo(i);", "echo(,);",
+                            "x = f(1,);", "x = let(a = 1,) a;", "x = [for (i = [0:1],) i];",
+                            "x = [let(a = 1, b = 2,) for (i = [a:b]) i];"}) {
+        try {
+            parse(src, diag);
+            ADD_FAILURE() << "accepted: " << src;
+        } catch (const ParseError &e) {
+            EXPECT_NE(std::string(e.what()).find("after ','"), std::string::npos) << src;
+            EXPECT_EQ(e.loc().line, 1) << src;
+        }
+    }
+}
+
+TEST(ParserCommas, CommaBeforeAVectorsFirstElementIsASyntaxError) {
+    DiagnosticSink diag;
+    try {
+        parse("x = [, 1];", diag);
+        FAIL() << "accepted";
+    } catch (const ParseError &e) {
+        EXPECT_EQ(e.loc().toString(), "parse.scad:1:8");
+        EXPECT_EQ(std::string(e.what()),
+                  "syntax error: unexpected '1' after ',' (a vector's first element has no comma "
+                  "before it)");
+    }
+}
+
+TEST(ParserForC, InitAndUpdateMayBeEmptyButNotTheCondition) {
+    EXPECT_EQ(test::echoOf("i = 0; echo([for (; i < 3; i = i + 1) i]);"), "[0, 1, 2]");
+    EXPECT_EQ(test::echoOf("echo([for (; false; ) 1]);"), "[]");
+    EXPECT_EQ(test::echoOf("echo([for (,a = 0,, b = 1; a < 3; ,a = a + 1,, b = b * 2) [a, b]]);"),
+              "[[0, 1], [1, 2], [2, 4]]");
+    DiagnosticSink diag;
+    EXPECT_THROW(parse("x = [for (i = 0; ; i = i + 1) i];", diag), ParseError);
+    EXPECT_THROW(parse("x = [for (i = 0,; i < 2; i = i + 1) i];", diag), ParseError);
+    EXPECT_THROW(parse("x = [for (i = 0; i < 2; i = i + 1,) i];", diag), ParseError);
 }
 
 void expectSyntaxError(const std::string &src, const std::string &where, const std::string &msg) {

@@ -1,0 +1,212 @@
+// SPDX-License-Identifier: MIT
+// OpenSCAD 2021.01's tessellation of spheres, cylinders and cones (primitives.cc,
+// calc.cc), and the pass that swaps them in for the analytic primitives.
+#include "core/ir/facets.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/ir/scene_ir.h"
+
+namespace rt::ir {
+
+namespace {
+
+/// OpenSCAD's GRID_FINE: circles smaller than this get 3 fragments.
+constexpr double kGridFine = 0.00000095367431640625;  // 2^-20
+
+/// An n-gon of radius r at height z, starting on +X, in OpenSCAD's radian arithmetic
+/// (generate_circle): the same doubles as OpenSCAD's vertices.
+void appendCircle(std::vector<Vec3> &out, double r, double z, int n) {
+    for (int i = 0; i < n; ++i) {
+        double phi = (M_PI * 2 * i) / n;
+        out.emplace_back(r * std::cos(phi), r * std::sin(phi), z);
+    }
+}
+
+/// A face from vertex indices first + (0..n-1), forwards or backwards.
+std::vector<int> ring(int first, int n, bool reversed) {
+    std::vector<int> f(n);
+    for (int i = 0; i < n; ++i) f[i] = first + (reversed ? n - 1 - i : i);
+    return f;
+}
+
+}  // namespace
+
+const char *facetModeName(FacetMode mode) {
+    switch (mode) {
+        case FacetMode::Smooth: return "smooth";
+        case FacetMode::OpenScad: return "openscad";
+        case FacetMode::Auto: return "auto";
+    }
+    return "?";
+}
+
+std::optional<FacetMode> parseFacetMode(std::string_view text) {
+    for (FacetMode m : {FacetMode::Smooth, FacetMode::OpenScad, FacetMode::Auto})
+        if (text == facetModeName(m)) return m;
+    return std::nullopt;
+}
+
+int openscadFragments(double r, const Fragments &f) {
+    if (r < kGridFine || !std::isfinite(f.fn)) return 3;
+    if (f.fn > 0) return f.fn >= 3 ? static_cast<int>(std::min(f.fn, 2e9)) : 3;
+    double n = std::ceil(std::max(std::min(360.0 / f.fa, r * 2 * M_PI / f.fs), 5.0));
+    return static_cast<int>(std::min(n, 2e9));
+}
+
+PolytopePrim openscadSphere(double radius, int n) {
+    PolytopePrim p;
+    int rings = (n + 1) / 2;
+    p.vertices.reserve(static_cast<size_t>(rings) * n);
+    for (int i = 0; i < rings; ++i) {
+        double phi = (M_PI * (i + 0.5)) / rings;
+        appendCircle(p.vertices, radius * std::sin(phi), radius * std::cos(phi), n);
+    }
+    // Flat caps on the first (top) and last ring; between rings, planar trapezoids (2021.01
+    // splits each into two triangles of the same plane)
+    p.faces.push_back(ring(0, n, false));
+    for (int i = 0; i + 1 < rings; ++i)
+        for (int j = 0; j < n; ++j) {
+            int k = (j + 1) % n;
+            p.faces.push_back({i * n + j, (i + 1) * n + j, (i + 1) * n + k, i * n + k});
+        }
+    p.faces.push_back(ring((rings - 1) * n, n, true));
+    return p;
+}
+
+PolytopePrim openscadCylinder(const CylinderPrim &c, int n) {
+    PolytopePrim p;
+    // Bottom ring (or apex), then top ring (or apex)
+    int bottom = 0, top;
+    if (c.r1 > 0)
+        appendCircle(p.vertices, c.r1, c.z0, n);
+    else
+        p.vertices.emplace_back(0, 0, c.z0);
+    top = static_cast<int>(p.vertices.size());
+    if (c.r2 > 0)
+        appendCircle(p.vertices, c.r2, c.z1, n);
+    else
+        p.vertices.emplace_back(0, 0, c.z1);
+    auto at = [&](int first, double r, int j) { return r > 0 ? first + j % n : first; };
+    for (int j = 0; j < n; ++j) {
+        std::vector<int> f = {at(bottom, c.r1, j), at(bottom, c.r1, j + 1), at(top, c.r2, j + 1),
+                              at(top, c.r2, j)};
+        // A cone's side faces are triangles: drop the repeated apex
+        f.erase(std::unique(f.begin(), f.end()), f.end());
+        p.faces.push_back(f);
+    }
+    if (c.r1 > 0) p.faces.push_back(ring(bottom, n, true));
+    if (c.r2 > 0) p.faces.push_back(ring(top, n, false));
+    return p;
+}
+
+std::vector<FacePlane> polytopePlanes(const PolytopePrim &p) {
+    Vec3 centroid(0);
+    for (const Vec3 &v : p.vertices) centroid += v;
+    if (!p.vertices.empty()) centroid = centroid / static_cast<double>(p.vertices.size());
+    std::vector<FacePlane> planes;
+    planes.reserve(p.faces.size());
+    for (const auto &f : p.faces) {
+        if (f.size() < 3) continue;
+        FacePlane pl;
+        // A face whose vertices share one coordinate exactly lies in that axis plane: keep the
+        // plane exact, so faces flush with a cube or another polytope tie exactly
+        for (int axis = 0; axis < 3 && pl.axis < 0; ++axis) {
+            double c = p.vertices[f[0]][axis];
+            bool flat = true;
+            for (int i : f) flat = flat && p.vertices[i][axis] == c;
+            if (flat) {
+                pl.axis = axis;
+                pl.normal = Vec3(0);
+                pl.normal[axis] = centroid[axis] <= c ? 1 : -1;
+                pl.offset = pl.normal[axis] * c;
+            }
+        }
+        if (pl.axis < 0) {
+            // Newell's normal, relative to the first vertex so far-off faces keep their digits
+            Vec3 n(0), base = p.vertices[f[0]];
+            for (size_t i = 0; i < f.size(); ++i) {
+                Vec3 a = p.vertices[f[i]] - base, b = p.vertices[f[(i + 1) % f.size()]] - base;
+                n += Vec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x),
+                          (a.x - b.x) * (a.y + b.y));
+            }
+            double len = length(n);
+            if (!(len > 0)) continue;
+            n = n / len;
+            double offset = 0;
+            for (int i : f) offset += dot(n, p.vertices[i]);
+            offset /= static_cast<double>(f.size());
+            if (dot(n, centroid) > offset) {
+                n = -n;
+                offset = -offset;
+            }
+            pl.normal = n;
+            pl.offset = offset;
+        }
+        planes.push_back(pl);
+    }
+    return planes;
+}
+
+bool drawsFaceted(FacetMode mode, const Fragments &f, int fragments) {
+    switch (mode) {
+        case FacetMode::Smooth: return false;
+        case FacetMode::OpenScad: return true;
+        case FacetMode::Auto: return f.fn > 0 && fragments <= kAutoFacetMaxFragments;
+    }
+    return false;
+}
+
+std::string FacetStats::describe() const {
+    std::string s = std::string(facetModeName(mode)) + ": ";
+    switch (mode) {
+        case FacetMode::Smooth: s += "every sphere and cylinder exactly round"; break;
+        case FacetMode::OpenScad: s += "spheres and cylinders as OpenSCAD tessellates them"; break;
+        case FacetMode::Auto:
+            s += "OpenSCAD's polygons where $fn gives at most " +
+                 std::to_string(kAutoFacetMaxFragments) + " fragments, round otherwise";
+            break;
+    }
+    return s + " (" + std::to_string(faceted) + " faceted, " + std::to_string(smooth) +
+           " round)";
+}
+
+namespace {
+
+void facetNode(Node &n, FacetMode mode, FacetStats &stats, DiagnosticSink &diag) {
+    for (auto &c : n.children) facetNode(*c, mode, stats, diag);
+    if (n.kind != NodeKind::Primitive) return;
+    const auto *sphere = std::get_if<SpherePrim>(&n.shape);
+    const auto *cyl = std::get_if<CylinderPrim>(&n.shape);
+    if (!sphere && !cyl) return;
+    int fragments = openscadFragments(sphere ? sphere->radius : std::max(cyl->r1, cyl->r2),
+                                      n.fragments);
+    if (!drawsFaceted(mode, n.fragments, fragments)) {
+        ++stats.smooth;
+        return;
+    }
+    size_t faces = sphere ? static_cast<size_t>(fragments) * ((fragments + 1) / 2)
+                          : static_cast<size_t>(fragments) + 2;
+    if (faces > kMaxPolytopeFaces) {
+        diag.warning(n.loc, std::to_string(fragments) + " fragments would make " +
+                                std::to_string(faces) + " faces (more than " +
+                                std::to_string(kMaxPolytopeFaces) + "); drawn round");
+        ++stats.smooth;
+        return;
+    }
+    n.shape = sphere ? openscadSphere(sphere->radius, fragments)
+                     : openscadCylinder(*cyl, fragments);
+    ++stats.faceted;
+}
+
+}  // namespace
+
+void applyFacets(Scene &scene, FacetMode mode, DiagnosticSink &diag) {
+    FacetStats stats;
+    stats.mode = mode;
+    facetNode(*scene.root, mode, stats, diag);
+    scene.stats.facets = stats;
+}
+
+}  // namespace rt::ir

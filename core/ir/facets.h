@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+// OpenSCAD 2021.01's tessellation of spheres, cylinders and cones as exact convex polytopes,
+// and the `--facets` pass that decides which primitives are drawn faceted.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "core/ir/diagnostics.h"
+#include "core/ir/node.h"
+
+namespace rt::ir {
+
+struct Scene;
+
+/// How round primitives are drawn.
+enum class FacetMode {
+    Smooth,    ///< exactly round (analytic sphere, cylinder, cone)
+    OpenScad,  ///< as OpenSCAD 2021.01 tessellates them, from $fn/$fa/$fs
+    Auto,      ///< OpenSCAD's polygon where a small $fn was given, else smooth
+};
+
+/// `auto` draws a primitive faceted when `$fn` was set (it is 0 unless the file sets it) and
+/// gives at most this many fragments: hexagonal nut traps, square and octagonal holes and the
+/// like are meant as polygons, while `$fn=32` and above, or the $fa/$fs defaults (5 fragments
+/// for a sphere of radius 1), only approximate a round shape.
+constexpr int kAutoFacetMaxFragments = 12;
+
+/// A polytope larger than this (faces) stays smooth, with a warning: `$fn=100000` would
+/// otherwise make a sphere of 5e9 faces.
+constexpr size_t kMaxPolytopeFaces = 1'000'000;
+
+const char *facetModeName(FacetMode mode);
+std::optional<FacetMode> parseFacetMode(std::string_view text);
+
+/// OpenSCAD 2021.01's fragment count for a circle of radius r (Calc::get_fragments_from_r):
+/// 3 below 2^-20; max(trunc($fn), 3) when $fn > 0; else ceil(max(min(360/$fa, 2 pi r/$fs), 5)).
+int openscadFragments(double r, const Fragments &f);
+
+/// OpenSCAD's sphere: (n + 1) / 2 rings at polar angles 180 (i + 0.5) / rings, each an n-gon
+/// starting on +X, flat caps on the first and last ring; no pole vertices.
+PolytopePrim openscadSphere(double radius, int fragments);
+
+/// OpenSCAD's cylinder or cone: n-gons at z0 and z1 (a single apex where a radius is 0).
+PolytopePrim openscadCylinder(const CylinderPrim &c, int fragments);
+
+/// The plane of a polytope face: inside is normal . x <= offset.
+struct FacePlane {
+    Vec3 normal;      ///< unit, pointing out of the solid
+    double offset = 0;
+    int axis = -1;    ///< 0, 1 or 2 when the face lies exactly in a plane x, y or z = offset
+};
+
+/// The planes of a polytope's faces, oriented away from the centroid of its vertices (so a
+/// face listed clockwise still bounds the solid). Degenerate faces (no area) are left out.
+std::vector<FacePlane> polytopePlanes(const PolytopePrim &p);
+
+/// Whether `mode` draws a primitive with these $-values and fragment count faceted.
+bool drawsFaceted(FacetMode mode, const Fragments &f, int fragments);
+
+/// What the pass did, for the render plan.
+struct FacetStats {
+    FacetMode mode = FacetMode::Auto;
+    int faceted = 0;  ///< spheres and cylinders drawn as OpenSCAD's polytopes
+    int smooth = 0;   ///< spheres and cylinders drawn round
+    std::string describe() const;
+};
+
+/// Replaces the spheres and cylinders of `scene` that `mode` draws faceted by OpenSCAD's
+/// polytopes, and records the counts in scene.stats.facets.
+void applyFacets(Scene &scene, FacetMode mode, DiagnosticSink &diag);
+
+}  // namespace rt::ir
