@@ -11,6 +11,7 @@
 
 #include "core/image/image_compare.h"
 #include "core/image/image_io.h"
+#include "core/ir/facets.h"
 #include "core/render/geometry_buffer.h"
 #include "core/render/render_scene.h"
 #include "core/render/renderer.h"
@@ -80,6 +81,8 @@ int runOpenScadCheck(const CheckArgs &a) {
         throw std::invalid_argument("OpenSCAD (openscad) is not installed; tools/setup.sh installs it");
     CheckFiles file(a);
     LoadOptions lo = a.scene.loadOptions(true);
+    // Spheres and cylinders as OpenSCAD tessellates them: the referee's geometry, not a sphere
+    lo.facets = ir::FacetMode::OpenScad;
 
     // scadray: parse, evaluate, compile and trace the scene; its camera (given or automatic)
     // is the one both pictures use
@@ -233,7 +236,7 @@ void addCheckCommand(CLI::App &app, std::function<int()> &action) {
         ->capture_default_str();
     cmd->add_flag("--openscad", args->openscad,
                   "Referee OpenSCAD: compare hit/miss, depth and normal per pixel with the mesh "
-                  "`openscad` exports (scadray renders with OpenSCAD's facets)");
+                  "`openscad` exports (implies --facets openscad)");
     cmd->add_option("--depth-tol", args->geometry.depthRel,
                     "--openscad: relative depth difference allowed")
         ->capture_default_str();
