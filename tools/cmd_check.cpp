@@ -77,6 +77,7 @@ int runOpenScadCheck(const CheckArgs &a) {
     if (a.width < 1 || a.height < 1 || a.width > kMaxImageSide || a.height > kMaxImageSide)
         throw std::invalid_argument("image size must be between 1 and " +
                                     std::to_string(kMaxImageSide));
+    if (a.timeout < 1) throw std::invalid_argument("--timeout must be at least 1 second");
     if (!openscadAvailable())
         throw std::invalid_argument("OpenSCAD (openscad) is not installed; tools/setup.sh installs it");
     CheckFiles file(a);

@@ -45,13 +45,14 @@ else
 fi
 mkdir -p "$out"
 
-# check_file FILE: sets covered (yes / the unsupported features), result, differing, osc, ours
+# check_file FILE: sets covered (yes / the unsupported features), result, differing, osc (CGAL),
+# osc_wall, ours
 # and checklog (what `check --openscad` printed)
 check_file() {
     local file=$1 name log csv
     name=$(echo "$file" | sed -e "s|^$examples/||" -e 's|.*/scenes/|scenes/|' -e 's|[/.]|_|g')
     log=$out/$name.log csv=$out/$name.csv checklog=$out/$name.check.log
-    covered=yes result=- differing=- osc=- ours=-
+    covered=yes result=- differing=- osc=- osc_wall=- ours=-
     if ! "$scadray" dump "$file" >/dev/null 2>"$log"; then
         covered="import error: $(grep -m1 error "$log" | sed 's|.*error: ||' | cut -c1-50)"
         return
@@ -67,8 +68,8 @@ check_file() {
         --csv "$csv" >"$checklog" 2>&1
     local rc=$?
     if [ -s "$csv" ]; then
-        IFS=, read -r _ result differing _ _ _ _ _ _ osc ours < <(tail -n1 "$csv")
-        osc=$(printf '%.2f' "$osc") ours=$(printf '%.2f' "$ours")
+        IFS=, read -r _ result differing _ _ _ _ _ osc_wall osc ours < <(tail -n1 "$csv")
+        osc=$(printf '%.2f' "$osc") osc_wall=$(printf '%.2f' "$osc_wall") ours=$(printf '%.2f' "$ours")
     elif grep -q "empty top level\|2D top level" "$checklog"; then
         result="no 3D geometry"
     else
@@ -82,29 +83,33 @@ if [ $test_mode -eq 1 ]; then
     case $covered in yes) ;; *) echo "SKIPPED: ${files[0]} is not covered ($covered)"; exit 77 ;; esac
     [ "$result" = "no 3D geometry" ] && { echo "SKIPPED: OpenSCAD finds no 3D geometry in ${files[0]}"; exit 77; }
     cat "$checklog"
-    echo "$result: ${files[0]}: $differing differing pixels, OpenSCAD $osc s, scadray $ours s"
+    echo "$result: ${files[0]}: $differing differing pixels, OpenSCAD $osc s CGAL ($osc_wall s" \
+         "wall), scadray $ours s"
     [ "$result" = pass ] && exit 0
     exit 1
 fi
 
-total=0 covered_count=0 compared=0 agree=0 osc_sum=0 ours_sum=0
-printf '%-46s %-28s %-10s %9s %9s %9s\n' file covered result differing openscad_s scadray_s
+total=0 covered_count=0 compared=0 agree=0 osc_sum=0 wall_sum=0 ours_sum=0
+printf '%-46s %-28s %-10s %9s %9s %9s %9s\n' file covered result differing \
+       osc_cgal_s osc_wall_s scadray_s
 for f in "${files[@]}"; do
     check_file "$f"
     total=$((total + 1))
     shown=$(echo "$f" | sed -e "s|^$examples/|examples/|" -e 's|.*/scenes/|scenes/|')
-    printf '%-46s %-28s %-10s %9s %9s %9s\n' "$shown" "$covered" "$result" "$differing" "$osc" "$ours"
+    printf '%-46s %-28s %-10s %9s %9s %9s %9s\n' "$shown" "$covered" "$result" "$differing" \
+           "$osc" "$osc_wall" "$ours"
     [ "$covered" = yes ] && covered_count=$((covered_count + 1))
     case $result in
         pass|different)
             compared=$((compared + 1))
             [ "$result" = pass ] && agree=$((agree + 1))
-            osc_sum=$(echo "$osc_sum + $osc" | bc) ours_sum=$(echo "$ours_sum + $ours" | bc) ;;
+            osc_sum=$(echo "$osc_sum + $osc" | bc) wall_sum=$(echo "$wall_sum + $osc_wall" | bc)
+            ours_sum=$(echo "$ours_sum + $ours" | bc) ;;
     esac
 done
 echo
 echo "files: $total; covered by scadray: $covered_count; rendered completely and compared" \
      "with OpenSCAD: $compared; agree with OpenSCAD: $agree"
-printf 'time over the compared files: OpenSCAD %.2f s (wall: CGAL and export), scadray %.2f s' \
-       "$osc_sum" "$ours_sum"
+printf 'time over the compared files: OpenSCAD %.2f s CGAL (%.2f s wall), scadray %.2f s' \
+       "$osc_sum" "$wall_sum" "$ours_sum"
 echo " (parse, compile, trace ${width}x${height})"

@@ -29,6 +29,7 @@ bool programOnPath(const std::string &program) {
 }
 
 std::string lastLines(const std::string &text, size_t lines) {
+    if (text.empty()) return text;
     size_t pos = text.size();
     for (size_t n = 0; n <= lines && pos > 0; ++n) {
         size_t nl = text.rfind('\n', pos - 1);
