@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // `scadray check`: render a scene with scadray and with POV-Ray (exported, same camera and
-// resolution, supersampled), compare statistically, and report error against run time.
+// resolution, supersampled), compare statistically, and report error against run time; with
+// --openscad, compare scadray's geometry per pixel with the mesh OpenSCAD exports instead.
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
@@ -10,12 +11,15 @@
 
 #include "core/image/image_compare.h"
 #include "core/image/image_io.h"
+#include "core/ir/facets.h"
+#include "core/render/geometry_buffer.h"
 #include "core/render/render_scene.h"
 #include "core/render/renderer.h"
 #include "exporters/povray/pov_runner.h"
 #include "exporters/povray/pov_writer.h"
 #include "tools/cli_common.h"
 #include "tools/commands.h"
+#include "tools/openscad_runner.h"
 
 namespace rt::cli {
 
@@ -29,12 +33,108 @@ struct CheckArgs {
     int width = 320, height = 240;
     int supersample = 3, batches = 8, samples = 4, threads = 0, timeout = 600;
     uint64_t seed = 1;
-    bool quiet = false;
+    bool quiet = false, openscad = false;
     CompareOptions compare;
+    GeometryTolerances geometry;
 };
+
+/// Output folder (created) and the path of one output file in it.
+struct CheckFiles {
+    std::string stem;
+    std::filesystem::path dir;
+    explicit CheckFiles(const CheckArgs &a) {
+        stem = fs::path(a.scene.input).stem().string();
+        dir = a.outDir.empty() ? fs::path(stem + "_check") : fs::path(a.outDir);
+        fs::create_directories(dir);
+    }
+    std::string operator()(const std::string &suffix) const { return (dir / (stem + suffix)).string(); }
+};
+
+/// Writes the report beside the pictures, appends the figures to --csv (the header first when
+/// the file is new), prints the report (only on failure when quiet) and maps the verdict to the
+/// exit code of `compare`.
+int finishCheck(const CheckArgs &a, const std::string &reportPath, const std::string &report,
+                const char *csvHeader, const std::string &csvRow, bool pass) {
+    pov::writeTextFile(reportPath, report);
+    if (!a.csv.empty()) {
+        bool fresh = !fs::exists(a.csv);
+        std::ofstream out(a.csv, std::ios::app);
+        if (fresh) out << csvHeader << "\n";
+        out << csvRow;
+        if (!out) throw std::runtime_error("cannot append to '" + a.csv + "'");
+    }
+    if (!a.quiet || !pass) std::cout << report;
+    return pass ? kExitOk : kExitInputError;
+}
+
+/// `check --openscad`: OpenSCAD exports the scene's mesh; scadray traces that mesh and the scene
+/// itself (with OpenSCAD's facets) through the scene's one camera, and the two geometry
+/// buffers are compared per pixel.
+int runOpenScadCheck(const CheckArgs &a) {
+    using clock = std::chrono::steady_clock;
+    if (fs::path(a.scene.input).extension() != ".scad")
+        throw std::invalid_argument("--openscad checks a .scad scene, not '" + a.scene.input + "'");
+    if (a.width < 1 || a.height < 1 || a.width > kMaxImageSide || a.height > kMaxImageSide)
+        throw std::invalid_argument("image size must be between 1 and " +
+                                    std::to_string(kMaxImageSide));
+    if (a.timeout < 1) throw std::invalid_argument("--timeout must be at least 1 second");
+    if (!openscadAvailable())
+        throw std::invalid_argument("OpenSCAD (openscad) is not installed; tools/setup.sh installs it");
+    CheckFiles file(a);
+    LoadOptions lo = a.scene.loadOptions(true);
+    // Spheres and cylinders as OpenSCAD tessellates them: the referee's geometry, not a sphere
+    lo.facets = ir::FacetMode::OpenScad;
+
+    // scadray: parse, evaluate, compile and trace the scene; its camera (given or automatic)
+    // is the one both pictures use
+    DiagnosticSink diag;
+    attachPrinter(diag, true);
+    auto t0 = clock::now();
+    ir::Scene scene = loadScene(a.scene.input, diag, lo);
+    auto rs = RenderScene::compile(scene, diag);
+    GeometryBuffer ours = renderGeometry(*rs, a.width, a.height, a.threads);
+    double ourSeconds = std::chrono::duration<double>(clock::now() - t0).count();
+
+    // OpenSCAD: CGAL evaluation and mesh export, then the mesh through scadray's mesh reader
+    std::string meshPath = file("_openscad.stl");
+    OpenScadRun run =
+        exportWithOpenScad(a.scene.input, meshPath, lo.defines, lo.libraryPaths, a.timeout);
+    ir::Scene meshScene = loadScene(meshPath, diag, LoadOptions{});
+    meshScene.camera = scene.camera;
+    auto ms = RenderScene::compile(meshScene, diag);
+    GeometryBuffer theirs = renderGeometry(*ms, a.width, a.height, a.threads);
+
+    GeometryCompareResult cr = compareGeometry(ours, theirs, a.geometry);
+    writeImage(normalImage(ours), file("_scadray_normals.png"));
+    writeImage(normalImage(theirs), file("_openscad_normals.png"));
+    writeImage(cr.heatMap, file("_geometry_diff.png"));
+
+    char buf[512];
+    std::string report = std::string(cr.pass ? "PASS" : "DIFFERENT") + ": " + a.scene.input +
+                         " geometry against OpenSCAD at " + std::to_string(a.width) + "x" +
+                         std::to_string(a.height) + "\n";
+    std::snprintf(buf, sizeof buf, "openscad: %.3f s wall (CGAL render %.3f s), %zu triangles\n",
+                  run.wallSeconds, run.renderSeconds, ms->stats().triangles);
+    report += buf;
+    std::snprintf(buf, sizeof buf, "scadray:  %.3f s (parse, compile and trace %d rays)\n",
+                  ourSeconds, a.width * a.height);
+    report += buf;
+    report += cr.summary(a.geometry);
+    report += "files: " + file.dir.string() + "/" + file.stem +
+              "{_openscad.stl,_scadray_normals.png,_openscad_normals.png,_geometry_diff.png}\n";
+    std::snprintf(buf, sizeof buf, "%s,%s,%ld,%ld,%ld,%ld,%ld,%ld,%.3f,%.3f,%.3f\n",
+                  a.scene.input.c_str(), cr.pass ? "pass" : "different", cr.differing(),
+                  cr.coverageDiffer, cr.depthDiffer, cr.normalDiffer, cr.silhouette, cr.tied,
+                  run.wallSeconds, run.renderSeconds, ourSeconds);
+    return finishCheck(a, file("_openscad_report.txt"), report,
+                       "scene,verdict,differing,coverage,depth,normal,silhouette,tied,"
+                       "openscad_wall_s,openscad_render_s,scadray_s",
+                       buf, cr.pass);
+}
 
 int runCheck(const CheckArgs &a) {
     using clock = std::chrono::steady_clock;
+    if (a.openscad) return runOpenScadCheck(a);
     if (a.supersample < 1 || a.supersample > 16)
         throw std::invalid_argument("--supersample must be between 1 and 16");
     RenderOptions ro;
@@ -49,10 +149,9 @@ int runCheck(const CheckArgs &a) {
     if (!pov::povrayAvailable())
         throw std::invalid_argument("POV-Ray (povray) is not installed; tools/setup.sh installs it");
 
-    std::string stem = fs::path(a.scene.input).stem().string();
-    fs::path dir = a.outDir.empty() ? fs::path(stem + "_check") : fs::path(a.outDir);
-    fs::create_directories(dir);
-    auto file = [&](const std::string &suffix) { return (dir / (stem + suffix)).string(); };
+    CheckFiles file(a);
+    const std::string &stem = file.stem;
+    const fs::path &dir = file.dir;
 
     DiagnosticSink diag;
     attachPrinter(diag, true);
@@ -100,23 +199,15 @@ int runCheck(const CheckArgs &a) {
         report += "povray printed " + std::to_string(pr.warnings) + " warnings about the exported scene (see " +
                   stem + ".ini.log)\n";
     report += "files: " + dir.string() + "/" + stem + "{.pov,.ini,_reference.png,_scadray.png,_diff.png,...}\n";
-    pov::writeTextFile(file("_report.txt"), report);
-    if (!a.csv.empty()) {
-        bool fresh = !fs::exists(a.csv);
-        std::ofstream out(a.csv, std::ios::app);
-        if (fresh)
-            out << "scene,verdict,rmse,max_error,masked_percent,tiles_tested,tiles_failed,"
-                   "detectable_median,povray_wall_s,povray_trace_s,scadray_wall_s,scadray_render_s\n";
-        std::snprintf(buf, sizeof buf, "%s,%s,%.3g,%.3g,%.1f,%d,%d,%.3g,%.3f,%.3f,%.3f,%.3f\n",
-                      a.scene.input.c_str(), cr.pass ? "pass" : "different", cr.rmse, cr.maxError,
-                      100.0 * cr.maskedPixels / (a.width * a.height), cr.tilesTested,
-                      cr.tilesFailed, cr.detectableMedian, pr.wallSeconds, pr.traceSeconds,
-                      ourWall, rr.seconds);
-        out << buf;
-        if (!out) throw std::runtime_error("cannot append to '" + a.csv + "'");
-    }
-    if (!a.quiet || !cr.pass) std::cout << report;
-    return cr.pass ? kExitOk : kExitInputError;
+    std::snprintf(buf, sizeof buf, "%s,%s,%.3g,%.3g,%.1f,%d,%d,%.3g,%.3f,%.3f,%.3f,%.3f\n",
+                  a.scene.input.c_str(), cr.pass ? "pass" : "different", cr.rmse, cr.maxError,
+                  100.0 * cr.maskedPixels / (a.width * a.height), cr.tilesTested, cr.tilesFailed,
+                  cr.detectableMedian, pr.wallSeconds, pr.traceSeconds, ourWall, rr.seconds);
+    return finishCheck(a, file("_report.txt"), report,
+                       "scene,verdict,rmse,max_error,masked_percent,tiles_tested,tiles_failed,"
+                       "detectable_median,povray_wall_s,povray_trace_s,scadray_wall_s,"
+                       "scadray_render_s",
+                       buf, cr.pass);
 }
 
 }  // namespace
@@ -124,7 +215,10 @@ int runCheck(const CheckArgs &a) {
 void addCheckCommand(CLI::App &app, std::function<int()> &action) {
     auto args = std::make_shared<CheckArgs>();
     CLI::App *cmd = app.add_subcommand(
-        "check", "Render with scadray and POV-Ray, compare statistically, report error and time");
+        "check",
+        "Render with scadray and POV-Ray, compare statistically, report error and time; with "
+        "--openscad, compare geometry with OpenSCAD's mesh of the scene (exit 0 pass, 1 "
+        "different or failed, 2 bad usage)");
     args->scene.addTo(*cmd);
     cmd->add_option("-o,--output-dir", args->outDir, "Folder for all files (default <scene>_check)");
     cmd->add_option("-W,--width", args->width, "Image width")->capture_default_str();
@@ -139,7 +233,20 @@ void addCheckCommand(CLI::App &app, std::function<int()> &action) {
     cmd->add_option("--seed", args->seed, "scadray: seed of the first batch")->capture_default_str();
     cmd->add_option("-t,--threads", args->threads, "Threads for both renderers (0 = all)")
         ->capture_default_str();
-    cmd->add_option("--timeout", args->timeout, "Seconds POV-Ray may run")->capture_default_str();
+    cmd->add_option("--timeout", args->timeout, "Seconds POV-Ray or OpenSCAD may run")
+        ->capture_default_str();
+    cmd->add_flag("--openscad", args->openscad,
+                  "Referee OpenSCAD: compare hit/miss, depth and normal per pixel with the mesh "
+                  "`openscad` exports (implies --facets openscad)");
+    cmd->add_option("--depth-tol", args->geometry.depthRel,
+                    "--openscad: relative depth difference allowed")
+        ->capture_default_str();
+    cmd->add_option("--normal-tol", args->geometry.normalDegrees,
+                    "--openscad: normal angle difference allowed, degrees")
+        ->capture_default_str();
+    cmd->add_option("--max-differing", args->geometry.maxDiffering,
+                    "--openscad: differing pixels outside the masks that still pass")
+        ->capture_default_str();
     cmd->add_flag("-q,--quiet", args->quiet, "Print the report only when the check fails");
     cmd->add_option("--csv", args->csv, "Append a row of figures to this CSV file");
     addCompareOptions(*cmd, args->compare);

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
-// Ear-clipping tests: area and orientation preserved for concave polygons in any plane,
-// degenerate polygons rejected.
+// Triangulation tests: OpenSCAD's own diagonals on recorded faces, area and orientation
+// preserved for concave polygons in any plane, degenerate polygons rejected.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -72,6 +73,80 @@ const std::vector<std::array<double, 2>> kStar = {{-1, 1},   {-3, 1}, {-1.5, -0.
 /// Collinear corners along the bottom and a notch
 const std::vector<std::array<double, 2>> kCollinear = {{0, 0}, {1, 0},   {2, 0}, {3, 0}, {3, 2},
                                                        {2, 2}, {1.5, 1}, {1, 2}, {0, 2}, {0, 1}};
+
+/// A polygon face and the triangles OpenSCAD 2021.01 makes of it. Recorded with
+/// `openscad -o x.stl` on polyhedron(points = P + [apex], faces = [[0..n-1], sides to the apex]),
+/// keeping the STL triangles without the apex (indices into P). OpenSCAD reverses the face first.
+struct OpenScadCase {
+    const char *name;
+    std::vector<Vec3> points;
+    std::vector<std::array<uint32_t, 3>> triangles;
+};
+
+const OpenScadCase kOpenScadCases[] = {
+    {"skew_square",
+     {{0, 0, 1}, {2, 0, 1.5}, {2, 2, 1}, {0, 2, 1.25}},
+     {{0, 2, 1}, {2, 0, 3}}},
+    {"skew_kite",
+     {{0, 0, 0}, {3, 0, 0.5}, {4, 2, 0}, {0, 1, 0.75}},
+     {{3, 1, 0}, {1, 3, 2}}},
+    {"pentagon_concave",
+     {{0, 0, 0}, {4, 0, 0}, {4, 3, 0}, {2, 1, 0}, {0, 3, 0}},
+     {{1, 3, 2}, {0, 3, 1}, {3, 0, 4}}},
+    {"pentagon_skew",
+     {{0, 0, 0}, {4, 0, 1}, {4, 3, 0}, {2, 1, 0.5}, {0, 3, 1}},
+     {{1, 3, 2}, {0, 3, 1}, {3, 0, 4}}},
+    {"hexagon_cocircular",
+     {{2, 0, 0}, {1, 1.75, 0.25}, {-1, 1.75, 0}, {-2, 0, 0.25}, {-1, -1.75, 0}, {1, -1.75, 0.25}},
+     {{4, 0, 5}, {3, 0, 4}, {0, 3, 1}, {1, 3, 2}}},
+    {"comb_yz",
+     {{0, 0, 0}, {0, 7, 0}, {0, 7, 3}, {0, 6, 3}, {0, 6, 1}, {0, 5, 1}, {0, 5, 3}, {0, 4, 3}, {0, 4, 1}, {0, 3, 1}, {0, 3, 3}, {0, 0, 3}},
+     {{1, 4, 2}, {1, 5, 4}, {5, 8, 6}, {1, 8, 5}, {1, 9, 8}, {0, 9, 1}, {11, 9, 0}, {9, 11, 10}, {2, 4, 3}, {6, 8, 7}}},
+    {"l_tilted",
+     {{0, 0, 0}, {3, 0, 1}, {3, 1, 1.5}, {1, 1, 0.5}, {1, 3, 1.5}, {0, 3, 1.25}},
+     {{1, 3, 2}, {0, 3, 1}, {5, 3, 0}, {3, 5, 4}}},
+};
+
+/// A triangle as its sorted corners: the diagonals chosen, whatever the corner order.
+std::array<uint32_t, 3> sorted(std::array<uint32_t, 3> t) {
+    std::sort(t.begin(), t.end());
+    return t;
+}
+
+TEST(Triangulate, ChoosesTheDiagonalsOpenScadChooses) {
+    for (const OpenScadCase &c : kOpenScadCases) {
+        SCOPED_TRACE(c.name);
+        std::vector<uint32_t> face;
+        for (uint32_t i = 0; i < c.points.size(); ++i) face.push_back(i);
+        std::reverse(face.begin(), face.end());  // as polyhedron() and OpenSCAD do
+        Tris tris;
+        ASSERT_TRUE(triangulatePolygon(c.points, face, tris));
+        std::vector<std::array<uint32_t, 3>> ours, theirs;
+        for (const auto &t : tris) ours.push_back(sorted(t));
+        for (const auto &t : c.triangles) theirs.push_back(sorted(t));
+        std::sort(ours.begin(), ours.end());
+        std::sort(theirs.begin(), theirs.end());
+        EXPECT_EQ(ours, theirs);
+    }
+}
+
+TEST(Triangulate, KeepsTheFaceOrientationOnOpenScadCases) {
+    // Every triangle turns the way the (reversed) face does about its Newell normal
+    for (const OpenScadCase &c : kOpenScadCases) {
+        SCOPED_TRACE(c.name);
+        std::vector<uint32_t> face;
+        for (uint32_t i = c.points.size(); i-- > 0;) face.push_back(i);
+        Vec3 normal(0);
+        for (size_t i = 0; i < face.size(); ++i)
+            normal += cross(c.points[face[i]], c.points[face[(i + 1) % face.size()]]);
+        Tris tris;
+        ASSERT_TRUE(triangulatePolygon(c.points, face, tris));
+        for (const auto &t : tris) {
+            const Vec3 &a = c.points[t[0]], &b = c.points[t[1]], &d = c.points[t[2]];
+            EXPECT_GT(dot(cross(b - a, d - a), normal), 0);
+        }
+    }
+}
 
 TEST(Triangulate, ConcavePolygonsInTiltedPlanesKeepAreaAndOrientation) {
     Mat4 tilt = Mat4::translate(Vec3(5, -2, 7)) * Mat4::rotateAxis(37, Vec3(1, 2, 3));
