@@ -27,6 +27,10 @@ bool inRange(const Vec3 &p) {
 
 /// Walks the tree with composed transforms and checks every primitive's world bounds.
 void checkNode(const Scene &scene, const Node &node, const Mat4 &m, int *primitives) {
+    // An importer must resolve its 2D placeholders (extrude them or draw them as plates)
+    if (node.shape2d >= 0)
+        throw SceneError(node.loc, "2D shape " + std::to_string(node.shape2d) +
+                                       " was left unresolved in the scene (internal error)");
     Mat4 here = node.kind == NodeKind::Transform ? m * node.matrix : m;
     if (node.kind == NodeKind::Transform && !here.isFinite())
         throw SceneError(node.loc, "transform has non-finite entries");

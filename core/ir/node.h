@@ -71,6 +71,9 @@ struct Node {
     int material = -1;               ///< Primitive only: index into Scene::materials
     Fragments fragments;             ///< Primitive only
     bool highlight = false;          ///< OpenSCAD `#` modifier (rendered normally)
+    /// Importer-internal: on an empty Group, the index of a 2D shape the importer keeps beside
+    /// the tree until it is extruded or drawn as a plate. Never set in a finished scene.
+    int shape2d = -1;
 
     static std::unique_ptr<Node> makeGroup(NodeKind kind, SourceLoc loc);
     static std::unique_ptr<Node> makeTransform(const Mat4 &m, SourceLoc loc);

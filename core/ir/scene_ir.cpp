@@ -45,6 +45,7 @@ std::unique_ptr<Node> Node::clone() const {
     n->material = material;
     n->fragments = fragments;
     n->highlight = highlight;
+    n->shape2d = shape2d;
     n->children.reserve(children.size());
     for (const auto &c : children) n->children.push_back(c->clone());
     return n;

@@ -14,13 +14,6 @@ namespace rt::scad {
 
 namespace {
 
-/// Label prefix of the placeholder node of a 2D shape; the rest is its index in shapes2d_.
-constexpr std::string_view kShape2dTag = "\x1f" "2d:";
-
-/// Label of the group of linear_extrude's children: OpenSCAD unions them without its mixing
-/// warning (applyToChildren2D), only ignoring 3D ones.
-constexpr std::string_view kExtrudeChildren = "linear_extrude children";
-
 constexpr int k2d = 1, k3d = 2;
 
 /// Subtrahends of a lifted difference reach this fraction of the height beyond the minuend's
@@ -78,17 +71,17 @@ ir::NodePtr Evaluator::shape2dNode(Shape2d shape, const ModuleInstantiation &ins
     shape.material = resolveMaterial(inst.loc);
     shape.loc = inst.loc;
     ir::NodePtr n = newNode(ir::NodeKind::Group, inst.loc);
-    n->label = std::string(kShape2dTag) + std::to_string(shapes2d_.size());
+    n->shape2d = static_cast<int>(shapes2d_.size());
     shapes2d_.push_back(std::move(shape));
     return n;
 }
 
 const Shape2d *Evaluator::shape2dOf(const ir::Node &n) const {
+    if (n.shape2d < 0) return nullptr;
     if (n.kind != ir::NodeKind::Group || !n.children.empty() ||
-        n.label.compare(0, kShape2dTag.size(), kShape2dTag) != 0)
-        return nullptr;
-    size_t i = std::stoul(n.label.substr(kShape2dTag.size()));
-    return i < shapes2d_.size() ? &shapes2d_[i] : nullptr;
+        static_cast<size_t>(n.shape2d) >= shapes2d_.size())
+        throw EvalError(n.loc, "malformed 2D shape placeholder (internal error)");
+    return &shapes2d_[n.shape2d];
 }
 
 int Evaluator::contentsOf(const ir::Node &n) const {
@@ -97,6 +90,39 @@ int Evaluator::contentsOf(const ir::Node &n) const {
     int m = 0;
     for (const auto &c : n.children) m |= contentsOf(*c);
     return m;
+}
+
+std::vector<const ir::Node *> Evaluator::children2d(const ir::Node &n, bool warnMixing,
+                                                   bool warnIgnored) {
+    // OpenSCAD's collectChildren2D: each 3D child is ignored with a warning at it, and the
+    // first also draws isValidDim's mixing warning, at the same child
+    std::vector<const ir::Node *> out;
+    for (const auto &c : n.children) {
+        int d = dimensionOf(*c);
+        if (d == 2) {
+            out.push_back(c.get());
+        } else if (d == 3 && warnIgnored) {
+            if (warnMixing) warn(c->loc, "Mixing 2D and 3D objects is not supported");
+            warnMixing = false;
+            warn(c->loc, "Ignoring 3D child object for 2D operation");
+        }
+    }
+    return out;
+}
+
+void Evaluator::warnIgnored2d(const ir::Node &n) {
+    // The 3D counterpart (collectChildren3D), through the whole 3D subtree
+    if (n.kind == ir::NodeKind::Primitive || dimensionOf(n) != 3) return;
+    bool warnMixing = true;
+    for (const auto &c : n.children) {
+        if (dimensionOf(*c) == 2) {
+            if (warnMixing) warn(c->loc, "Mixing 2D and 3D objects is not supported");
+            warnMixing = false;
+            warn(c->loc, "Ignoring 2D child object for 3D operation");
+        } else {
+            warnIgnored2d(*c);
+        }
+    }
 }
 
 int Evaluator::dimensionOf(const ir::Node &n) const {
@@ -252,8 +278,9 @@ ir::NodePtr Evaluator::moduleLinearExtrude(const ModuleInstantiation &inst, cons
     // The extrusion takes the colour and material at the call, as OpenSCAD's preview does
     spec.material = resolveMaterial(inst.loc);
     ir::NodePtr children = newNode(ir::NodeKind::Group, inst.loc);
-    children->label = kExtrudeChildren;
+    children->label = "linear_extrude children";
     instantiateChildren(inst, f, children->children);
+    spec.silentUnion = children.get();
     ir::NodePtr out = newNode(ir::NodeKind::Group, inst.loc);
     out->label = "linear_extrude";
     if (!(height > 0)) {
@@ -353,22 +380,9 @@ ir::NodePtr Evaluator::lift2d(const ir::Node &n, const ExtrudeSpec &spec, const 
 
     // Children: 3D ones are ignored, with OpenSCAD's warnings; a difference's subtrahends
     // reach beyond the minuend's caps
-    int firstDim = 0;
-    bool mixWarned = false;
     size_t operands = 0;
     double step = kSubtrahendPad * (spec.z1 - spec.z0);
-    for (const auto &c : n.children) {
-        int d = dimensionOf(*c);
-        if (d == 0) continue;
-        if (!firstDim) firstDim = d;
-        if (d == 3) {
-            if (firstDim == 2 && !mixWarned && n.label != kExtrudeChildren) {
-                warn(n.loc, "Mixing 2D and 3D objects is not supported");
-                mixWarned = true;
-            }
-            warn(c->loc, "Ignoring 3D child object for 2D operation");
-            continue;
-        }
+    for (const ir::Node *c : children2d(n, &n != spec.silentUnion)) {
         bool subtrahend = n.kind == ir::NodeKind::Difference && operands > 0;
         ir::NodePtr lifted = lift2d(*c, spec, inner, subtrahend ? pad + step : pad);
         ++operands;
@@ -485,9 +499,15 @@ int Evaluator::finish2d(ir::Node &n, bool top) {
     }
     // Where 3D meets 2D, and at the top, the pure 2D children become plates
     if (all != (k2d | k3d) && !(top && all == k2d)) return all;
+    // OpenSCAD's mixing warning (isValidDim) is at the first child whose dimension differs
+    // from the first child's
     bool pure2d = std::find(masks.begin(), masks.end(), k2d) != masks.end();
     bool with3d = std::any_of(masks.begin(), masks.end(), [](int m) { return m & k3d; });
-    if (pure2d && with3d) warn(n.loc, "Mixing 2D and 3D objects is not supported");
+    if (pure2d && with3d) {
+        auto first = std::find_if(masks.begin(), masks.end(), [](int m) { return m != 0; });
+        auto other = std::find_if(first, masks.end(), [&](int m) { return m && m != *first; });
+        warn(n.children[other - masks.begin()]->loc, "Mixing 2D and 3D objects is not supported");
+    }
     ExtrudeSpec plate;
     plate.z0 = -kPlateThickness / 2;
     plate.z1 = kPlateThickness / 2;
@@ -508,6 +528,144 @@ int Evaluator::finish2d(ir::Node &n, bool top) {
         n.children[i] = lifted ? std::move(lifted) : newNode(ir::NodeKind::Group, n.loc);
     }
     return all;
+}
+
+// ---------------------------------------------------------------------------------------------
+// hull() of 2D children (OpenSCAD 2021.01 GeometryEvaluator::applyHull2D)
+
+ir::NodePtr Evaluator::hull2d(const ir::Node &children, const ModuleInstantiation &inst) {
+    // OpenSCAD hulls every outline point of its children with CGAL's convex_hull_2
+    std::vector<Vec2> points;
+    if (!hullPoints2d(children, Affine2(), points)) return newNode(ir::NodeKind::Group, inst.loc);
+    size_t count = points.size();
+    Hull2d h = convexHull2d(std::move(points));
+    if (h.kind != ir::HullKind::Solid) {
+        // OpenSCAD keeps an outline without area, which extrudes and draws as nothing
+        if (h.kind != ir::HullKind::Empty && backgroundDepth_ == 0)
+            warn(inst.loc, "hull(): the children's " + std::to_string(count) + " 2D points are " +
+                               ir::hullKindName(h.kind) + ", so the hull has no area; left out");
+        return newNode(ir::NodeKind::Group, inst.loc);
+    }
+    Shape2d s;
+    s.kind = Shape2dKind::Polygon;
+    s.outlines.push_back(std::move(h.ccw));
+    return shape2dNode(std::move(s), inst);
+}
+
+bool Evaluator::hullPoints2d(const ir::Node &n, const Affine2 &placed, std::vector<Vec2> &out) {
+    if (const Shape2d *s = shape2dOf(n)) {
+        size_t count = shapePointCount(*s);
+        if (out.size() + count > ir::kMaxHullPoints) {
+            warn(s->loc, "hull(): this part gives " + std::to_string(count) +
+                             " points, more than the " + std::to_string(ir::kMaxHullPoints) +
+                             " a hull may have; the hull is left out");
+            return false;
+        }
+        for (const Outline &o : shapeOutlines(*s))
+            for (Vec2 p : o) out.push_back(placed.apply(p));
+        return true;
+    }
+    Affine2 inner = placed;
+    if (n.kind == ir::NodeKind::Transform) {
+        Affine2 t = Affine2::fromMat4(n.matrix);
+        if (!(t.det() != 0)) {
+            warn(n.loc, "Scaling a 2D object with 0 - removing object");
+            return true;
+        }
+        inner = placed * t;
+    }
+    std::vector<const ir::Node *> operands = children2d(n, true);
+    if (n.kind == ir::NodeKind::Intersection && !operands.empty()) {
+        // Clip the first operand's hull by the others' hulls: exact when every operand is
+        // convex, else an outer bound of OpenSCAD's result (its hull can be smaller)
+        Outline cut;
+        bool convex = true;
+        for (size_t i = 0; i < operands.size(); ++i) {
+            std::vector<Vec2> pts;
+            if (!hullPoints2d(*operands[i], inner, pts)) return false;
+            convex = convex && convex2d(*operands[i]);
+            Hull2d h = convexHull2d(std::move(pts));
+            cut = i == 0 ? std::move(h.ccw) : clipConvex(cut, h.ccw);
+            if (cut.empty()) return true;  // no common area
+        }
+        if (!convex)
+            warn(n.loc, "hull() of an intersection() whose operands are not all convex: hulled "
+                        "as the intersection of the operands' hulls, which can be larger than "
+                        "OpenSCAD's");
+        out.insert(out.end(), cut.begin(), cut.end());
+        return true;
+    }
+    if (n.kind == ir::NodeKind::Difference && !operands.empty()) {
+        std::vector<Vec2> pts;
+        if (!hullPoints2d(*operands[0], inner, pts)) return false;
+        Hull2d h = convexHull2d(std::move(pts));
+        // The subtrahends' own points do not count, but their warnings do
+        for (size_t i = 1; i < operands.size(); ++i) {
+            pts.clear();
+            if (!hullPoints2d(*operands[i], inner, pts)) return false;
+        }
+        // Exact when no corner of the first operand's hull is in what is subtracted: those
+        // corners stay in the result, so its hull is the whole first hull
+        bool cut = false;
+        for (Vec2 p : h.ccw)
+            for (size_t i = 1; i < operands.size() && !cut; ++i)
+                cut = inside2d(*operands[i], inner, p);
+        if (cut)
+            warn(n.loc, "hull() of a difference() that cuts corners of its first operand's "
+                        "hull: hulled as the first operand alone, which can be larger than "
+                        "OpenSCAD's hull of the difference");
+        out.insert(out.end(), h.ccw.begin(), h.ccw.end());
+        return true;
+    }
+    // Groups, unions and transforms: the hull of a union is the hull of its operands' points
+    for (const ir::Node *c : operands)
+        if (!hullPoints2d(*c, inner, out)) return false;
+    return true;
+}
+
+bool Evaluator::inside2d(const ir::Node &n, const Affine2 &placed, Vec2 p) {
+    if (const Shape2d *s = shape2dOf(n)) {
+        bool in = false;
+        for (Outline o : shapeOutlines(*s)) {
+            for (Vec2 &q : o) q = placed.apply(q);
+            in = in != insideOutline(p, o);  // even-odd across the outlines too
+        }
+        return in;
+    }
+    Affine2 inner = placed;
+    if (n.kind == ir::NodeKind::Transform) {
+        Affine2 t = Affine2::fromMat4(n.matrix);
+        if (!(t.det() != 0)) return false;  // removed
+        inner = placed * t;
+    }
+    std::vector<const ir::Node *> operands = children2d(n, false, false);
+    auto in = [&](const ir::Node *c) { return inside2d(*c, inner, p); };
+    switch (n.kind) {
+        case ir::NodeKind::Intersection:
+            return !operands.empty() && std::all_of(operands.begin(), operands.end(), in);
+        case ir::NodeKind::Difference:
+            return !operands.empty() && in(operands[0]) &&
+                   std::none_of(operands.begin() + 1, operands.end(), in);
+        default: return std::any_of(operands.begin(), operands.end(), in);
+    }
+}
+
+bool Evaluator::convex2d(const ir::Node &n) {
+    if (const Shape2d *s = shape2dOf(n)) {
+        if (s->kind != Shape2dKind::Polygon) return true;
+        if (s->outlines.size() != 1) return false;
+        Outline o = cleanOutline(s->outlines[0]);
+        if (twiceSignedArea(o) < 0) std::reverse(o.begin(), o.end());
+        return isConvex(o);
+    }
+    std::vector<const ir::Node *> operands = children2d(n, false, false);
+    if (n.kind == ir::NodeKind::Intersection)
+        return !operands.empty() &&
+               std::all_of(operands.begin(), operands.end(),
+                           [this](const ir::Node *c) { return convex2d(*c); });
+    if (n.kind == ir::NodeKind::Difference && operands.size() > 1) return false;
+    // A group, union or (non-singular, affine) transform of one convex operand
+    return operands.size() == 1 && convex2d(*operands[0]);
 }
 
 }  // namespace rt::scad

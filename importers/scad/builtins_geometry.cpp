@@ -406,6 +406,10 @@ ir::NodePtr Evaluator::moduleHull(const ModuleInstantiation &inst, const FramePt
         throw;
     }
     --hullDepth_;
+    // OpenSCAD's hull takes the dimension of its first child with geometry; the other
+    // dimension's children are ignored with its warnings
+    if (dimensionOf(*children) == 2) return hull2d(*children, inst);
+    warnIgnored2d(*children);
     std::vector<Vec3> points;
     if (!ir::gatherHullPoints(*children, scene_, diag_, points))
         return newNode(ir::NodeKind::Group, inst.loc);

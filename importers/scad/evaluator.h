@@ -82,6 +82,9 @@ struct ExtrudeSpec {
     int material = -1;            ///< -1: each 2D primitive keeps its own material
     bool previewTransforms = false;  ///< plates: transforms act in 3D, as in the preview
     bool meshPath = false;        ///< twist or non-uniform scale: swept triangle meshes
+    /// linear_extrude's group of children: OpenSCAD unions them without its mixing warning
+    /// (applyToChildren2D), only ignoring 3D ones
+    const ir::Node *silentUnion = nullptr;
     SourceLoc loc;
 };
 
@@ -240,6 +243,22 @@ class Evaluator {
     int contentsOf(const ir::Node &n) const;
     /// OpenSCAD's dimension of a node: that of its first child with geometry (0: none).
     int dimensionOf(const ir::Node &n) const;
+    /// n's 2D children; 3D ones are left out, with OpenSCAD's warnings when warnIgnored (and
+    /// its mixing warning when warnMixing too).
+    std::vector<const ir::Node *> children2d(const ir::Node &n, bool warnMixing,
+                                             bool warnIgnored = true);
+    /// OpenSCAD's warnings for the 2D parts of a 3D subtree, which 3D operations ignore.
+    void warnIgnored2d(const ir::Node &n);
+    /// hull() of 2D children (the first child with geometry is 2D): a convex polygon shape.
+    ir::NodePtr hull2d(const ir::Node &children, const ModuleInstantiation &inst);
+    /// The points whose convex hull is OpenSCAD's hull of the 2D subtree n placed by
+    /// `placed`; false (after a warning) when there are more than ir::kMaxHullPoints.
+    bool hullPoints2d(const ir::Node &n, const Affine2 &placed, std::vector<Vec2> &out);
+    /// Whether the point lies in the even-odd region of the 2D subtree n placed by `placed`.
+    bool inside2d(const ir::Node &n, const Affine2 &placed, Vec2 p);
+    /// Whether the 2D subtree n is certainly convex (a square, circle, convex polygon, hull,
+    /// or an intersection or transform of such).
+    bool convex2d(const ir::Node &n);
     /// The 3D solid of a 2D subtree swept as `spec` says; null when nothing is left.
     ir::NodePtr lift2d(const ir::Node &n, const ExtrudeSpec &spec, const Affine2 &placed,
                        double pad);

@@ -81,6 +81,20 @@ std::vector<Outline> shapeOutlines(const Shape2d &s) {
     return {};
 }
 
+size_t shapePointCount(const Shape2d &s) {
+    switch (s.kind) {
+        case Shape2dKind::Square: return 4;
+        case Shape2dKind::Circle:
+            return static_cast<size_t>(ir::openscadFragments(s.radius, s.fragments));
+        case Shape2dKind::Polygon: {
+            size_t n = 0;
+            for (const Outline &o : s.outlines) n += o.size();
+            return n;
+        }
+    }
+    return 0;
+}
+
 double twiceSignedArea(const Outline &o) {
     // Relative to the first point, so far from the origin the products do not cancel digits
     double a = 0;
@@ -129,6 +143,55 @@ bool isConvex(const Outline &ccw) {
     }
     // Left turns only, and once around: a star polygon turns left too, but twice or more
     return angle < 3 * M_PI;
+}
+
+Hull2d convexHull2d(std::vector<Vec2> points) {
+    // Andrew's monotone chain: the lower then the upper chain of the points sorted by x, y.
+    // A corner that does not turn left (within tolerance) is dropped, so collinear points
+    // never become vertices, as in OpenSCAD's CGAL hull.
+    Hull2d h;
+    std::sort(points.begin(), points.end(),
+              [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    points.erase(std::unique(points.begin(), points.end()), points.end());
+    if (points.empty()) return h;
+    h.kind = points.size() == 1 ? ir::HullKind::Point : ir::HullKind::Line;
+    if (points.size() < 3) return h;
+    Outline chain;
+    chain.reserve(points.size() + 1);
+    auto add = [&chain](Vec2 p, size_t floor) {
+        while (chain.size() >= floor + 2 && !(turn(chain[chain.size() - 2], chain.back(), p) > 0))
+            chain.pop_back();
+        chain.push_back(p);
+    };
+    for (Vec2 p : points) add(p, 0);
+    size_t lower = chain.size() - 1;  // the upper chain starts at the rightmost point
+    for (size_t i = points.size() - 1; i-- > 0;) add(points[i], lower);
+    chain.pop_back();  // the leftmost point again
+    if (chain.size() < 3) return h;
+    h.kind = ir::HullKind::Solid;
+    h.ccw = std::move(chain);
+    return h;
+}
+
+Outline clipConvex(const Outline &subject, const Outline &clip) {
+    Outline out = subject;
+    for (size_t i = 0; i < clip.size() && !out.empty(); ++i) {
+        Vec2 a = clip[i], b = clip[(i + 1) % clip.size()];
+        // Signed distance (times |b - a|) of a point to the left of the edge: inside is >= 0
+        auto dist = [&](Vec2 p) { return cross(b - a, p - a); };
+        Outline in = std::move(out);
+        out.clear();
+        for (size_t k = 0; k < in.size(); ++k) {
+            Vec2 p = in[k], q = in[(k + 1) % in.size()];
+            double dp = dist(p), dq = dist(q);
+            if (dp >= 0) out.push_back(p);
+            if ((dp < 0) != (dq < 0)) {
+                double t = dp / (dp - dq);
+                out.push_back({p.x + t * (q.x - p.x), p.y + t * (q.y - p.y)});
+            }
+        }
+    }
+    return cleanOutline(out);
 }
 
 bool insideOutline(Vec2 p, const Outline &o) {

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/ir/hull.h"
 #include "core/ir/node.h"
 #include "core/ir/source_loc.h"
 
@@ -51,6 +52,9 @@ struct Shape2d {
 /// The shape's outlines as OpenSCAD 2021.01 builds them (a circle is its n-gon).
 std::vector<Outline> shapeOutlines(const Shape2d &s);
 
+/// How many points shapeOutlines gives, without making them.
+size_t shapePointCount(const Shape2d &s);
+
 /// Twice the signed area (positive when counter-clockwise).
 double twiceSignedArea(const Outline &o);
 
@@ -60,6 +64,19 @@ Outline cleanOutline(const Outline &o);
 
 /// A cleaned, counter-clockwise outline that turns left at every corner and winds once.
 bool isConvex(const Outline &ccw);
+
+/// The convex hull of 2D points: counter-clockwise, without straight corners (relative
+/// tolerance, as cleanOutline). `kind` says what the points span: Empty, Point, Line (no
+/// area; `ccw` is then empty) or Solid.
+struct Hull2d {
+    ir::HullKind kind = ir::HullKind::Empty;
+    Outline ccw;
+};
+Hull2d convexHull2d(std::vector<Vec2> points);
+
+/// The part of a convex counter-clockwise outline inside another (Sutherland-Hodgman); empty
+/// when they share no area.
+Outline clipConvex(const Outline &subject, const Outline &clip);
 
 /// Even-odd point-in-outline test.
 bool insideOutline(Vec2 p, const Outline &o);

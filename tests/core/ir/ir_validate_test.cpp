@@ -46,6 +46,23 @@ TEST(IrValidate, TinyObjectOrScaleIsALocatedError) {
     EXPECT_THROW(ir::validateScene(s, diag), SceneError);
 }
 
+TEST(IrValidate, UnresolvedTwoDimensionalPlaceholderIsAnInternalError) {
+    ir::Scene s;
+    s.root->children.push_back(sphere(1, s.addMaterial(ir::Material())));
+    auto g = ir::Node::makeGroup(ir::NodeKind::Group, at(4));
+    g->shape2d = 0;
+    // Cloning keeps the marker, so a copied subtree cannot lose it silently
+    s.root->children.push_back(g->clone());
+    DiagnosticSink diag;
+    try {
+        ir::validateScene(s, diag);
+        FAIL() << "expected SceneError";
+    } catch (const SceneError &e) {
+        EXPECT_EQ(e.loc().line, 4);
+        EXPECT_NE(std::string(e.what()).find("internal error"), std::string::npos);
+    }
+}
+
 TEST(IrValidate, NonFiniteLightsCameraAndMaterials) {
     DiagnosticSink diag;
     {

@@ -22,13 +22,6 @@ const ir::Mesh &meshOf(const Imported &r, const ir::Node &n) {
     return *r.scene.meshes.at(std::get<ir::MeshPrim>(n.shape).mesh);
 }
 
-bool anyPlaceholder(const ir::Node &n) {
-    if (!n.label.empty() && n.label[0] == '\x1f') return true;
-    for (const auto &c : n.children)
-        if (anyPlaceholder(*c)) return true;
-    return false;
-}
-
 TEST(Extrude, SquareBecomesBox) {
     Imported r = importText("linear_extrude(3) square([2, 4]);");
     auto p = primitives(*r.scene.root);
@@ -191,8 +184,9 @@ TEST(Extrude, TopLevelTwoDIsPreviewPlate) {
     EXPECT_TRUE(r.hasWarning("plates 1 unit thick"));
     EXPECT_FALSE(anyPlaceholder(*r.scene.root));
     // Mixed with 3D: both shown, with OpenSCAD's warning
-    r = importText("union() { square(2); cube(1); }");
-    EXPECT_TRUE(r.hasWarning("Mixing 2D and 3D objects is not supported"));
+    r = importText("union() {\n  square(2);\n  cube(1);\n}");
+    // At the first child of the other dimension, as OpenSCAD locates it
+    EXPECT_EQ(r.warning("Mixing 2D and 3D objects is not supported").loc.line, 3);
     EXPECT_EQ(primitives(*r.scene.root).size(), 2u);
     // scale([1,1,0]) keeps a 2D object (its 2D part is regular)
     r = importText("scale([1,1,0]) circle(1);");

@@ -96,8 +96,10 @@ TEST(ScadHull, ApproximatedDifferencesAndTwoDimensionalChildrenAreNamed) {
     Diagnostic d = r.warning("hull() of a difference()");
     EXPECT_EQ(d.loc.line, 2);
     EXPECT_EQ(d.loc.col, 3);
-    Diagnostic s = r.warning("square() is not supported yet");
+    // The first child is 3D, so the hull is: OpenSCAD ignores the square with its warnings
+    Diagnostic s = r.warning("Ignoring 2D child object for 3D operation");
     EXPECT_EQ(s.loc.line, 3);
+    EXPECT_EQ(r.warning("Mixing 2D and 3D objects is not supported").loc.line, 3);
     EXPECT_EQ(boundsOf(onlyPolytope(r)).max, Vec3(4, 4, 4));
 }
 

@@ -87,4 +87,12 @@ inline std::vector<PlacedPrimitive> primitives(const ir::Node &root) {
     return out;
 }
 
+/// Whether a 2D shape's placeholder is left in the subtree (a finished scene has none).
+inline bool anyPlaceholder(const ir::Node &n) {
+    if (n.shape2d >= 0) return true;
+    for (const auto &c : n.children)
+        if (anyPlaceholder(*c)) return true;
+    return false;
+}
+
 }  // namespace rt::scad::test

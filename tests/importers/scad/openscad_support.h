@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: MIT
+// Header-only helpers of the cross-checks against the installed OpenSCAD 2021.01: running it to
+// an OFF export and comparing vertex sets and volumes at the precision OFF files keep.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "core/ir/diagnostics.h"
+#include "core/ir/facets.h"
+#include "core/ir/mesh.h"
+#include "core/math/float_util.h"
+#include "importers/mesh/mesh_reader.h"
+#include "importers/scad/test_support.h"
+
+namespace rt::scad::test {
+
+/// OFF export writes 6 significant digits.
+constexpr double kOffDigits = 1e-5;
+
+inline bool haveOpenScad() { return std::system("command -v openscad >/dev/null 2>&1") == 0; }
+
+/// Signed volume of a closed triangle mesh (divergence theorem).
+inline double meshVolume(const ir::Mesh &m) {
+    double v = 0;
+    for (const auto &t : m.triangles)
+        v += dot(m.positions[t[0]], cross(m.positions[t[1]], m.positions[t[2]]));
+    return v / 6;
+}
+
+/// Volume of a polytope with faces counter-clockwise seen from outside.
+inline double polytopeVolume(const std::vector<Vec3> &verts,
+                             const std::vector<std::vector<int>> &faces) {
+    double v = 0;
+    for (const auto &f : faces)
+        for (size_t k = 1; k + 1 < f.size(); ++k)
+            v += dot(verts[f[0]], cross(verts[f[k]], verts[f[k + 1]]));
+    return v / 6;
+}
+
+/// Every point of `a` has one of `b` within OFF's rounding.
+inline void expectCovered(const std::vector<Vec3> &a, const std::vector<Vec3> &b,
+                          const char *what) {
+    for (const Vec3 &v : a) {
+        double best = kInfinity;
+        for (const Vec3 &w : b) best = std::min(best, length(v - w));
+        EXPECT_LT(best, kOffDigits * std::max(1.0, length(v))) << what << " " << v.toString();
+    }
+}
+
+/// OpenSCAD's OFF export of `src`, written through files in `dir` (a failed run fails the
+/// test and gives an empty mesh).
+inline ir::Mesh openscadOff(const std::string &src, const std::filesystem::path &dir) {
+    std::string scad = (dir / "case.scad").string(), off = (dir / "case.off").string();
+    std::ofstream(scad) << src << "\n";
+    std::string cmd = "openscad -o '" + off + "' '" + scad + "' >/dev/null 2>&1";
+    int status = std::system(cmd.c_str());
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << cmd;
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return {};
+    DiagnosticSink diag;
+    return meshio::readMeshFile(off, diag);
+}
+
+/// The scene's one primitive, a polytope, with its vertices in world coordinates (an empty
+/// polytope, after a test failure, when the scene holds anything else).
+inline ir::PolytopePrim worldPolytope(const ir::Scene &scene) {
+    auto prims = primitives(*scene.root);
+    EXPECT_EQ(prims.size(), 1u);
+    const auto *poly = prims.size() == 1 ? std::get_if<ir::PolytopePrim>(&prims[0].node->shape)
+                                         : nullptr;
+    EXPECT_TRUE(poly) << "not a polytope";
+    if (!poly) return {};
+    ir::PolytopePrim world = *poly;
+    for (Vec3 &v : world.vertices) v = prims[0].worldFromObject.transformPoint(v);
+    return world;
+}
+
+/// Every point of `a` lies on the surface of the polytope.
+inline void expectOnSurface(const std::vector<Vec3> &a, const ir::PolytopePrim &p) {
+    std::vector<ir::FacePlane> planes = ir::polytopePlanes(p);
+    for (const Vec3 &v : a) {
+        double outside = -kInfinity;
+        for (const auto &pl : planes) outside = std::max(outside, dot(pl.normal, v) - pl.offset);
+        EXPECT_LT(std::abs(outside), kOffDigits * std::max(1.0, length(v))) << v.toString();
+    }
+}
+
+/// The scene `src` imports to is one polytope with the vertices (OFF's 6 digits) and the volume
+/// of OpenSCAD's export. Where OpenSCAD's exact arithmetic leaves points on straight hull
+/// edges (extraCollinearVertices), its vertices need only lie on our polytope's surface.
+inline void expectSamePolytope(const std::string &src, const std::filesystem::path &dir,
+                               bool extraCollinearVertices = false) {
+    ir::Mesh theirs = openscadOff(src, dir);
+    ASSERT_FALSE(theirs.positions.empty());
+    Imported ours = importText(src);
+    EXPECT_TRUE(ours.warnings().empty()) << ours.warnings().front();
+    ir::PolytopePrim placed = worldPolytope(ours.scene);
+    const std::vector<Vec3> &world = placed.vertices;
+    ASSERT_FALSE(world.empty());
+    expectCovered(world, theirs.positions, "our vertex missing from OpenSCAD's:");
+    if (extraCollinearVertices) {
+        expectOnSurface(theirs.positions, placed);
+        EXPECT_GT(theirs.positions.size(), world.size());
+    } else {
+        EXPECT_EQ(world.size(), theirs.positions.size());
+        expectCovered(theirs.positions, world, "OpenSCAD's vertex missing from ours:");
+    }
+    double vo = polytopeVolume(world, placed.faces), vt = meshVolume(theirs);
+    EXPECT_NEAR(vo, vt, kOffDigits * 10 * std::abs(vt));
+}
+
+}  // namespace rt::scad::test
