@@ -61,6 +61,13 @@ check_file() {
         covered=$(grep -o "[a-z_]*() is not supported\|import of [a-z.]* files\|projective" "$log" |
                   sed -e 's/() is not supported/()/' -e 's/ files//' | sort -u | tr '\n' ' ')
         covered="no: ${covered% }"
+        # Warnings that name no module: a 2D/3D mix (OpenSCAD's export keeps one dimension, so
+        # there is no mesh of what scadray draws) or a twisted 2D boolean (not yet exact)
+        if [ "$covered" = "no: " ]; then
+            if grep -q "Mixing 2D and 3D" "$log"; then covered="no: 2D and 3D mixed"
+            elif grep -q "each is swept" "$log"; then covered="no: twist of 2D booleans"
+            else covered="no: $(grep -m1 -o 'warning: .*not supported' "$log" | cut -c10-40)"; fi
+        fi
         return
     fi
     rm -f "$csv"

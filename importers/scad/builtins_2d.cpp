@@ -306,10 +306,25 @@ ir::NodePtr Evaluator::moduleLinearExtrude(const ModuleInstantiation &inst, cons
                                " slices are too many; using " + std::to_string(kMaxSlices));
             spec.slices = kMaxSlices;
         }
+        // OpenSCAD combines the outlines (Clipper) before it sweeps one polygon; we sweep each
+        // outline and combine the solids, which is the same solid but not the same facets
+        // where outlines overlap inside a slice: say so, since `check --openscad` will see it
+        if (outlineCount(*children) > 1)
+            warn(inst.loc, "linear_extrude() with twist or non-uniform scale of several 2D "
+                           "outlines: each is swept and the solids are combined; OpenSCAD "
+                           "combines the outlines first, so facets can differ where they overlap "
+                           "(2D booleans before sweeping are not supported yet)");
     }
     if (ir::NodePtr solid = lift2d(*children, spec, Affine2(), 0))
         out->children.push_back(std::move(solid));
     return out;
+}
+
+size_t Evaluator::outlineCount(const ir::Node &n) const {
+    if (const Shape2d *s = shape2dOf(n)) return shapeOutlines(*s).size();
+    size_t count = 0;
+    for (const auto &c : n.children) count += outlineCount(*c);
+    return count;
 }
 
 void Evaluator::extentOf2d(const ir::Node &n, const Affine2 &placed, Vec2 scale, double &rSqr,

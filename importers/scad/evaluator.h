@@ -266,6 +266,8 @@ class Evaluator {
                           double pad);
     ir::NodePtr sweptSolid(const Outline &ccw, const ExtrudeSpec &spec, double pad,
                            int material, const SourceLoc &loc);
+    /// Number of 2D outlines under `n` (a circle or square is one).
+    size_t outlineCount(const ir::Node &n) const;
     void extentOf2d(const ir::Node &n, const Affine2 &placed, Vec2 scale, double &rSqr,
                     double &deltaSqr) const;
     /// Draws the 2D subtrees left outside any extrusion as OpenSCAD's preview does.

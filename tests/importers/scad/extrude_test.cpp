@@ -194,6 +194,21 @@ TEST(Extrude, TopLevelTwoDIsPreviewPlate) {
     EXPECT_FALSE(anyPlaceholder(*r.scene.root));
 }
 
+TEST(Extrude, TwistOfSeveralOutlinesSaysItIsNotOpenScadsFacets) {
+    // OpenSCAD combines the outlines before sweeping; we sweep each: a located warning
+    Imported r = importText("linear_extrude(height=10, twist=90)\n"
+                            "    difference() { square(4, center=true); square(2, center=true); }");
+    Diagnostic d = r.warning("each is swept");
+    EXPECT_EQ(d.loc.line, 1);
+    EXPECT_EQ(d.loc.col, 1);
+    // One outline, or several without twist or non-uniform scale: exact, no warning
+    for (const char *src :
+         {"linear_extrude(height=10, twist=90) square(4);",
+          "linear_extrude(height=10, scale=0.5) difference() { square(4); square(2); }",
+          "linear_extrude(height=10, scale=[2, 1]) circle(2);"})
+        EXPECT_FALSE(importText(src).hasWarning("each is swept")) << src;
+}
+
 TEST(Extrude, TwistMeshHasOpenScadSlices) {
     // $fn=8, twist 90: ceil(90 / 360 * 8) = 2 slices, 3 rings of 4
     Imported r = importText("linear_extrude(height=10, twist=90, $fn=8) square(2);");
