@@ -75,7 +75,7 @@ LoadOptions SceneArgs::loadOptions(bool quiet) const {
     lo.maxSteps = maxSteps;
     lo.libraryPaths = libraries;
     for (const auto &d : defines) lo.defines.push_back(parseDefine(d));
-    auto mode = ir::parseFacetMode(facets);
+    auto mode = ir::parseFacetMode(facets.empty() ? "auto" : facets);
     if (!mode) throw std::invalid_argument("--facets must be smooth, openscad or auto");
     lo.facets = *mode;
     return lo;

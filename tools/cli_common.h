@@ -39,7 +39,7 @@ struct LoadOptions {
 struct SceneArgs {
     std::string input;
     std::vector<std::string> defines, libraries;
-    std::string facets = "auto";
+    std::string facets;  ///< as given; empty when not given (auto)
     int64_t maxSteps = scad::kDefaultMaxSteps;
 
     /// Registers the positional scene and -D/-L on a subcommand.

@@ -3,6 +3,7 @@
 // resolution, supersampled), compare statistically, and report error against run time; with
 // --openscad, compare scadray's geometry per pixel with the mesh OpenSCAD exports instead.
 #include <CLI/CLI.hpp>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -72,8 +73,14 @@ int finishCheck(const CheckArgs &a, const std::string &reportPath, const std::st
 /// buffers are compared per pixel.
 int runOpenScadCheck(const CheckArgs &a) {
     using clock = std::chrono::steady_clock;
-    if (fs::path(a.scene.input).extension() != ".scad")
+    std::string ext = fs::path(a.scene.input).extension().string();
+    for (auto &ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (ext != ".scad")
         throw std::invalid_argument("--openscad checks a .scad scene, not '" + a.scene.input + "'");
+    if (!a.scene.facets.empty() && a.scene.facets != "openscad")
+        throw std::invalid_argument("--openscad compares OpenSCAD's own facets; --facets " +
+                                    a.scene.facets + " cannot be used with it");
+
     if (a.width < 1 || a.height < 1 || a.width > kMaxImageSide || a.height > kMaxImageSide)
         throw std::invalid_argument("image size must be between 1 and " +
                                     std::to_string(kMaxImageSide));

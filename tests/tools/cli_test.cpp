@@ -427,6 +427,31 @@ TEST_F(Cli, ExportWritesMeshesAsMesh2) {
     EXPECT_NE(text.find("difference {"), std::string::npos) << "the cut torus stays CSG";
 }
 
+TEST_F(Cli, FacetsChooseHowRoundPrimitivesAreDrawn) {
+    std::string in = write("f.scad", "cylinder(r=2, h=1, $fn=6);\ntranslate([5,0,0]) sphere(1, $fn=64);\n");
+    auto polytopes = [](const std::string &text) {
+        size_t n = 0;
+        for (size_t at = text.find("polytope"); at != std::string::npos; at = text.find("polytope", at + 1))
+            ++n;
+        return n;
+    };
+    CliRun r = run("dump " + in);  // auto: the hexagon only
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(polytopes(r.out), 1u);
+    EXPECT_NE(r.out.find("sphere r 1"), std::string::npos);
+    EXPECT_EQ(polytopes(run("dump --facets openscad " + in).out), 2u);
+    EXPECT_EQ(polytopes(run("dump --facets smooth " + in).out), 0u);
+    r = run("render --plan --facets auto -W 8 -H 6 " + in + " -o " + (dir / "f.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("facets: auto:"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("(1 faceted, 1 round)"), std::string::npos) << r.err;
+    EXPECT_EQ(run("render --facets round " + in).exitCode, 2);
+    // check --openscad compares OpenSCAD's own facets: another mode is bad usage
+    r = run("check --openscad --facets smooth " + in + " -o " + (dir / "chk").string());
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--facets smooth cannot be used"), std::string::npos) << r.err;
+}
+
 TEST_F(Cli, DumpPrintsTheIr) {
     std::string in = write("d.scad", "translate([1,2,3]) cube(2);\n");
     CliRun r = run("dump " + in);
