@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/geometry/triangle_mesh.h"
 #include "core/math/float_util.h"
 #include "core/math/quadratic.h"
 
@@ -214,26 +215,78 @@ ObjectSurface Cone::surface(const Vec3 &p, int face) const {
 // ---------------------------------------------------------------------------------------------
 // Convex polytope
 
-ConvexPolytope::ConvexPolytope(const ir::PolytopePrim &p) : planes_(ir::polytopePlanes(p)) {
+ConvexPolytope::ConvexPolytope(const ir::PolytopePrim &p) {
+    std::vector<int> faceOfPlane;
+    planes_ = ir::polytopePlanes(p, &faceOfPlane);
     for (const Vec3 &v : p.vertices) bounds_ = unionBounds(bounds_, v);
+    if (planes_.size() < kPolytopeFaceBvhMin) return;
+    // Each face is convex and planar: a fan of triangles, wound as the face (outward)
+    auto mesh = std::make_shared<ir::Mesh>();
+    mesh->positions = p.vertices;
+    for (size_t i = 0; i < planes_.size(); ++i) {
+        const auto &f = p.faces[faceOfPlane[i]];
+        for (size_t k = 1; k + 1 < f.size(); ++k) {
+            mesh->triangles.push_back({static_cast<uint32_t>(f[0]), static_cast<uint32_t>(f[k]),
+                                       static_cast<uint32_t>(f[k + 1])});
+            planeOfTriangle_.push_back(static_cast<int>(i));
+        }
+    }
+    auto faces = std::make_unique<TriangleMesh>(mesh);
+    // Only a closed surface bounds the line's one span; otherwise keep the plane loop
+    if (faces->closed()) faceMesh_ = std::move(faces);
 }
 
+ConvexPolytope::~ConvexPolytope() = default;
+
 bool ConvexPolytope::intersect(const Ray &r, PrimitiveSpan *span) const {
+    return faceMesh_ ? intersectFaces(r, span) : intersectPlanes(r, span);
+}
+
+bool ConvexPolytope::intersectFaces(const Ray &r, PrimitiveSpan *span) const {
+    // A convex surface is crossed once going in and once going out; the watertight triangle
+    // test counts a crossing through an edge or vertex once, so the first and last crossings
+    // are the span (a ray grazing an edge meets it once or not at all: no span)
+    thread_local std::vector<TriangleMesh::Hit> hits;
+    hits.clear();
+    faceMesh_->allHits(r, hits);
+    if (hits.size() < 2) return false;
+    const TriangleMesh::Hit *in = &hits[0], *out = &hits[0];
+    for (const auto &h : hits) {
+        if (h.t < in->t) in = &h;
+        if (h.t > out->t) out = &h;
+    }
+    // The BVH names the faces; the distances come from their planes, as in the plane loop, so
+    // that they agree with the surface points refined onto those planes (a triangle's own t
+    // rounds differently, and a ray spawned off the face could find it again at t = 1e-17)
+    int face0 = planeOfTriangle_[in->triangle], face1 = planeOfTriangle_[out->triangle];
+    double dist, rate;
+    double t0 = planeCrossing(planes_[face0], r, &dist, &rate) ? -dist / rate : in->t;
+    double t1 = planeCrossing(planes_[face1], r, &dist, &rate) ? -dist / rate : out->t;
+    if (!(t0 < t1)) return false;
+    *span = {t0, t1, face0, face1};
+    return true;
+}
+
+bool ConvexPolytope::planeCrossing(const ir::FacePlane &pl, const Ray &r, double *dist,
+                                   double *rate) {
+    // Signed distance of the origin outside the plane, and the rate the ray closes on it; an
+    // axis plane reads its coordinate directly, as Box does
+    if (pl.axis >= 0) {
+        *dist = pl.normal[pl.axis] * r.o[pl.axis] - pl.offset;
+        *rate = pl.normal[pl.axis] * r.d[pl.axis];
+    } else {
+        *dist = dot(pl.normal, r.o) - pl.offset;
+        *rate = dot(pl.normal, r.d);
+    }
+    return *rate != 0;
+}
+
+bool ConvexPolytope::intersectPlanes(const Ray &r, PrimitiveSpan *span) const {
     double t0 = -kInfinity, t1 = kInfinity;
     int face0 = -1, face1 = -1;
     for (size_t i = 0; i < planes_.size(); ++i) {
-        const ir::FacePlane &pl = planes_[i];
-        // Signed distance of the origin outside the plane, and the rate the ray closes on it;
-        // an axis plane reads its coordinate directly, as Box does
         double dist, rate;
-        if (pl.axis >= 0) {
-            dist = pl.normal[pl.axis] * r.o[pl.axis] - pl.offset;
-            rate = pl.normal[pl.axis] * r.d[pl.axis];
-        } else {
-            dist = dot(pl.normal, r.o) - pl.offset;
-            rate = dot(pl.normal, r.d);
-        }
-        if (rate == 0) {
+        if (!planeCrossing(planes_[i], r, &dist, &rate)) {
             // Parallel: inside this half-space everywhere or nowhere
             if (dist > 0) return false;
             continue;

@@ -13,6 +13,8 @@
 
 namespace rt {
 
+class TriangleMesh;
+
 /// Object-space result of intersecting the ray line with a convex solid.
 struct PrimitiveSpan {
     double t0 = 0, t1 = 0;
@@ -88,15 +90,34 @@ class Cone final : public Primitive {
 class ConvexPolytope final : public Primitive {
   public:
     explicit ConvexPolytope(const ir::PolytopePrim &p);
+    ~ConvexPolytope() override;
     Bounds3 objectBounds() const override { return bounds_; }
     bool intersect(const Ray &r, PrimitiveSpan *span) const override;
     bool inside(const Vec3 &p) const override;
     ObjectSurface surface(const Vec3 &p, int face) const override;
     size_t planeCount() const { return planes_.size(); }
+    /// Whether rays find their two faces through a BVH over the faces (many faces) rather
+    /// than by clipping against every plane.
+    bool usesFaceBvh() const { return faceMesh_ != nullptr; }
 
   private:
+    /// Signed distance of the ray's origin outside the plane and the rate the ray closes on
+    /// it; false when the ray runs parallel to it.
+    static bool planeCrossing(const ir::FacePlane &pl, const Ray &r, double *dist, double *rate);
+    bool intersectPlanes(const Ray &r, PrimitiveSpan *span) const;
+    bool intersectFaces(const Ray &r, PrimitiveSpan *span) const;
+
     std::vector<ir::FacePlane> planes_;
     Bounds3 bounds_;
+    /// Large polytopes (hulls of thousands of faces): the faces as a closed triangle mesh with
+    /// its BVH, and the plane of each triangle.
+    std::unique_ptr<TriangleMesh> faceMesh_;
+    std::vector<int> planeOfTriangle_;
 };
+
+/// Above this many faces a polytope finds a ray's entry and exit through a BVH over its faces
+/// (O(log n)) instead of clipping the ray by every plane (O(n)); below it the plane loop, with
+/// no traversal overhead, is faster.
+constexpr size_t kPolytopeFaceBvhMin = 48;
 
 }  // namespace rt

@@ -101,13 +101,15 @@ PolytopePrim openscadCylinder(const CylinderPrim &c, int n) {
     return p;
 }
 
-std::vector<FacePlane> polytopePlanes(const PolytopePrim &p) {
+std::vector<FacePlane> polytopePlanes(const PolytopePrim &p, std::vector<int> *faceOfPlane) {
     Vec3 centroid(0);
     for (const Vec3 &v : p.vertices) centroid += v;
     if (!p.vertices.empty()) centroid = centroid / static_cast<double>(p.vertices.size());
     std::vector<FacePlane> planes;
     planes.reserve(p.faces.size());
-    for (const auto &f : p.faces) {
+    if (faceOfPlane) faceOfPlane->clear();
+    for (size_t fi = 0; fi < p.faces.size(); ++fi) {
+        const auto &f = p.faces[fi];
         if (f.size() < 3) continue;
         FacePlane pl;
         // A face whose vertices share one coordinate exactly lies in that axis plane: keep the
@@ -145,6 +147,7 @@ std::vector<FacePlane> polytopePlanes(const PolytopePrim &p) {
             pl.offset = offset;
         }
         planes.push_back(pl);
+        if (faceOfPlane) faceOfPlane->push_back(static_cast<int>(fi));
     }
     return planes;
 }

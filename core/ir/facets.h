@@ -54,7 +54,9 @@ struct FacePlane {
 
 /// The planes of a polytope's faces, oriented away from the centroid of its vertices (so a
 /// face listed clockwise still bounds the solid). Degenerate faces (no area) are left out.
-std::vector<FacePlane> polytopePlanes(const PolytopePrim &p);
+/// `faceOfPlane`, when given, receives the index of each plane's face.
+std::vector<FacePlane> polytopePlanes(const PolytopePrim &p,
+                                      std::vector<int> *faceOfPlane = nullptr);
 
 /// Whether `mode` draws a primitive with these $-values and fragment count faceted.
 bool drawsFaceted(FacetMode mode, const Fragments &f, int fragments);

@@ -36,6 +36,8 @@ std::vector<Case> cases() {
         {"polytope_hexagon", ir::openscadCylinder(ir::CylinderPrim{-1, 1, 0.8, 0.8}, 6)},
         {"polytope_pyramid", ir::openscadCylinder(ir::CylinderPrim{0, 2, 1, 0}, 4)},
         {"polytope_frustum", ir::openscadCylinder(ir::CylinderPrim{0, 1.5, 1.5, 0.4}, 5)},
+        // 422 faces: entry and exit found through the BVH over its faces
+        {"polytope_many_faces", ir::openscadSphere(1.5, 30)},
     };
     for (auto &[n, s] : shapes) {
         out.push_back({n, s, Mat4()});

@@ -8,6 +8,7 @@
 
 #include "core/geometry/primitive.h"
 #include "core/ir/scene_ir.h"
+#include "core/math/rng.h"
 
 namespace rt::ir {
 namespace {
@@ -113,6 +114,39 @@ TEST(Facets, SquareCylinderIsADiamond) {
     ASSERT_TRUE(square.intersect(Ray(Vec3(-5, 0, 0.5), Vec3(1, 0, 0)), &span));
     EXPECT_NEAR(span.t0, 4, 1e-15);
     EXPECT_NEAR(span.t1, 6, 1e-15);
+}
+
+TEST(Facets, ManyFacedPolytopesUseAFaceBvhWithTheSameSpans) {
+    // Spans found through the face BVH against the plane-based inside test along random lines
+    ConvexPolytope big(openscadSphere(2, 40));
+    ASSERT_TRUE(big.usesFaceBvh());
+    EXPECT_FALSE(ConvexPolytope(openscadSphere(2, 8)).usesFaceBvh());
+    Rng rng(5);
+    int hits = 0;
+    for (int i = 0; i < 4000; ++i) {
+        Vec3 o(rng.uniform() * 8 - 4, rng.uniform() * 8 - 4, rng.uniform() * 8 - 4);
+        Vec3 target(rng.uniform() * 4 - 2, rng.uniform() * 4 - 2, rng.uniform() * 4 - 2);
+        Ray r(o, normalize(target - o));
+        PrimitiveSpan s;
+        if (!big.intersect(r, &s)) {
+            // A miss: no point of the line near the sphere is inside
+            bool anyInside = false;
+            for (double t = -8; t <= 8; t += 0.05) anyInside |= big.inside(r.at(t));
+            EXPECT_FALSE(anyInside);
+            continue;
+        }
+        ++hits;
+        double len = s.t1 - s.t0;
+        EXPECT_TRUE(big.inside(r.at(s.t0 + 0.5 * len)));
+        EXPECT_FALSE(big.inside(r.at(s.t0 - 1e-6)));
+        EXPECT_FALSE(big.inside(r.at(s.t1 + 1e-6)));
+        // The span's faces are the planes the ends lie on
+        for (auto [t, face] : {std::pair{s.t0, s.face0}, std::pair{s.t1, s.face1}}) {
+            ObjectSurface os = big.surface(r.at(t), face);
+            EXPECT_LT(length(os.p - r.at(t)), 1e-12);
+        }
+    }
+    EXPECT_GT(hits, 1000);
 }
 
 Scene sceneOf(std::vector<std::pair<PrimShape, Fragments>> prims) {
