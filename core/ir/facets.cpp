@@ -12,9 +12,6 @@ namespace rt::ir {
 
 namespace {
 
-/// OpenSCAD's GRID_FINE: circles smaller than this get 3 fragments.
-constexpr double kGridFine = 0.00000095367431640625;  // 2^-20
-
 /// An n-gon of radius r at height z, starting on +X, in OpenSCAD's radian arithmetic
 /// (generate_circle): the same doubles as OpenSCAD's vertices.
 void appendCircle(std::vector<Vec3> &out, double r, double z, int n) {

@@ -27,6 +27,10 @@ enum class FacetMode {
 /// for a sphere of radius 1), only approximate a round shape.
 constexpr int kAutoFacetMaxFragments = 12;
 
+/// OpenSCAD's GRID_FINE (2^-20): circles smaller than this get 3 fragments, and extrusions of
+/// outlines smaller than this the fewest slices.
+constexpr double kGridFine = 1.0 / (1 << 20);
+
 /// A polytope larger than this (faces) stays smooth, with a warning: `$fn=100000` would
 /// otherwise make a sphere of 5e9 faces.
 constexpr size_t kMaxPolytopeFaces = 1'000'000;

@@ -5,15 +5,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/ir/facets.h"
 #include "core/math/degree_trig.h"
 #include "importers/mesh/mesh_reader.h"
 
 namespace rt::scad {
 
 namespace {
-
-/// OpenSCAD's GRID_FINE: radii below it get the minimum slice count.
-constexpr double kGridFine = 1.0 / (1 << 20);
 
 /// Diagonals whose lengths differ by less than this fraction of their mean count as equal
 /// (OpenSCAD's sgn_vdiff, 10 ppm); the tie is then broken by the twist direction.
@@ -35,7 +33,7 @@ Vec2 place(Vec2 p, Vec2 k, double rot) {
 int helixSlices(double rSqr, double height, double twist, const ir::Fragments &f) {
     twist = std::abs(twist);
     int minSlices = std::max(static_cast<int>(std::ceil(twist / 120.0)), 1);
-    if (std::sqrt(rSqr) < kGridFine) return minSlices;
+    if (std::sqrt(rSqr) < ir::kGridFine) return minSlices;
     if (f.fn > 0) return std::max(static_cast<int>(std::ceil(twist / 360.0 * f.fn)), minSlices);
     // Helix length T sqrt(r^2 + c^2) with pitch c = height / T
     double t = twist * M_PI / 180, c = height / t;
@@ -53,7 +51,7 @@ int conicalHelixSlices(double rSqr, double height, double twist, double scale,
     twist = std::abs(twist);
     double r = std::sqrt(rSqr);
     int minSlices = std::max(static_cast<int>(std::ceil(twist / 120.0)), 1);
-    if (r < kGridFine) return minSlices;
+    if (r < ir::kGridFine) return minSlices;
     if (f.fn > 0) return std::max(static_cast<int>(std::ceil(twist * f.fn / 360)), minSlices);
     // The path of the farthest point projects to a piece of an Archimedes spiral that would
     // reach the origin where the scale reaches 0
@@ -69,7 +67,7 @@ int conicalHelixSlices(double rSqr, double height, double twist, double scale,
 }
 
 int diagonalSlices(double deltaSqr, double height, const ir::Fragments &f) {
-    if (std::sqrt(deltaSqr) < kGridFine) return 1;
+    if (std::sqrt(deltaSqr) < ir::kGridFine) return 1;
     if (f.fn > 0) return std::max(static_cast<int>(f.fn), 1);
     return std::max(static_cast<int>(std::ceil(std::sqrt(deltaSqr + height * height) / f.fs)), 1);
 }
