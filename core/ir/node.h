@@ -44,7 +44,38 @@ struct PolytopePrim {
     std::vector<std::vector<int>> faces;
 };
 
-using PrimShape = std::variant<SpherePrim, BoxPrim, CylinderPrim, MeshPrim, PolytopePrim>;
+/// A point of a profile in the half-plane of a solid of revolution: r is the distance from
+/// the +Z axis (r >= 0), z the height.
+struct ProfilePoint {
+    double r = 0, z = 0;
+};
+using ProfileOutline = std::vector<ProfilePoint>;
+
+/// A solid of revolution about +Z (OpenSCAD's rotate_extrude of polygons): the region inside
+/// `outlines` (even-odd rule, r >= 0) revolved from the +X axis counter-clockwise by `angle`
+/// degrees (0 < angle <= 360; 360 is a full turn with no end faces). Each outline edge sweeps
+/// a piece of a cone, a cylinder or an annulus. `fragments` is OpenSCAD's segment count over
+/// `angle` (rotatePolygon), used when the solid is drawn faceted; 0 when unknown.
+struct LathePrim {
+    std::vector<ProfileOutline> outlines;
+    double angle = 360;
+    int fragments = 0;
+};
+
+/// A torus about +Z centred at the origin: the disc of radius `minor` whose centre is `major`
+/// from the axis, revolved from +X counter-clockwise by `angle` degrees (0 < angle <= 360).
+/// major >= minor > 0 (major == minor is the horn torus OpenSCAD makes of a circle touching
+/// the axis). For the faceted form: `facetOutline` is OpenSCAD's polygon of the circle as
+/// placed in the profile plane, and `fragments` its segment count over `angle`.
+struct TorusPrim {
+    double major = 1, minor = 0.25;
+    double angle = 360;
+    ProfileOutline facetOutline;
+    int fragments = 0;
+};
+
+using PrimShape = std::variant<SpherePrim, BoxPrim, CylinderPrim, MeshPrim, PolytopePrim,
+                               LathePrim, TorusPrim>;
 
 /// OpenSCAD's $fn/$fa/$fs at the primitive, for the tessellated comparison mode.
 struct Fragments {
