@@ -479,8 +479,9 @@ const std::unordered_map<Symbol, Evaluator::ModuleHandler, SymbolHash>
         add("circle", &Evaluator::moduleCircle);
         add("polygon", &Evaluator::modulePolygon);
         add("linear_extrude", &Evaluator::moduleLinearExtrude);
+        add("rotate_extrude", &Evaluator::moduleRotateExtrude);
         for (const char *name :
-             {"minkowski", "resize", "rotate_extrude", "surface", "text", "projection", "offset"})
+             {"minkowski", "resize", "surface", "text", "projection", "offset"})
             add(name, &Evaluator::moduleUnsupported);
         return t;
     }();

@@ -18,6 +18,7 @@
 #include "importers/scad/environment.h"
 #include "importers/scad/parser.h"
 #include "importers/scad/scad_importer.h"
+#include "importers/scad/revolve.h"
 #include "importers/scad/shape2d.h"
 
 namespace rt::scad {
@@ -85,6 +86,16 @@ struct ExtrudeSpec {
     /// linear_extrude's group of children: OpenSCAD unions them without its mixing warning
     /// (applyToChildren2D), only ignoring 3D ones
     const ir::Node *silentUnion = nullptr;
+    SourceLoc loc;
+};
+
+/// A resolved rotate_extrude: the sweep every lifted leaf takes.
+struct RevolveSpec {
+    double angle = 360;           ///< |angle| in (0, 360], counter-clockwise from +X
+    int segments = 1;             ///< OpenSCAD's segment count over the angle
+    ir::Fragments fragments;      ///< $fn/$fa/$fs at the call
+    int material = -1;            ///< -1: each 2D primitive keeps its own material
+    const ir::Node *silentUnion = nullptr;  ///< the call's group of children
     SourceLoc loc;
 };
 
@@ -273,6 +284,17 @@ class Evaluator {
     /// Draws the 2D subtrees left outside any extrusion as OpenSCAD's preview does.
     int finish2d(ir::Node &n, bool top);
     ir::NodePtr makeLifted(ir::PrimShape shape, int material, const SourceLoc &loc);
+
+    // rotate_extrude (builtins_revolve.cpp)
+    ir::NodePtr moduleRotateExtrude(const ModuleInstantiation &inst, const FramePtr &f);
+    /// An outer bound of the x extent of the 2D subtree n placed by `placed`.
+    XRange xRange2d(const ir::Node &n, const Affine2 &placed);
+    /// The 3D solid of a 2D subtree revolved as `spec` says (the subtree's profile is on the
+    /// +X side once placed); `subtracted` inside what a difference subtracts.
+    ir::NodePtr liftRevolve(const ir::Node &n, const RevolveSpec &spec, const Affine2 &placed,
+                            bool subtracted);
+    ir::NodePtr revolveShape(const Shape2d &s, const RevolveSpec &spec, const Affine2 &placed,
+                             bool subtracted);
 
     // Mesh modules (builtins_mesh.cpp)
     ir::NodePtr modulePolyhedron(const ModuleInstantiation &inst, const FramePtr &f);

@@ -344,7 +344,7 @@ TEST(Modifiers, RootReplacesTheSceneWithoutItsParents) {
 }
 
 TEST(SkippedModules, WarnAndLeaveAnEmptyGroup) {
-    const char *names[] = {"minkowski", "resize", "rotate_extrude", "surface",
+    const char *names[] = {"minkowski", "resize", "surface",
                            "text",      "projection", "offset"};
     for (const char *name : names) {
         Imported r = importText(std::string("difference() { ") + name + "() cube(); sphere(); }");
