@@ -34,8 +34,29 @@ int CsgShape::addOp(Op op, std::vector<int> children) {
         case Op::Leaf: break;
     }
     n.children = std::move(children);
+    n.bvhFirst = op == Op::Difference ? 1 : 0;
+    if ((op == Op::Union || op == Op::Difference) &&
+        n.children.size() >= n.bvhFirst + kCsgBvhMinOperands) {
+        std::vector<Bounds3> bounds;
+        for (size_t i = n.bvhFirst; i < n.children.size(); ++i)
+            bounds.push_back(nodes_[n.children[i]].bounds);
+        n.bvh = std::make_unique<Bvh>(bounds);
+    }
     nodes_.push_back(std::move(n));
     return static_cast<int>(nodes_.size()) - 1;
+}
+
+void CsgShape::reachedOperands(const Node &node, const Ray &ray, double w0, double w1,
+                               std::vector<int> &out) const {
+    out.clear();
+    double tMax = w1;
+    node.bvh->traverse(ray, w0, &tMax, [&](uint32_t item, double *) {
+        out.push_back(static_cast<int>(item + node.bvhFirst));  // position among the operands
+        return false;
+    });
+    // In operand order, so the result is the one the plain loop gives
+    std::sort(out.begin(), out.end());
+    for (int &i : out) i = node.children[i];
 }
 
 std::unique_ptr<LeafShape> CsgShape::releaseOnlyLeaf() {
@@ -83,12 +104,13 @@ void CsgShape::evaluate(int index, const Ray &ray, double w0, double w1, SpanLis
     }
     ScratchList operand(scratch), merged(scratch);
     bool first = true;
-    for (int child : node.children) {
+    // Merges one operand into `out`; false when the result is settled (pruned)
+    auto merge = [&](int child) {
         if (prune_ && !first && node.op != Op::Union) {
             if (out.empty()) {
                 // Pruning rule: nothing left of the minuend or the intersection so far
                 ++scratch.prunedSubtrees;
-                return;
+                return false;
             }
             // Narrow to the result so far, with the tie tolerance as slack so an operand that
             // only touches it is still merged and its coincident faces are noticed
@@ -98,20 +120,20 @@ void CsgShape::evaluate(int index, const Ray &ray, double w0, double w1, SpanLis
         if (first) {
             evaluate(child, ray, w0, w1, out, scratch);
             first = false;
-            continue;
+            return true;
         }
         evaluate(child, ray, w0, w1, *operand, scratch);
         if (operand->empty()) {
             if (node.op == Op::Intersection) {
                 out.clear();
-                if (prune_) return;
+                if (prune_) return false;
             }
-            continue;  // union or difference with nothing: unchanged
+            return true;  // union or difference with nothing: unchanged
         }
         if (out.empty()) {
             // Only without pruning does an emptied intersection or difference get here
             if (node.op == Op::Union) out.swap(*operand);
-            continue;
+            return true;
         }
         SpanOp op = node.op == Op::Union          ? SpanOp::Union
                     : node.op == Op::Intersection ? SpanOp::Intersection
@@ -120,7 +142,29 @@ void CsgShape::evaluate(int index, const Ray &ray, double w0, double w1, SpanLis
                      &scratch.cancelledTie);
         ++scratch.spanOps;
         out.swap(*merged);
+        return true;
+    };
+    if (!node.bvh || !prune_) {
+        for (int child : node.children)
+            if (!merge(child)) return;
+        return;
     }
+    // Many operands: a difference's minuend first, then only the operands whose bounds the
+    // ray reaches within the window (narrowed by the minuend), in their order
+    for (size_t k = 0; k < node.bvhFirst; ++k)
+        if (!merge(node.children[k])) return;
+    if (node.op == Op::Difference) {
+        if (out.empty()) {
+            ++scratch.prunedSubtrees;
+            return;
+        }
+        w0 = std::max(w0, out.front().in.t - tieEpsilon(ray.o, out.front().in.t));
+        w1 = std::min(w1, out.back().out.t + tieEpsilon(ray.o, out.back().out.t));
+    }
+    std::vector<int> reached;
+    reachedOperands(node, ray, w0, w1, reached);
+    for (int child : reached)
+        if (!merge(child)) return;
 }
 
 bool CsgShape::inside(const Vec3 &p) const {

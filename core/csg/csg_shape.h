@@ -6,10 +6,15 @@
 #include <memory>
 #include <vector>
 
+#include "core/bvh/bvh.h"
 #include "core/csg/span_ops.h"
 #include "core/geometry/shape.h"
 
 namespace rt {
+
+/// A union or difference with at least this many operands finds the ones a ray reaches
+/// through a BVH over their bounds; below it, testing each operand's bounds is as fast.
+constexpr size_t kCsgBvhMinOperands = 16;
 
 class CsgShape final : public Shape {
   public:
@@ -42,11 +47,20 @@ class CsgShape final : public Shape {
         Bounds3 bounds;
         std::vector<int> children;
         const LeafShape *leaf = nullptr;
+        /// Unions and differences of many operands: a BVH over the bounds of the operands
+        /// after `bvhFirst` (all of a union's, a difference's subtrahends), so a ray visits
+        /// only those it reaches instead of testing every operand's bounds.
+        std::unique_ptr<Bvh> bvh;
+        size_t bvhFirst = 0;
     };
 
     void evaluate(int node, const Ray &ray, double w0, double w1, SpanList &out,
                   SpanScratch &scratch) const;
     bool insideNode(int node, const Vec3 &p) const;
+    /// The operands (node indices) of a node with a BVH that the ray may reach within
+    /// [w0, w1], in the node's order.
+    void reachedOperands(const Node &node, const Ray &ray, double w0, double w1,
+                         std::vector<int> &out) const;
 
     std::vector<Node> nodes_;
     std::vector<std::unique_ptr<LeafShape>> leaves_;

@@ -292,3 +292,56 @@ TEST(CsgShape, WindowedEvaluationAgreesWithFullEvaluation) {
 
 }  // namespace
 }  // namespace rt
+
+namespace rt {
+namespace {
+
+/// A plate minus a grid of spheres, plus a union of spheres over it: both nodes have enough
+/// operands for a BVH. The spans must be those of the plain loop (pruning off), bit for bit.
+TEST(CsgShape, ManyOperandsThroughABvhGiveThePlainLoopsSpans) {
+    auto build = [](CsgShape &s) {
+        std::vector<int> diff{s.addLeaf(std::make_unique<PrimitiveInstance>(
+            std::make_unique<Box>(Vec3(0, 0, 0), Vec3(10, 10, 1)), Transform(), 0))};
+        std::vector<int> bumps;
+        for (int i = 0; i < 10; ++i)
+            for (int j = 0; j < 10; ++j) {
+                diff.push_back(s.addLeaf(sphereAt({i + 0.5, j + 0.5, 0.5}, 0.3 + 0.01 * j, 1)));
+                if ((i + j) % 3 == 0)
+                    bumps.push_back(s.addLeaf(sphereAt({i + 0.2, j + 0.7, 1}, 0.45, 2)));
+            }
+        ASSERT_GE(diff.size(), 1 + kCsgBvhMinOperands);
+        ASSERT_GE(bumps.size(), kCsgBvhMinOperands);
+        int d = s.addOp(CsgShape::Op::Difference, diff);
+        int u = s.addOp(CsgShape::Op::Union, bumps);
+        s.addOp(CsgShape::Op::Union, {d, u});
+    };
+    CsgShape pruned, plain;
+    build(pruned);
+    build(plain);
+    plain.setPruning(false);
+    Rng rng(11);
+    SpanScratch scratch;
+    int hits = 0;
+    for (int i = 0; i < 3000; ++i) {
+        Vec3 o(rng.uniform() * 30 - 10, rng.uniform() * 30 - 10, rng.uniform() * 10 - 2);
+        Vec3 target(rng.uniform() * 10, rng.uniform() * 10, rng.uniform() * 1.5);
+        Ray r(o, normalize(target - o));
+        SpanList a, b;
+        pruned.spans(r, -kInfinity, kInfinity, a, scratch);
+        plain.spans(r, -kInfinity, kInfinity, b, scratch);
+        ASSERT_EQ(a.size(), b.size()) << "ray " << i;
+        for (size_t k = 0; k < a.size(); ++k) {
+            EXPECT_EQ(a[k].in.t, b[k].in.t);
+            EXPECT_EQ(a[k].out.t, b[k].out.t);
+            EXPECT_EQ(a[k].in.leaf->material(), b[k].in.leaf->material());
+        }
+        hits += !a.empty();
+        // Inside tests through the same tree
+        Vec3 p(rng.uniform() * 10, rng.uniform() * 10, rng.uniform() * 1.5);
+        EXPECT_EQ(pruned.inside(p), plain.inside(p));
+    }
+    EXPECT_GT(hits, 1000);
+}
+
+}  // namespace
+}  // namespace rt
