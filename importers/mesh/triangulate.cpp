@@ -5,6 +5,8 @@
 // triangulation (libtess2 with TESS_CONSTRAINED_DELAUNAY_TRIANGLES, called from
 // PolysetUtils::tessellate_faces / GeometryUtils::tessellatePolygonWithHoles).
 #include <cmath>
+#include <cstdint>
+#include <unordered_map>
 
 #include "importers/mesh/mesh_reader.h"
 
@@ -181,30 +183,50 @@ std::vector<Tri> triangulateByEars(const std::vector<Point2> &pts) {
 }
 
 /// Flips inner edges whose facing angles sum to pi + kDelaunaySlack or more until none is left
-/// (libtess2's tessMeshRefineDelaunay); each flip lowers that sum below pi, so it ends.
+/// (libtess2's tessMeshRefineDelaunay): a stack of edges to check, first every inner edge,
+/// then after each flip the four edges around the new one; each flip lowers that sum below
+/// pi, so it ends. Edges are found through a map, so the work grows with the flips, not with
+/// the square of the triangle count.
 void refineDelaunay(const std::vector<Point2> &p, std::vector<Tri> &tris) {
+    auto key = [](size_t a, size_t b) { return (static_cast<uint64_t>(a) << 32) | b; };
+    // Directed edge -> triangle holding it
+    std::unordered_map<uint64_t, size_t> owner;
+    owner.reserve(3 * tris.size());
+    for (size_t i = 0; i < tris.size(); ++i)
+        for (int e = 0; e < 3; ++e) owner[key(tris[i][e], tris[i][(e + 1) % 3])] = i;
+    std::vector<std::pair<size_t, size_t>> stack;
+    for (size_t i = tris.size(); i-- > 0;)
+        for (int e = 3; e-- > 0;) {
+            size_t a = tris[i][e], b = tris[i][(e + 1) % 3];
+            if (a < b && owner.count(key(b, a))) stack.push_back({a, b});
+        }
     size_t limit = tris.size() * tris.size() + 1;  // guard, as libtess2's, against rounding
-    for (bool flipped = true; flipped && limit > 0;) {
-        flipped = false;
-        for (size_t i = 0; i < tris.size() && !flipped; ++i)
-            for (int e = 0; e < 3 && !flipped; ++e) {
-                size_t a = tris[i][e], b = tris[i][(e + 1) % 3], c = tris[i][(e + 2) % 3];
-                for (size_t j = i + 1; j < tris.size() && !flipped; ++j)
-                    for (int f = 0; f < 3; ++f) {
-                        if (tris[j][f] != b || tris[j][(f + 1) % 3] != a) continue;
-                        size_t d = tris[j][(f + 2) % 3];
-                        double sum = cornerAngle(p[a], p[c], p[b]) + cornerAngle(p[b], p[d], p[a]);
-                        // The quad a d b c must be convex for the other diagonal to lie inside
-                        if (sum >= M_PI + kDelaunaySlack && orient(p[c], p[a], p[d]) > 0 &&
-                            orient(p[d], p[b], p[c]) > 0) {
-                            tris[i] = {c, a, d};
-                            tris[j] = {d, b, c};
-                            flipped = true;
-                            --limit;
-                        }
-                        break;
-                    }
-            }
+    auto third = [&](const Tri &t, size_t a, size_t b) {
+        for (size_t v : t)
+            if (v != a && v != b) return v;
+        return a;
+    };
+    while (!stack.empty() && limit > 0) {
+        auto [u, v] = stack.back();
+        stack.pop_back();
+        auto fi = owner.find(key(u, v)), fj = owner.find(key(v, u));
+        if (fi == owner.end() || fj == owner.end()) continue;  // flipped away meanwhile
+        size_t i = fi->second, j = fj->second;
+        size_t a = u, b = v, c = third(tris[i], a, b), d = third(tris[j], a, b);
+        double sum = cornerAngle(p[a], p[c], p[b]) + cornerAngle(p[b], p[d], p[a]);
+        // The quad a d b c must be convex for the other diagonal to lie inside
+        if (!(sum >= M_PI + kDelaunaySlack && orient(p[c], p[a], p[d]) > 0 &&
+              orient(p[d], p[b], p[c]) > 0))
+            continue;
+        for (const Tri *t : {&tris[i], &tris[j]})
+            for (int e = 0; e < 3; ++e) owner.erase(key((*t)[e], (*t)[(e + 1) % 3]));
+        tris[i] = {c, a, d};
+        tris[j] = {d, b, c};
+        for (size_t t : {i, j})
+            for (int e = 0; e < 3; ++e) owner[key(tris[t][e], tris[t][(e + 1) % 3])] = t;
+        --limit;
+        for (auto [x, y] : {std::pair{a, d}, std::pair{d, b}, std::pair{b, c}, std::pair{c, a}})
+            stack.push_back({std::min(x, y), std::max(x, y)});
     }
 }
 
