@@ -479,8 +479,9 @@ const std::unordered_map<Symbol, Evaluator::ModuleHandler, SymbolHash>
         add("circle", &Evaluator::moduleCircle);
         add("polygon", &Evaluator::modulePolygon);
         add("linear_extrude", &Evaluator::moduleLinearExtrude);
+        add("offset", &Evaluator::moduleOffset);
         for (const char *name :
-             {"minkowski", "resize", "rotate_extrude", "surface", "text", "projection", "offset"})
+             {"minkowski", "resize", "rotate_extrude", "surface", "text", "projection"})
             add(name, &Evaluator::moduleUnsupported);
         return t;
     }();

@@ -15,6 +15,7 @@
 #include "core/ir/diagnostics.h"
 #include "core/ir/scene_ir.h"
 #include "importers/scad/ast.h"
+#include "importers/scad/clipper2d.h"
 #include "importers/scad/environment.h"
 #include "importers/scad/parser.h"
 #include "importers/scad/scad_importer.h"
@@ -254,11 +255,6 @@ class Evaluator {
     /// The points whose convex hull is OpenSCAD's hull of the 2D subtree n placed by
     /// `placed`; false (after a warning) when there are more than ir::kMaxHullPoints.
     bool hullPoints2d(const ir::Node &n, const Affine2 &placed, std::vector<Vec2> &out);
-    /// Whether the point lies in the even-odd region of the 2D subtree n placed by `placed`.
-    bool inside2d(const ir::Node &n, const Affine2 &placed, Vec2 p);
-    /// Whether the 2D subtree n is certainly convex (a square, circle, convex polygon, hull,
-    /// or an intersection or transform of such).
-    bool convex2d(const ir::Node &n);
     /// The 3D solid of a 2D subtree swept as `spec` says; null when nothing is left.
     ir::NodePtr lift2d(const ir::Node &n, const ExtrudeSpec &spec, const Affine2 &placed,
                        double pad);
@@ -273,6 +269,26 @@ class Evaluator {
     /// Draws the 2D subtrees left outside any extrusion as OpenSCAD's preview does.
     int finish2d(ir::Node &n, bool top);
     ir::NodePtr makeLifted(ir::PrimShape shape, int material, const SourceLoc &loc);
+
+  public:
+    /// OpenSCAD's polygon set for the 2D children of `n` (the placeholder tree under a module
+    /// call, such as the group of an extrusion's children): GeometryEvaluator's
+    /// applyToChildren2D(UNION) in 2021.01, so one child is taken as it is and several are
+    /// united by Clipper, 3D children are ignored (with OpenSCAD's warnings), each polygon()
+    /// is sanitized even-odd and results are quantised as clipper2d.h says. Empty when
+    /// nothing 2D is left. `xRange` gives the x extent of the outlines.
+    clipper2d::PolygonSet evaluate2d(const ir::Node &n);
+
+  private:
+    // Clipper evaluation of 2D subtrees and offset() (evaluate2d.cpp)
+    ir::NodePtr moduleOffset(const ModuleInstantiation &inst, const FramePtr &f);
+    /// The polygon set of the 2D subtree n; nullopt for OpenSCAD's null geometry. The
+    /// children of `silent` are combined without the mixing warning (applyToChildren2D
+    /// called directly).
+    std::optional<clipper2d::PolygonSet> polygons2d(const ir::Node &n, const ir::Node *silent);
+    /// A polygon set's regions swept as `spec` says (see liftShape).
+    ir::NodePtr liftRegions(const std::vector<Region> &regions, const ExtrudeSpec &spec,
+                            double pad, int material, const SourceLoc &loc);
 
     // Mesh modules (builtins_mesh.cpp)
     ir::NodePtr modulePolyhedron(const ModuleInstantiation &inst, const FramePtr &f);

@@ -344,8 +344,8 @@ TEST(Modifiers, RootReplacesTheSceneWithoutItsParents) {
 }
 
 TEST(SkippedModules, WarnAndLeaveAnEmptyGroup) {
-    const char *names[] = {"minkowski", "resize", "rotate_extrude", "surface",
-                           "text",      "projection", "offset"};
+    const char *names[] = {"minkowski", "resize", "rotate_extrude", "surface", "text",
+                           "projection"};
     for (const char *name : names) {
         Imported r = importText(std::string("difference() { ") + name + "() cube(); sphere(); }");
         EXPECT_EQ(r.scene.stats.skippedModules, 1) << name;
