@@ -141,8 +141,12 @@ PolygonSet offset(const PolygonSet &p, double delta, JoinType join, double miter
 
 std::vector<Region> regions(const PolygonSet &p) {
     // Sanitized outlines are non-zero filled (holes run clockwise); others even-odd
+    // Strictly simple: an outline that touches itself at a corner (a crossing of the
+    // original outline) is split there, so that each region sweeps to a closed manifold mesh;
+    // the points and edges stay OpenSCAD's
     PolyTree tree;
     ClipperLib::Clipper clipper;
+    clipper.StrictlySimple(true);
     clipper.AddPaths(toPaths(p), ClipperLib::ptSubject, true);
     clipper.Execute(ClipperLib::ctUnion, tree,
                     p.sanitized ? ClipperLib::pftNonZero : ClipperLib::pftEvenOdd);

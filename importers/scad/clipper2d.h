@@ -52,8 +52,9 @@ PolygonSet offset(const PolygonSet &p, double delta, JoinType join, double miter
                   double arcTolerance);
 
 /// The regions of a polygon set (filled even-odd, or non-zero once sanitized) with their
-/// holes, all outlines counter-clockwise, nested as Clipper's PolyTree nests them: outlines
-/// that only touch at a corner are told apart without any point-in-polygon test.
+/// holes, all outlines counter-clockwise and strictly simple (an outline touching itself at
+/// a corner is split there), nested as Clipper's PolyTree nests them: outlines that only
+/// touch at a corner are told apart without any point-in-polygon test.
 std::vector<Region> regions(const PolygonSet &p);
 
 }  // namespace rt::scad::clipper2d
