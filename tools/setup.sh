@@ -7,7 +7,7 @@ packages=(
     g++ cmake ninja-build pkg-config
     libopenimageio-dev libcli11-dev
     libgtest-dev libgmock-dev libbenchmark-dev
-    libtinygltf-dev
+    libtinygltf-dev libpolyclipping-dev
     povray openscad
 )
 

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/ir/facets.h"
+#include "importers/scad/clipper2d.h"
 #include "importers/scad/evaluator.h"
 #include "importers/scad/extrude.h"
 
@@ -295,28 +296,40 @@ ir::NodePtr Evaluator::moduleLinearExtrude(const ModuleInstantiation &inst, cons
     }
     spec.scale = scale;
     spec.meshPath = spec.twist != 0 || scale.x != scale.y;
-    if (spec.meshPath) {
-        // One slice count for the whole 2D child, from its farthest points (extrudePolygon)
-        double rSqr = 0, deltaSqr = 0;
-        extentOf2d(*children, Affine2(), scale, rSqr, deltaSqr);
-        spec.slices = extrudeSlices(spec.sliceArg, height, spec.twist, scale, rSqr, deltaSqr,
-                                    spec.fragments);
-        if (spec.slices > kMaxSlices) {
-            warn(inst.loc, "linear_extrude(): " + std::to_string(spec.slices) +
-                               " slices are too many; using " + std::to_string(kMaxSlices));
-            spec.slices = kMaxSlices;
-        }
-        // OpenSCAD combines the outlines (Clipper) before it sweeps one polygon; we sweep each
-        // outline and combine the solids, which is the same solid but not the same facets
-        // where outlines overlap inside a slice: say so, since `check --openscad` will see it
-        if (outlineCount(*children) > 1)
-            warn(inst.loc, "linear_extrude() with twist or non-uniform scale of several 2D "
-                           "outlines: each is swept and the solids are combined; OpenSCAD "
-                           "combines the outlines first, so facets can differ where they overlap "
-                           "(2D booleans before sweeping are not supported yet)");
+    if (!spec.meshPath) {
+        if (ir::NodePtr solid = lift2d(*children, spec, Affine2(), 0))
+            out->children.push_back(std::move(solid));
+        return out;
     }
-    if (ir::NodePtr solid = lift2d(*children, spec, Affine2(), 0))
-        out->children.push_back(std::move(solid));
+    // Twisted or unevenly scaled: OpenSCAD sweeps one polygon set, the union of the children
+    // (Clipper), so several outlines are evaluated first and their regions swept; one outline
+    // is swept as it is (the same facets, without Clipper's quantisation)
+    std::optional<clipper2d::PolygonSet> evaluated;
+    if (outlineCount(*children) > 1) evaluated = evaluate2d(*children);
+    // One slice count for the whole 2D child, from its farthest points (extrudePolygon)
+    double rSqr = 0, deltaSqr = 0;
+    if (evaluated) {
+        for (const Outline &o : evaluated->outlines)
+            for (Vec2 v : o) {
+                rSqr = std::max(rSqr, v.x * v.x + v.y * v.y);
+                Vec2 d{v.x - v.x * scale.x, v.y - v.y * scale.y};
+                deltaSqr = std::max(deltaSqr, d.x * d.x + d.y * d.y);
+            }
+    } else {
+        extentOf2d(*children, Affine2(), scale, rSqr, deltaSqr);
+    }
+    spec.slices = extrudeSlices(spec.sliceArg, height, spec.twist, scale, rSqr, deltaSqr,
+                                spec.fragments);
+    if (spec.slices > kMaxSlices) {
+        warn(inst.loc, "linear_extrude(): " + std::to_string(spec.slices) +
+                           " slices are too many; using " + std::to_string(kMaxSlices));
+        spec.slices = kMaxSlices;
+    }
+    ir::NodePtr solid =
+        evaluated ? liftRegions(withClipper(inst.loc, [&] { return clipper2d::regions(*evaluated); }),
+                                spec, 0, spec.material, inst.loc)
+                  : lift2d(*children, spec, Affine2(), 0);
+    if (solid) out->children.push_back(std::move(solid));
     return out;
 }
 
@@ -466,36 +479,62 @@ ir::NodePtr Evaluator::liftShape(const Shape2d &s, const ExtrudeSpec &spec, cons
         return node;
     }
 
-    // Outlines (placed on the mesh path), cleaned, as even-odd regions with holes
-    std::vector<Outline> outlines;
-    for (Outline o : shapeOutlines(s)) {
-        for (Vec2 &p : o) p = placed.apply(p);
-        o = cleanOutline(o);
-        if (!o.empty()) outlines.push_back(std::move(o));
+    // Outlines (placed on the mesh path) as even-odd regions with holes. Outlines that cross
+    // themselves or each other are sanitized by Clipper first, as OpenSCAD sanitizes every
+    // polygon(); an evaluated polygon set (offset) is nested as Clipper nests it.
+    std::vector<Region> regions;
+    if (s.kind == Shape2dKind::Polygon && s.evaluated) {
+        clipper2d::PolygonSet set{s.outlines, s.sanitized};
+        regions = withClipper(s.loc, [&] { return clipper2d::regions(set); });
+    } else {
+        std::vector<Outline> outlines;
+        for (Outline o : shapeOutlines(s)) {
+            o = cleanOutline(o);
+            if (!o.empty()) outlines.push_back(std::move(o));
+        }
+        if (s.kind == Shape2dKind::Polygon && outlinesIntersect(outlines))
+            regions = withClipper(s.loc, [&] {
+                return clipper2d::regions(clipper2d::sanitize({s.outlines, false}));
+            });
+        else
+            regions = evenOddRegions(outlines);
     }
-    if (outlines.empty()) {
+    // Placed on the mesh path (a mirror turns the outlines over: counter-clockwise again)
+    if (!placed.isIdentity()) {
+        auto place = [&](Outline &o) {
+            for (Vec2 &p : o) p = placed.apply(p);
+            if (twiceSignedArea(o) < 0) std::reverse(o.begin(), o.end());
+        };
+        for (Region &r : regions) {
+            place(r.outer);
+            for (Outline &h : r.holes) place(h);
+        }
+    }
+    if (regions.empty()) {
         warn(s.loc, "polygon(): no outline with area; nothing to extrude");
         return nullptr;
     }
-    if (s.kind == Shape2dKind::Polygon && outlinesIntersect(outlines))
-        warn(s.loc, "polygon(): outlines that cross themselves or each other are not supported "
-                    "yet; they are filled by nesting, not by OpenSCAD's even-odd rule");
-    std::vector<Region> regions = evenOddRegions(outlines);
+    return liftRegions(regions, spec, pad, material, s.loc);
+}
+
+ir::NodePtr Evaluator::liftRegions(const std::vector<Region> &regions, const ExtrudeSpec &spec,
+                                   double pad, int material, const SourceLoc &loc) {
     double step = kSubtrahendPad * (spec.z1 - spec.z0);
-    ir::NodePtr group = newNode(ir::NodeKind::Group, s.loc);
+    ir::NodePtr group = newNode(ir::NodeKind::Group, loc);
     for (const Region &region : regions) {
-        ir::NodePtr solid = sweptSolid(region.outer, spec, pad, material, s.loc);
+        ir::NodePtr solid = sweptSolid(region.outer, spec, pad, material, loc);
         if (!solid) continue;
         if (!region.holes.empty()) {
-            ir::NodePtr diff = newNode(ir::NodeKind::Difference, s.loc);
+            ir::NodePtr diff = newNode(ir::NodeKind::Difference, loc);
             diff->children.push_back(std::move(solid));
             for (const Outline &hole : region.holes)
-                if (ir::NodePtr h = sweptSolid(hole, spec, pad + step, material, s.loc))
+                if (ir::NodePtr h = sweptSolid(hole, spec, pad + step, material, loc))
                     diff->children.push_back(std::move(h));
             solid = std::move(diff);
         }
         group->children.push_back(std::move(solid));
     }
+    if (group->children.empty()) return nullptr;
     if (group->children.size() == 1) return std::move(group->children[0]);
     return group;
 }
@@ -564,6 +603,7 @@ ir::NodePtr Evaluator::hull2d(const ir::Node &children, const ModuleInstantiatio
     Shape2d s;
     s.kind = Shape2dKind::Polygon;
     s.outlines.push_back(std::move(h.ccw));
+    s.evaluated = true;  // OpenSCAD's hull is a polygon it does not sanitize
     return shape2dNode(std::move(s), inst);
 }
 
@@ -589,98 +629,27 @@ bool Evaluator::hullPoints2d(const ir::Node &n, const Affine2 &placed, std::vect
         }
         inner = placed * t;
     }
+    if (n.kind == ir::NodeKind::Intersection || n.kind == ir::NodeKind::Difference) {
+        // OpenSCAD hulls the points of the evaluated (Clipper) polygon set
+        std::optional<clipper2d::PolygonSet> p = polygons2d(n, nullptr);
+        if (!p) return true;
+        size_t count = 0;
+        for (const Outline &o : p->outlines) count += o.size();
+        if (out.size() + count > ir::kMaxHullPoints) {
+            warn(n.loc, "hull(): this part gives " + std::to_string(count) +
+                            " points, more than the " + std::to_string(ir::kMaxHullPoints) +
+                            " a hull may have; the hull is left out");
+            return false;
+        }
+        for (const Outline &o : p->outlines)
+            for (Vec2 v : o) out.push_back(placed.apply(v));
+        return true;
+    }
     std::vector<const ir::Node *> operands = children2d(n, true);
-    if (n.kind == ir::NodeKind::Intersection && !operands.empty()) {
-        // Clip the first operand's hull by the others' hulls: exact when every operand is
-        // convex, else an outer bound of OpenSCAD's result (its hull can be smaller)
-        Outline cut;
-        bool convex = true;
-        for (size_t i = 0; i < operands.size(); ++i) {
-            std::vector<Vec2> pts;
-            if (!hullPoints2d(*operands[i], inner, pts)) return false;
-            convex = convex && convex2d(*operands[i]);
-            Hull2d h = convexHull2d(std::move(pts));
-            cut = i == 0 ? std::move(h.ccw) : clipConvex(cut, h.ccw);
-            if (cut.empty()) return true;  // no common area
-        }
-        if (!convex)
-            warn(n.loc, "hull() of an intersection() whose operands are not all convex: hulled "
-                        "as the intersection of the operands' hulls, which can be larger than "
-                        "OpenSCAD's");
-        out.insert(out.end(), cut.begin(), cut.end());
-        return true;
-    }
-    if (n.kind == ir::NodeKind::Difference && !operands.empty()) {
-        std::vector<Vec2> pts;
-        if (!hullPoints2d(*operands[0], inner, pts)) return false;
-        Hull2d h = convexHull2d(std::move(pts));
-        // The subtrahends' own points do not count, but their warnings do
-        for (size_t i = 1; i < operands.size(); ++i) {
-            pts.clear();
-            if (!hullPoints2d(*operands[i], inner, pts)) return false;
-        }
-        // Exact when no corner of the first operand's hull is in what is subtracted: those
-        // corners stay in the result, so its hull is the whole first hull
-        bool cut = false;
-        for (Vec2 p : h.ccw)
-            for (size_t i = 1; i < operands.size() && !cut; ++i)
-                cut = inside2d(*operands[i], inner, p);
-        if (cut)
-            warn(n.loc, "hull() of a difference() that cuts corners of its first operand's "
-                        "hull: hulled as the first operand alone, which can be larger than "
-                        "OpenSCAD's hull of the difference");
-        out.insert(out.end(), h.ccw.begin(), h.ccw.end());
-        return true;
-    }
     // Groups, unions and transforms: the hull of a union is the hull of its operands' points
     for (const ir::Node *c : operands)
         if (!hullPoints2d(*c, inner, out)) return false;
     return true;
-}
-
-bool Evaluator::inside2d(const ir::Node &n, const Affine2 &placed, Vec2 p) {
-    if (const Shape2d *s = shape2dOf(n)) {
-        bool in = false;
-        for (Outline o : shapeOutlines(*s)) {
-            for (Vec2 &q : o) q = placed.apply(q);
-            in = in != insideOutline(p, o);  // even-odd across the outlines too
-        }
-        return in;
-    }
-    Affine2 inner = placed;
-    if (n.kind == ir::NodeKind::Transform) {
-        Affine2 t = Affine2::fromMat4(n.matrix);
-        if (!(t.det() != 0)) return false;  // removed
-        inner = placed * t;
-    }
-    std::vector<const ir::Node *> operands = children2d(n, false, false);
-    auto in = [&](const ir::Node *c) { return inside2d(*c, inner, p); };
-    switch (n.kind) {
-        case ir::NodeKind::Intersection:
-            return !operands.empty() && std::all_of(operands.begin(), operands.end(), in);
-        case ir::NodeKind::Difference:
-            return !operands.empty() && in(operands[0]) &&
-                   std::none_of(operands.begin() + 1, operands.end(), in);
-        default: return std::any_of(operands.begin(), operands.end(), in);
-    }
-}
-
-bool Evaluator::convex2d(const ir::Node &n) {
-    if (const Shape2d *s = shape2dOf(n)) {
-        if (s->kind != Shape2dKind::Polygon) return true;
-        if (s->outlines.size() != 1) return false;
-        Outline o = cleanOutline(s->outlines[0]);
-        if (twiceSignedArea(o) < 0) std::reverse(o.begin(), o.end());
-        return isConvex(o);
-    }
-    std::vector<const ir::Node *> operands = children2d(n, false, false);
-    if (n.kind == ir::NodeKind::Intersection)
-        return !operands.empty() &&
-               std::all_of(operands.begin(), operands.end(),
-                           [this](const ir::Node *c) { return convex2d(*c); });
-    if (n.kind == ir::NodeKind::Difference && operands.size() > 1) return false;
-    // A group, union or (non-singular, affine) transform of one convex operand
-    return operands.size() == 1 && convex2d(*operands[0]);
 }
 
 }  // namespace rt::scad

@@ -480,8 +480,8 @@ const std::unordered_map<Symbol, Evaluator::ModuleHandler, SymbolHash>
         add("polygon", &Evaluator::modulePolygon);
         add("linear_extrude", &Evaluator::moduleLinearExtrude);
         add("rotate_extrude", &Evaluator::moduleRotateExtrude);
-        for (const char *name :
-             {"minkowski", "resize", "surface", "text", "projection", "offset"})
+        add("offset", &Evaluator::moduleOffset);
+        for (const char *name : {"minkowski", "resize", "surface", "text", "projection"})
             add(name, &Evaluator::moduleUnsupported);
         return t;
     }();

@@ -59,7 +59,20 @@ ir::NodePtr Evaluator::moduleRotateExtrude(const ModuleInstantiation &inst, cons
         warn(inst.loc, "rotate_extrude(): angle 0 makes empty geometry, as in OpenSCAD");
         return out;
     }
-    XRange range = xRange2d(*children, Affine2());
+    // OpenSCAD tests the points of the children's polygon set (Clipper's union of them) for
+    // the sides of the axis and counts segments from its largest |x|; the lifted solid
+    // below is the same set revolved
+    XRange range;
+    {
+        ++quiet_;
+        struct Restore {
+            int &q;
+            ~Restore() { --q; }
+        } restore{quiet_};
+        clipper2d::PolygonSet polygons = evaluate2d(*children);
+        for (const Outline &o : polygons.outlines)
+            for (Vec2 p : o) range.add(p.x);
+    }
     if (range.empty) return out;
     if (range.crossesAxis()) {
         diag_.report(Severity::Error, inst.loc,
@@ -85,38 +98,6 @@ ir::NodePtr Evaluator::moduleRotateExtrude(const ModuleInstantiation &inst, cons
     }
     out->children.push_back(std::move(solid));
     return out;
-}
-
-XRange Evaluator::xRange2d(const ir::Node &n, const Affine2 &placed) {
-    XRange r;
-    if (const Shape2d *s = shape2dOf(n)) {
-        for (const Outline &o : shapeOutlines(*s))
-            for (Vec2 p : o) r.add(placed.apply(p).x);
-        return r;
-    }
-    Affine2 inner = placed;
-    if (n.kind == ir::NodeKind::Transform) {
-        Affine2 t = Affine2::fromMat4(n.matrix);
-        if (!(t.det() != 0)) return r;  // removed (lift2d warns)
-        inner = placed * t;
-    }
-    std::vector<const ir::Node *> operands = children2d(n, false, false);
-    // An outer bound of the region's extent: what a difference keeps lies in its first
-    // operand, what an intersection keeps in every operand
-    if (n.kind == ir::NodeKind::Difference && !operands.empty())
-        return xRange2d(*operands[0], inner);
-    if (n.kind == ir::NodeKind::Intersection && !operands.empty()) {
-        r = xRange2d(*operands[0], inner);
-        for (size_t i = 1; i < operands.size() && !r.empty; ++i) {
-            XRange o = xRange2d(*operands[i], inner);
-            if (o.empty || o.max < r.min || o.min > r.max) return XRange();
-            r.min = std::max(r.min, o.min);
-            r.max = std::min(r.max, o.max);
-        }
-        return r;
-    }
-    for (const ir::Node *c : operands) r.add(xRange2d(*c, inner));
-    return r;
 }
 
 ir::NodePtr Evaluator::liftRevolve(const ir::Node &n, const RevolveSpec &spec,

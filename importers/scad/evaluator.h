@@ -15,6 +15,7 @@
 #include "core/ir/diagnostics.h"
 #include "core/ir/scene_ir.h"
 #include "importers/scad/ast.h"
+#include "importers/scad/clipper2d.h"
 #include "importers/scad/environment.h"
 #include "importers/scad/parser.h"
 #include "importers/scad/scad_importer.h"
@@ -115,7 +116,9 @@ class Evaluator {
 
     // Services used by the builtin function and module implementations
     DiagnosticSink &diag() { return diag_; }
-    void warn(const SourceLoc &loc, const std::string &msg) { diag_.warning(loc, msg); }
+    void warn(const SourceLoc &loc, const std::string &msg) {
+        if (quiet_ == 0) diag_.warning(loc, msg);
+    }
     Value makeString(std::string s, const SourceLoc &loc);
     /// Throws when a vector of `extra` more elements would exceed the element budget.
     void checkElementBudget(size_t extra, const SourceLoc &loc);
@@ -265,11 +268,6 @@ class Evaluator {
     /// The points whose convex hull is OpenSCAD's hull of the 2D subtree n placed by
     /// `placed`; false (after a warning) when there are more than ir::kMaxHullPoints.
     bool hullPoints2d(const ir::Node &n, const Affine2 &placed, std::vector<Vec2> &out);
-    /// Whether the point lies in the even-odd region of the 2D subtree n placed by `placed`.
-    bool inside2d(const ir::Node &n, const Affine2 &placed, Vec2 p);
-    /// Whether the 2D subtree n is certainly convex (a square, circle, convex polygon, hull,
-    /// or an intersection or transform of such).
-    bool convex2d(const ir::Node &n);
     /// The 3D solid of a 2D subtree swept as `spec` says; null when nothing is left.
     ir::NodePtr lift2d(const ir::Node &n, const ExtrudeSpec &spec, const Affine2 &placed,
                        double pad);
@@ -287,14 +285,41 @@ class Evaluator {
 
     // rotate_extrude (builtins_revolve.cpp)
     ir::NodePtr moduleRotateExtrude(const ModuleInstantiation &inst, const FramePtr &f);
-    /// An outer bound of the x extent of the 2D subtree n placed by `placed`.
-    XRange xRange2d(const ir::Node &n, const Affine2 &placed);
     /// The 3D solid of a 2D subtree revolved as `spec` says (the subtree's profile is on the
     /// +X side once placed); `subtracted` inside what a difference subtracts.
     ir::NodePtr liftRevolve(const ir::Node &n, const RevolveSpec &spec, const Affine2 &placed,
                             bool subtracted);
     ir::NodePtr revolveShape(const Shape2d &s, const RevolveSpec &spec, const Affine2 &placed,
                              bool subtracted);
+
+  public:
+    /// OpenSCAD's polygon set for the 2D children of `n` (the placeholder tree under a module
+    /// call, such as the group of an extrusion's children): GeometryEvaluator's
+    /// applyToChildren2D(UNION) in 2021.01, so one child is taken as it is and several are
+    /// united by Clipper, 3D children are ignored (with OpenSCAD's warnings), each polygon()
+    /// is sanitized even-odd and results are quantised as clipper2d.h says. Empty when
+    /// nothing 2D is left. `xRange` gives the x extent of the outlines.
+    clipper2d::PolygonSet evaluate2d(const ir::Node &n);
+
+  private:
+    // Clipper evaluation of 2D subtrees and offset() (evaluate2d.cpp)
+    /// Runs a Clipper operation; a coordinate beyond Clipper's range is a located error.
+    template <typename F>
+    static auto withClipper(const SourceLoc &loc, F &&f) -> decltype(f()) {
+        try {
+            return f();
+        } catch (const clipper2d::RangeError &e) {
+            throw EvalError(loc, e.what());
+        }
+    }
+    ir::NodePtr moduleOffset(const ModuleInstantiation &inst, const FramePtr &f);
+    /// The polygon set of the 2D subtree n; nullopt for OpenSCAD's null geometry. The
+    /// children of `silent` are combined without the mixing warning (applyToChildren2D
+    /// called directly).
+    std::optional<clipper2d::PolygonSet> polygons2d(const ir::Node &n, const ir::Node *silent);
+    /// A polygon set's regions swept as `spec` says (see liftShape).
+    ir::NodePtr liftRegions(const std::vector<Region> &regions, const ExtrudeSpec &spec,
+                            double pad, int material, const SourceLoc &loc);
 
     // Mesh modules (builtins_mesh.cpp)
     ir::NodePtr modulePolyhedron(const ModuleInstantiation &inst, const FramePtr &f);
@@ -337,6 +362,9 @@ class Evaluator {
     std::vector<MaterialSpec> materials_;
     int currentMaterial_ = -1;  ///< material of the current colour/material context, once known
     int backgroundDepth_ = 0;
+    /// Above 0, warn() prints nothing: a second pass over a subtree (rotate_extrude evaluates
+    /// its children's polygons for their extent, then lifts them) warns only once.
+    int quiet_ = 0;
     /// Inside hull(): a singular transform's flat children still give points to the hull.
     int hullDepth_ = 0;
     bool backgroundSet_ = false;

@@ -45,6 +45,12 @@ struct Shape2d {
     double radius = 1;              ///< Circle
     ir::Fragments fragments;        ///< Circle: $fn/$fa/$fs at the call
     std::vector<Outline> outlines;  ///< Polygon: the paths, filled by the even-odd rule
+    /// Polygon: the outlines are an evaluated polygon set (offset(), 2D hull()) that OpenSCAD
+    /// does not sanitize again as it does a polygon() leaf
+    bool evaluated = false;
+    /// Polygon: the outlines are sanitized by Clipper (simple, outer counter-clockwise, holes
+    /// clockwise, non-zero filled); only with `evaluated`
+    bool sanitized = false;
     int material = -1;              ///< material at the call (top-level 2D keeps its own)
     SourceLoc loc;
 };

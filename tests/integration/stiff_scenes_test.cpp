@@ -92,11 +92,11 @@ TEST(StiffScenes, GroundSphereOfRadiusTenMillionIsAsCleanAsAPlane) {
 // picture it gives at scale 1. Coincident faces computed through different transforms land a
 // few ulps apart at most scales; a tie rule that needs exact equality turned the open top of
 // a flush pocket into a lid at S = 1e-3 and 2e-3 only.
-class ScaleInvariance : public ::testing::TestWithParam<Defines> {};
-
-TEST_P(ScaleInvariance, SamePictureAsAtScaleOne) {
-    static const RenderResult reference = renderFile(stiff("scale_invariance.scad"));
-    RenderResult r = renderFile(stiff("scale_invariance.scad"), GetParam());
+/// The picture of a stiff scene under `defines` (a scale S, a shift T) against its picture at
+/// scale one.
+void expectSamePicture(const std::string &scene, const RenderResult &reference,
+                       const Defines &defines) {
+    RenderResult r = renderFile(stiff(scene), defines);
     EXPECT_EQ(r.stats.nonFinite, 0);
     double maxDiff = 0;
     int differing = 0, differingTies = 0;
@@ -118,6 +118,27 @@ TEST_P(ScaleInvariance, SamePictureAsAtScaleOne) {
     EXPECT_EQ(differing, 0) << "largest difference " << maxDiff;
     EXPECT_LE(differingTies, 3);
 }
+
+class ScaleInvariance : public ::testing::TestWithParam<Defines> {};
+
+TEST_P(ScaleInvariance, SamePictureAsAtScaleOne) {
+    static const RenderResult reference = renderFile(stiff("scale_invariance.scad"));
+    expectSamePicture("scale_invariance.scad", reference, GetParam());
+}
+
+/// Extrusions whose 2D shapes themselves are scaled: micrometre features and a plate of a
+/// thousand kilometres give the picture of the unit scene.
+class ExtrusionScaleInvariance : public ::testing::TestWithParam<Defines> {};
+
+TEST_P(ExtrusionScaleInvariance, SamePictureAsAtScaleOne) {
+    static const RenderResult reference = renderFile(stiff("extrusions.scad"));
+    EXPECT_EQ(reference.stats.nonFinite, 0);
+    expectSamePicture("extrusions.scad", reference, GetParam());
+}
+
+INSTANTIATE_TEST_SUITE_P(Stiff, ExtrusionScaleInvariance,
+                         ::testing::Values(Defines{{"S", "1e-6"}}, Defines{{"S", "1e6"}},
+                                           Defines{{"T", "[1e6, -1e6, 1e6]"}}));
 
 INSTANTIATE_TEST_SUITE_P(Stiff, ScaleInvariance,
                          ::testing::Values(Defines{{"S", "1e-6"}}, Defines{{"S", "1e-3"}},

@@ -35,6 +35,10 @@ TEST(OpenScadHull2dCrossCheck, ExtrudedHullVerticesAndVolumeMatch) {
         // Exact CSG children: a convex intersection, a difference that keeps the corners
         "intersection() { circle(3, $fn=10); square(4); } translate([-3, 0]) square(1);",
         "difference() { square(4); translate([2, 2]) circle(1, $fn=8); }",
+        // Differences and intersections that change the hull, evaluated by Clipper
+        "difference() { square(4); translate([-1, -1]) square(2); }",
+        "difference() { circle(3, $fn=12); translate([1, -4]) square(8); }",
+        "intersection() { polygon([[0,0],[4,0],[4,4],[2,1],[0,4]]); square([4, 3]); }",
     };
     fs::path tmp = fs::temp_directory_path() / ("scadray_hull2d_" + std::to_string(getpid()));
     fs::create_directories(tmp);

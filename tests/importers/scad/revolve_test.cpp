@@ -139,6 +139,23 @@ TEST(Revolve, SubtrahendAcrossTheAxisIsClipped) {
     EXPECT_NEAR(q.y, -1, 1e-15);
 }
 
+TEST(Revolve, SidesAreThoseOfTheResultNotOfItsOperands) {
+    // The first operand crosses the axis, the difference does not: OpenSCAD tests the
+    // polygon set the children make, so there is no error
+    Imported r = importText(
+        "rotate_extrude() difference() { translate([-1, 0]) square([3, 1]);"
+        " translate([-2, -1]) square([2, 3]); }");
+    EXPECT_FALSE(hasError(r, "same X coordinate sign"));
+    auto p = primitives(*r.scene.root);
+    ASSERT_EQ(p.size(), 2u);
+    for (const auto &q : std::get<ir::LathePrim>(p[0].node->shape).outlines[0]) EXPECT_GE(q.r, 0);
+    // Warnings of the children print once, though they are evaluated twice
+    r = importText("rotate_extrude() { translate([2, 0]) square(1); cube(1); }");
+    int ignoring = 0;
+    for (const auto &w : r.warnings()) ignoring += w.find("Ignoring 3D child") != std::string::npos;
+    EXPECT_EQ(ignoring, 1);
+}
+
 TEST(Revolve, FirstPositionalArgumentIsTheDxfFile) {
     // 2021.01 binds rotate_extrude(180) to file = "180", reads no children and makes nothing
     Imported r = importText("rotate_extrude(180) translate([2, 0]) square(1);");
