@@ -118,11 +118,14 @@ void RevolvedSolid::intersectAll(const Ray &ray, std::vector<PrimitiveSpan> &spa
     if (!(tLo <= tHi)) return;
     size_t first = spans.size();
 
-    // Gather the candidates and sort them along the line
+    // Gather the candidates in the ray's own parameter and sort them along the line. The end
+    // planes are crossed by the unshifted ray: a ray spawned off an end plane starts exactly
+    // on it (its offset across an exact plane is zero, as for a box) and must find it at t = 0
     thread_local std::vector<Candidate> cand;
     cand.clear();
     profileCandidates(r, tLo, tHi, cand);
-    if (!full_) wedgeCandidates(r, cand);
+    for (Candidate &c : cand) c.t += tShift;
+    if (!full_) wedgeCandidates(ray, cand);
     if (cand.size() < 2) return;
     std::sort(cand.begin(), cand.end(),
               [](const Candidate &x, const Candidate &y) { return x.t < y.t; });
@@ -134,24 +137,25 @@ void RevolvedSolid::intersectAll(const Ray &ray, std::vector<PrimitiveSpan> &spa
     int face0 = 0;
     for (size_t i = 0; i + 1 < cand.size(); ++i) {
         if (!(cand[i + 1].t > cand[i].t)) continue;
-        bool midInside = inside(r.at(0.5 * (cand[i].t + cand[i + 1].t)));
+        bool midInside = inside(ray.at(0.5 * (cand[i].t + cand[i + 1].t)));
         if (midInside == in) continue;
         const Candidate &c = cand[i];
-        int face = c.face < kFirstProfileFace ? c.face : orientFace(c.face, r.at(c.t), r.d, midInside);
+        int face = c.face < kFirstProfileFace ? c.face
+                                              : orientFace(c.face, ray.at(c.t), ray.d, midInside);
         if (midInside) {
             t0 = c.t;
             face0 = face;
         } else {
-            spans.push_back({tShift + t0, tShift + c.t, face0, face});
+            spans.push_back({t0, c.t, face0, face});
         }
         in = midInside;
     }
     if (in) {
         const Candidate &c = cand.back();
-        int face = c.face < kFirstProfileFace ? c.face : orientFace(c.face, r.at(c.t), r.d, false);
-        spans.push_back({tShift + t0, tShift + c.t, face0, face});
+        int face = c.face < kFirstProfileFace ? c.face : orientFace(c.face, ray.at(c.t), ray.d, false);
+        spans.push_back({t0, c.t, face0, face});
     }
-    // Adding the shift may round ends together: drop spans with no length left and join
+    // Undoing the shift may round ends together: drop spans with no length left and join
     // spans that now touch
     size_t keep = first;
     for (size_t i = first; i < spans.size(); ++i) {
@@ -357,8 +361,19 @@ void Lathe::profileCandidates(const Ray &r, double tLo, double tHi,
     double axy = differenceOfProducts(r.d.x, r.d.x, -r.d.y, r.d.y);
     double bxy = r.o.x * r.d.x + r.o.y * r.d.y;
     double cxy = differenceOfProducts(r.o.x, r.o.x, -r.o.y, r.o.y);
+    // The heights the line reaches inside the bounding cylinder: edges wholly above or below
+    // cannot be crossed
+    double zLine0 = r.o.z, zLine1 = r.o.z;
+    if (r.d.z != 0) {
+        zLine0 = r.o.z + tLo * r.d.z;
+        zLine1 = r.o.z + tHi * r.d.z;
+        if (zLine0 > zLine1) std::swap(zLine0, zLine1);
+    }
+    zLine0 -= slack;
+    zLine1 += slack;
     for (size_t i = 0; i < edges_.size(); ++i) {
         const Edge &e = edges_[i];
+        if (std::max(e.z1, e.z2) < zLine0 || std::min(e.z1, e.z2) > zLine1) continue;
         int face = kFirstProfileFace + 2 * static_cast<int>(i);
         if (e.z1 == e.z2) {
             // Annulus: the plane z = z1 between the two radii

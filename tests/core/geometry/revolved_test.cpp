@@ -108,7 +108,9 @@ TEST(Revolved, SpansAreSortedOnTheSurfaceAndAgreeWithInside) {
                 const Span &s = spans[k];
                 ASSERT_TRUE(std::isfinite(s.in.t) && std::isfinite(s.out.t));
                 ASSERT_LT(s.in.t, s.out.t);
-                if (k) ASSERT_LT(spans[k - 1].out.t, s.in.t);
+                if (k) {
+                    ASSERT_LT(spans[k - 1].out.t, s.in.t);
+                }
                 // Both ends lie on the face they name, and its normal is unit and outward
                 for (const Crossing *x : {&s.in, &s.out}) {
                     SurfaceInteraction si = inst.surfaceAt(r, *x);
@@ -145,8 +147,45 @@ TEST(Revolved, SpansAreSortedOnTheSurfaceAndAgreeWithInside) {
         EXPECT_GT(hits, thin ? 0 : 100);
         EXPECT_EQ(mismatches, 0) << "of " << samples;
         if (c.placement.isIdentity() && !thin && c.name.find("square") == std::string::npos &&
-            c.name.find("axis") == std::string::npos)
+            c.name.find("axis") == std::string::npos) {
             EXPECT_GT(multi, 0) << "no ray crossed the solid twice";
+        }
+    }
+}
+
+TEST(Revolved, SpawnedRaysDoNotSelfIntersect) {
+    // A ray spawned off a crossing, either way, must not find the surface it leaves again
+    // (a solid that is not convex may be met again further on)
+    Rng rng(78);
+    SpanScratch scratch;
+    for (const Case &c : cases()) {
+        SCOPED_TRACE(c.name);
+        PrimitiveInstance inst(Primitive::create(c.shape), *Transform::fromMatrix(c.placement), 0);
+        Bounds3 b = inst.worldBounds();
+        double size = length(b.diagonal());
+        int tested = 0;
+        for (int i = 0; i < 2000; ++i) {
+            Ray r = randomRay(rng, b);
+            SpanList spans;
+            inst.lineSpans(r, spans);
+            for (const Span &s : spans)
+                for (const Crossing &x : {s.in, s.out}) {
+                    SurfaceInteraction si = inst.surfaceAt(r, x);
+                    Vec3 w = randomDirection(rng);
+                    double cosine = dot(w, si.n);
+                    if (std::abs(cosine) < 0.05) continue;  // leave grazing directions out
+                    ++tested;
+                    Crossing next;
+                    if (inst.firstCrossing(spawnRay(si, w), 0, kInfinity, &next, scratch)) {
+                        EXPECT_GT(next.t, 1e-7 * size) << "re-hit the surface it left";
+                    }
+                    // Entering, the ray is inside just past its origin
+                    if (cosine < 0) {
+                        ASSERT_TRUE(inst.firstCrossing(spawnRay(si, w), 0, kInfinity, &next, scratch));
+                    }
+                }
+        }
+        EXPECT_GT(tested, c.name.find("thin") != std::string::npos ? 0 : 300);
     }
 }
 
