@@ -14,6 +14,10 @@ namespace rt {
 
 namespace {
 
+/// Distance from the z axis. Coordinates stay within ±1e100 (ir_validate), so the squares
+/// cannot overflow, and hypot's extra care would cost 40% of a torus ray.
+inline double radial(double x, double y) { return std::sqrt(x * x + y * y); }
+
 /// Candidates within this fraction of the solid's size outside a piece (an edge's z range,
 /// an annulus' radii, an end half-plane beyond the axis) are kept: a crossing at a vertex
 /// circle or on the axis must not be lost to rounding, and one kept in vain merges away.
@@ -22,6 +26,11 @@ constexpr double kCandidateSlack = 1e-9;
 /// The bounding cylinder and slab are widened by this fraction of the solid's size, so that
 /// the early rejection never drops a line that touches the solid.
 constexpr double kBoundsSlack = 1e-9;
+
+/// Safeguarded Newton on a torus root stops when a step moves it by no more than this many
+/// ulps of the major radius (1 in the units it works in): the next quadratically converging
+/// step could not change its double.
+constexpr double kRootStepUlps = 2;
 
 /// Newton-bisection steps for one torus root: bisection alone halves a bracket of at most
 /// 4 major radii to one ulp in under 60 steps; Newton usually ends it in fewer than 10.
@@ -109,7 +118,8 @@ void RevolvedSolid::intersectAll(const Ray &ray, std::vector<PrimitiveSpan> &spa
         // Closest approach to the axis, then the half chord of the cylinder
         double tc = -(r.o.x * r.d.x + r.o.y * r.d.y) / a;
         double cx = r.o.x + tc * r.d.x, cy = r.o.y + tc * r.d.y;
-        double h = (rBound - std::hypot(cx, cy)) * (rBound + std::hypot(cx, cy));
+        double rc = radial(cx, cy);
+        double h = (rBound - rc) * (rBound + rc);
         if (h < 0) return;
         double half = std::sqrt(h / a);
         tLo = std::max(tLo, tc - half);
@@ -236,16 +246,22 @@ void Torus::profileCandidates(const Ray &r, double, double, std::vector<Candidat
     if (b2 >= outer * outer) return;
     double reach = std::sqrt((outer - std::sqrt(b2)) * (outer + std::sqrt(b2)));
 
-    // Tube function h(s) = (rho - 1)^2 + z^2 - a^2, negative inside: the quartic of the line,
-    // f = ((rho - 1)^2 + z^2 - a^2) ((rho + 1)^2 + z^2 - a^2), has the sign of h, and h keeps
-    // the precision that the expanded quartic loses near a thin tube
+    // Tube function h(s) = D - a, D the distance from the tube's centre circle, negative
+    // inside: the quartic of the line, f = ((rho - 1)^2 + z^2 - a^2) ((rho + 1)^2 + z^2 - a^2),
+    // has the sign of h, and h keeps the precision that the expanded quartic loses near a thin
+    // tube. As a distance it is nearly linear along the line away from the tube, so Newton
+    // converges in a few steps from anywhere in a bracket (on D^2 - a^2 it would only halve the
+    // distance per step from afar)
     auto tube = [&](double s, double *slope) {
         Vec3 x = q + u * s;
-        double rho = std::hypot(x.x, x.y);
+        double rho = radial(x.x, x.y);
         double dr = rho - 1;
-        double h = (dr - a) * (dr + a) + x.z * x.z;
-        if (slope) *slope = 2 * (rho > 0 ? dr * (x.x * u.x + x.y * u.y) / rho : 0) + 2 * x.z * u.z;
-        return h;
+        double dist = std::sqrt(dr * dr + x.z * x.z);
+        if (slope) {
+            double dRho = rho > 0 ? (x.x * u.x + x.y * u.y) / rho : 0;
+            *slope = dist > 0 ? (dr * dRho + x.z * u.z) / dist : 0;
+        }
+        return dist - a;
     };
 
     // The quartic s^4 + P s^2 + Q s + R (no cubic term about the closest point); its
@@ -271,10 +287,12 @@ void Torus::profileCandidates(const Ray &r, double, double, std::vector<Candidat
         if (i + 1 == nb || !((value[i] < 0) != (value[i + 1] < 0)) || value[i + 1] == 0 ||
             value[i] == 0)
             continue;
-        // Safeguarded Newton: a Newton step that leaves the bracket becomes a bisection
+        // Safeguarded Newton from the secant point: a step that leaves the bracket becomes a
+        // bisection
         double lo = bracket[i], hi = bracket[i + 1];
         bool rising = value[i] < 0;
-        double s = 0.5 * (lo + hi);
+        double s = lo + value[i] / (value[i] - value[i + 1]) * (hi - lo);
+        if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
         for (int step = 0; step < kMaxRootSteps; ++step) {
             double slope, h = tube(s, &slope);
             if (h == 0) break;
@@ -284,11 +302,10 @@ void Torus::profileCandidates(const Ray &r, double, double, std::vector<Candidat
                 hi = s;
             double next = slope != 0 ? s - h / slope : lo;
             if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-            if (next == s || !(lo < next && next < hi)) {
-                s = next;
-                break;
-            }
+            if (!(lo < next && next < hi)) break;  // the bracket is down to adjacent doubles
+            bool converged = std::abs(next - s) <= kRootStepUlps * kMachineEpsilon * (1 + std::abs(s));
             s = next;
+            if (converged) break;
         }
         out.push_back({s * scale, kFirstProfileFace});
     }
@@ -297,7 +314,7 @@ void Torus::profileCandidates(const Ray &r, double, double, std::vector<Candidat
 ObjectSurface Torus::profileSurface(const Vec3 &p, int) const {
     // Move the point along the tube's radius onto the tube: c is the nearest point of the
     // tube's centre circle
-    double rho = std::hypot(p.x, p.y);
+    double rho = radial(p.x, p.y);
     Vec3 c = rho > 0 ? Vec3(p.x, p.y, 0) * (major_ / rho) : Vec3(major_, 0, 0);
     Vec3 v = p - c;
     double len = length(v);
@@ -380,7 +397,7 @@ void Lathe::profileCandidates(const Ray &r, double tLo, double tHi,
             if (r.d.z == 0) continue;
             double t = (e.z1 - r.o.z) / r.d.z;
             if (t < tLo || t > tHi) continue;
-            double rho = std::hypot(r.o.x + t * r.d.x, r.o.y + t * r.d.y);
+            double rho = radial(r.o.x + t * r.d.x, r.o.y + t * r.d.y);
             if (rho >= std::min(e.r1, e.r2) - slack && rho <= std::max(e.r1, e.r2) + slack)
                 out.push_back({t, face});
             continue;
@@ -407,7 +424,7 @@ void Lathe::profileCandidates(const Ray &r, double tLo, double tHi,
 Vec3 Lathe::edgeNormal(const Edge &e, const Vec3 &p) const {
     // (dz, -dr) in the profile plane, turned to the point's azimuth
     double nr = e.z2 - e.z1, nz = -(e.r2 - e.r1);
-    double rho = std::hypot(p.x, p.y);
+    double rho = radial(p.x, p.y);
     if (!(rho > 0)) return Vec3(0, 0, nz != 0 ? nz : 1);
     return Vec3(nr * p.x / rho, nr * p.y / rho, nz);
 }
@@ -422,7 +439,7 @@ int Lathe::orientFace(int face, const Vec3 &p, const Vec3 &d, bool entering) con
 ObjectSurface Lathe::profileSurface(const Vec3 &p, int face) const {
     int index = face - kFirstProfileFace;
     const Edge &e = edges_[index / 2];
-    double rho = std::hypot(p.x, p.y);
+    double rho = radial(p.x, p.y);
     double rr, zz;
     if (e.z1 == e.z2) {
         rr = rho;

@@ -3,6 +3,7 @@
 // polygonal profile, whole or cut to a wedge of azimuths; a line may cross them several times.
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include "core/geometry/primitive.h"
@@ -27,7 +28,7 @@ class RevolvedSolid : public Primitive {
     bool intersect(const Ray &r, PrimitiveSpan *span) const override;
     void intersectAll(const Ray &r, std::vector<PrimitiveSpan> &spans) const override;
     bool inside(const Vec3 &p) const override {
-        return insideWedge(p) && insideProfile(std::hypot(p.x, p.y), p.z);
+        return insideWedge(p) && insideProfile(std::sqrt(p.x * p.x + p.y * p.y), p.z);
     }
     ObjectSurface surface(const Vec3 &p, int face) const override;
 

@@ -11,6 +11,9 @@
 #include "core/geometry/revolved.h"
 #include "core/geometry/shape.h"
 #include "core/math/rng.h"
+#include "core/render/render_scene.h"
+#include "core/render/renderer.h"
+#include "support/scene_builder.h"
 
 namespace rt {
 namespace {
@@ -455,6 +458,33 @@ TEST(Revolved, PartialTurnsCutAtTheirEndPlanes) {
     // A torus wedge: a ray along x at y = -0.1 misses a quarter torus and hits a 359 one
     EXPECT_TRUE(spansOf(Torus(torus(1, 0.25, 90)), Ray(Vec3(-5, -0.1, 0), Vec3(1, 0, 0))).empty());
     EXPECT_EQ(spansOf(Torus(torus(1, 0.25, 359)), Ray(Vec3(-5, -0.1, 0), Vec3(1, 0, 0))).size(), 2u);
+}
+
+TEST(Revolved, TorusCutFromABoxShowsItsFarSide) {
+    // difference() { box; torus }, seen from above with flat colours: over the hole the box
+    // top (red); over the tube the line runs box top, torus (removed), torus far side, so the
+    // cut face is the torus' (green) 0.5 below the centre plane. Every line through the tube
+    // has two torus spans: CSG must take all of them
+    using namespace rt::test;
+    ir::Scene s = emptyScene();
+    int red = s.addMaterial(plainMaterial(Rgb(1, 0, 0), 1, 0));
+    int green = s.addMaterial(plainMaterial(Rgb(0, 1, 0), 1, 0));
+    s.root->children.push_back(csg(ir::NodeKind::Difference,
+                                   box(Vec3(-3, -3, -1), Vec3(3, 3, 0.25), red),
+                                   ir::Node::makePrimitive(torus(1.5, 0.5), green, {})));
+    s.camera = lookAt(Vec3(0, 0, 10), Vec3(0, 0, 0), 40, Vec3(0, 1, 0));
+    DiagnosticSink diag;
+    auto rs = RenderScene::compile(s, diag);
+    RenderOptions o;
+    o.width = o.height = 33;
+    o.threads = 2;
+    Image img = renderImage(*rs, o).image;
+    EXPECT_EQ(img.at(16, 16).r, 1);
+    // 7 pixels off centre the ray meets z = -0.5 about 1.58 from the axis: in the tube
+    for (auto [x, y] : {std::pair{9, 16}, std::pair{23, 16}, std::pair{16, 9}, std::pair{16, 23}}) {
+        EXPECT_EQ(img.at(x, y).g, 1) << x << " " << y;
+        EXPECT_EQ(img.at(x, y).r, 0) << x << " " << y;
+    }
 }
 
 TEST(Revolved, WedgeBoundsAreTight) {
