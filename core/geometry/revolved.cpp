@@ -126,7 +126,6 @@ void RevolvedSolid::intersectAll(const Ray &ray, std::vector<PrimitiveSpan> &spa
         tHi = std::min(tHi, tc + half);
     }
     if (!(tLo <= tHi)) return;
-    size_t first = spans.size();
 
     // Gather the candidates in the ray's own parameter and sort them along the line. The end
     // planes are crossed by the unshifted ray: a ray spawned off an end plane starts exactly
@@ -141,7 +140,8 @@ void RevolvedSolid::intersectAll(const Ray &ray, std::vector<PrimitiveSpan> &spa
               [](const Candidate &x, const Candidate &y) { return x.t < y.t; });
 
     // Classify each interval between neighbours at its midpoint; outside the candidates the
-    // line is outside. Equal candidates bound no interval, so they never split a span.
+    // line is outside. Equal candidates bound no interval, so they never split a span, and
+    // spans come out sorted, of positive length and apart by an interval outside.
     bool in = false;
     double t0 = 0;
     int face0 = 0;
@@ -150,8 +150,8 @@ void RevolvedSolid::intersectAll(const Ray &ray, std::vector<PrimitiveSpan> &spa
         bool midInside = inside(ray.at(0.5 * (cand[i].t + cand[i + 1].t)));
         if (midInside == in) continue;
         const Candidate &c = cand[i];
-        int face = c.face < kFirstProfileFace ? c.face
-                                              : orientFace(c.face, ray.at(c.t), ray.d, midInside);
+        int face =
+            c.face < kFirstProfileFace ? c.face : orientFace(c.face, ray.at(c.t), ray.d, midInside);
         if (midInside) {
             t0 = c.t;
             face0 = face;
@@ -162,22 +162,10 @@ void RevolvedSolid::intersectAll(const Ray &ray, std::vector<PrimitiveSpan> &spa
     }
     if (in) {
         const Candidate &c = cand.back();
-        int face = c.face < kFirstProfileFace ? c.face : orientFace(c.face, ray.at(c.t), ray.d, false);
+        int face =
+            c.face < kFirstProfileFace ? c.face : orientFace(c.face, ray.at(c.t), ray.d, false);
         spans.push_back({t0, c.t, face0, face});
     }
-    // Undoing the shift may round ends together: drop spans with no length left and join
-    // spans that now touch
-    size_t keep = first;
-    for (size_t i = first; i < spans.size(); ++i) {
-        if (!(spans[i].t0 < spans[i].t1)) continue;
-        if (keep > first && spans[keep - 1].t1 >= spans[i].t0) {
-            spans[keep - 1].t1 = spans[i].t1;
-            spans[keep - 1].face1 = spans[i].face1;
-        } else {
-            spans[keep++] = spans[i];
-        }
-    }
-    spans.resize(keep);
 }
 
 ObjectSurface RevolvedSolid::surface(const Vec3 &p, int face) const {
@@ -303,7 +291,8 @@ void Torus::profileCandidates(const Ray &r, double, double, std::vector<Candidat
             double next = slope != 0 ? s - h / slope : lo;
             if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
             if (!(lo < next && next < hi)) break;  // the bracket is down to adjacent doubles
-            bool converged = std::abs(next - s) <= kRootStepUlps * kMachineEpsilon * (1 + std::abs(s));
+            bool converged =
+                std::abs(next - s) <= kRootStepUlps * kMachineEpsilon * (1 + std::abs(s));
             s = next;
             if (converged) break;
         }

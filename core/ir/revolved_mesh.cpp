@@ -101,12 +101,13 @@ std::vector<std::array<Ref, 3>> triangulateProfile(const std::vector<ProfileOutl
                 insideOutline(outlines[h][0], outlines[k]))
                 holes.push_back(h);
         auto maxR = [&](size_t h) {
-            return std::max_element(outlines[h].begin(), outlines[h].end(),
-                                    [](const ProfilePoint &a, const ProfilePoint &b) {
-                                        return a.r < b.r;
-                                    })->r;
+            return std::max_element(
+                       outlines[h].begin(), outlines[h].end(),
+                       [](const ProfilePoint &a, const ProfilePoint &b) { return a.r < b.r; })
+                ->r;
         };
-        std::sort(holes.begin(), holes.end(), [&](size_t a, size_t b) { return maxR(a) > maxR(b); });
+        std::sort(holes.begin(), holes.end(),
+                  [&](size_t a, size_t b) { return maxR(a) > maxR(b); });
         std::vector<Ref> poly = loops[k];
         for (size_t hi = 0; hi < holes.size(); ++hi) {
             const std::vector<Ref> &hole = loops[holes[hi]];
@@ -122,7 +123,8 @@ std::vector<std::array<Ref, 3>> triangulateProfile(const std::vector<ProfileOutl
                 double dr = at(poly[i]).r - pm.r, dz = at(poly[i]).z - pm.z;
                 return dr * dr + dz * dz;
             };
-            std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return dist2(a) < dist2(b); });
+            std::sort(order.begin(), order.end(),
+                      [&](size_t a, size_t b) { return dist2(a) < dist2(b); });
             auto blocked = [&](const std::vector<Ref> &loop, const ProfilePoint &pv) {
                 for (size_t i = 0; i < loop.size(); ++i) {
                     const ProfilePoint &a = at(loop[i]), &b = at(loop[(i + 1) % loop.size()]);
@@ -135,7 +137,8 @@ std::vector<std::array<Ref, 3>> triangulateProfile(const std::vector<ProfileOutl
             for (size_t i : order) {
                 const ProfilePoint &pv = at(poly[i]);
                 bool ok = !blocked(poly, pv);
-                for (size_t hj = hi; ok && hj < holes.size(); ++hj) ok = !blocked(loops[holes[hj]], pv);
+                for (size_t hj = hi; ok && hj < holes.size(); ++hj)
+                    ok = !blocked(loops[holes[hj]], pv);
                 if (ok) {
                     bridge = i;
                     break;
@@ -242,8 +245,8 @@ Mesh openscadRevolve(const std::vector<ProfileOutline> &outlines, double angle, 
     return mesh;
 }
 
-std::vector<Vec3> openscadRevolvePoints(const std::vector<ProfileOutline> &outlines,
-                                        double angle, int fragments) {
+std::vector<Vec3> openscadRevolvePoints(const std::vector<ProfileOutline> &outlines, double angle,
+                                        int fragments) {
     return openscadRevolve(outlines, angle, fragments).positions;
 }
 

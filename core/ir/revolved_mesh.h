@@ -19,8 +19,8 @@ namespace rt::ir {
 Mesh openscadRevolve(const std::vector<ProfileOutline> &outlines, double angle, int fragments);
 
 /// The vertices openscadRevolve makes (for hull() of a solid of revolution).
-std::vector<Vec3> openscadRevolvePoints(const std::vector<ProfileOutline> &outlines,
-                                        double angle, int fragments);
+std::vector<Vec3> openscadRevolvePoints(const std::vector<ProfileOutline> &outlines, double angle,
+                                        int fragments);
 
 /// For each outline, the index of the innermost other outline around it, or -1: the
 /// even-odd region is the outlines at even depth less their children.

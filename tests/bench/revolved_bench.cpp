@@ -23,7 +23,8 @@ std::vector<Ray> rays(const Bounds3 &b) {
         double z = 2 * rng.uniform() - 1, phi = 2 * M_PI * rng.uniform();
         double s = std::sqrt(1 - z * z);
         Vec3 o = c + Vec3(s * std::cos(phi), s * std::sin(phi), z) * (2 * radius);
-        Vec3 target = c + Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) * radius * 0.5;
+        Vec3 target =
+            c + Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) * radius * 0.5;
         out.emplace_back(o, normalize(target - o));
     }
     return out;

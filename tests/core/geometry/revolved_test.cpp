@@ -85,7 +85,8 @@ Vec3 randomDirection(Rng &rng) {
 Ray randomRay(Rng &rng, const Bounds3 &b) {
     Vec3 c = b.centroid();
     double radius = length(b.diagonal());
-    Vec3 target = c + Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) * radius * 0.6;
+    Vec3 target =
+        c + Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) * radius * 0.6;
     Vec3 o = c + randomDirection(rng) * (radius * 2);
     return Ray(o, normalize(target - o));
 }
@@ -184,7 +185,8 @@ TEST(Revolved, SpawnedRaysDoNotSelfIntersect) {
                     }
                     // Entering, the ray is inside just past its origin
                     if (cosine < 0) {
-                        ASSERT_TRUE(inst.firstCrossing(spawnRay(si, w), 0, kInfinity, &next, scratch));
+                        ASSERT_TRUE(
+                            inst.firstCrossing(spawnRay(si, w), 0, kInfinity, &next, scratch));
                     }
                 }
         }
@@ -340,9 +342,10 @@ TEST(Revolved, TorusIsInvariantUnderScaling) {
             }
         }
     }
-    std::printf("torus at 1e-6 and 1e6: worst relative difference of span ends %.3g; "
-                "from 1e6 away: %.3g of the major radius\n",
-                worst, worstFar);
+    std::printf(
+        "torus at 1e-6 and 1e6: worst relative difference of span ends %.3g; "
+        "from 1e6 away: %.3g of the major radius\n",
+        worst, worstFar);
     EXPECT_LT(worst, 1e-9);
     EXPECT_LT(worstFar, 1e-8);
 }
@@ -364,10 +367,12 @@ TEST(Revolved, HornTorusThroughItsCentre) {
 TEST(Revolved, NoNanForDegenerateRays) {
     Torus t(torus(1, 0.25));
     Lathe l(lathe({rect(0, 1, 0, 1)}));
-    for (const Primitive *p : {static_cast<const Primitive *>(&t), static_cast<const Primitive *>(&l)}) {
+    for (const Primitive *p :
+         {static_cast<const Primitive *>(&t), static_cast<const Primitive *>(&l)}) {
         EXPECT_TRUE(spansOf(*p, Ray(Vec3(0, 0, 0), Vec3(0, 0, 0))).empty());
-        for (const Ray &r : {Ray(Vec3(0, 0, -5), Vec3(0, 0, 1)), Ray(Vec3(1, 0, -5), Vec3(0, 0, 1)),
-                             Ray(Vec3(-5, 0, 0), Vec3(1, 0, 0)), Ray(Vec3(-5, 0, 0.25), Vec3(1, 0, 0))})
+        for (const Ray &r :
+             {Ray(Vec3(0, 0, -5), Vec3(0, 0, 1)), Ray(Vec3(1, 0, -5), Vec3(0, 0, 1)),
+              Ray(Vec3(-5, 0, 0), Vec3(1, 0, 0)), Ray(Vec3(-5, 0, 0.25), Vec3(1, 0, 0))})
             for (const auto &s : spansOf(*p, r)) {
                 EXPECT_TRUE(std::isfinite(s.t0) && std::isfinite(s.t1));
                 EXPECT_LT(s.t0, s.t1);
@@ -457,7 +462,8 @@ TEST(Revolved, PartialTurnsCutAtTheirEndPlanes) {
     EXPECT_NEAR(h[0].t1, 4, 1e-12);
     // A torus wedge: a ray along x at y = -0.1 misses a quarter torus and hits a 359 one
     EXPECT_TRUE(spansOf(Torus(torus(1, 0.25, 90)), Ray(Vec3(-5, -0.1, 0), Vec3(1, 0, 0))).empty());
-    EXPECT_EQ(spansOf(Torus(torus(1, 0.25, 359)), Ray(Vec3(-5, -0.1, 0), Vec3(1, 0, 0))).size(), 2u);
+    EXPECT_EQ(spansOf(Torus(torus(1, 0.25, 359)), Ray(Vec3(-5, -0.1, 0), Vec3(1, 0, 0))).size(),
+              2u);
 }
 
 TEST(Revolved, TorusCutFromABoxShowsItsFarSide) {

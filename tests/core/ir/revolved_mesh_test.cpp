@@ -132,7 +132,8 @@ TEST(RevolvedMesh, FacetsModesForToriAndLathes) {
         t.minor = 0.5;
         t.fragments = fragments;
         for (int i = 0; i < 8; ++i)
-            t.facetOutline.push_back({2 + 0.5 * std::cos(i * M_PI / 4), 0.5 * std::sin(i * M_PI / 4)});
+            t.facetOutline.push_back(
+                {2 + 0.5 * std::cos(i * M_PI / 4), 0.5 * std::sin(i * M_PI / 4)});
         auto tn = Node::makePrimitive(t, mat, {});
         tn->fragments.fn = fn;
         s.root->children.push_back(std::move(tn));

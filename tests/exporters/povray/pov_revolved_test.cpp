@@ -45,8 +45,7 @@ ir::Scene revolvedScene() {
     s.root->children.push_back(
         translated(Vec3(-5, 0, 0), prim(ir::TorusPrim{1.5, 0.5, 270, {}, 0}, white)));
     s.root->children.push_back(translated(
-        Vec3(0, -5, 0),
-        prim(ir::LathePrim{{{{0, 0}, {0.5, 0}, {2, 3}, {0, 3}}}, 360, 0}, white)));
+        Vec3(0, -5, 0), prim(ir::LathePrim{{{{0, 0}, {0.5, 0}, {2, 3}, {0, 3}}}, 360, 0}, white)));
     s.root->children.push_back(
         translated(Vec3(-5, -6, 0), prim(ir::TorusPrim{1, 1, 360, {}, 0}, white)));
     s.camera = lookAt(Vec3(5, 4, 8), Vec3(-2.5, -3, 0.5), 60);
@@ -59,7 +58,10 @@ TEST(PovRevolved, TorusAndLatheAreWrittenAboutZ) {
     EXPECT_EQ(count(t, "torus { 1.5, 0.5 sturm rotate x*90 }"), 1) << t;
     EXPECT_EQ(count(t, "torus { 1, 1 sturm rotate x*90"), 1) << t;
     // Two outlines: the hole is a difference; five points close each outline
-    EXPECT_EQ(count(t, "lathe { linear_spline 5, <1, 0>, <3, 0>, <3, 2>, <1, 2>, <1, 0> rotate x*90 }"), 1) << t;
+    EXPECT_EQ(
+        count(t, "lathe { linear_spline 5, <1, 0>, <3, 0>, <3, 2>, <1, 2>, <1, 0> rotate x*90 }"),
+        1)
+        << t;
     EXPECT_EQ(count(t, "difference {"), 1) << t;
     // The quarter: two half-spaces; the three-quarter torus: their merge
     EXPECT_EQ(count(t, "intersection { plane { <0, -1, 0>, 0 } plane { <-1, 0, 0>, 0 } }"), 1) << t;

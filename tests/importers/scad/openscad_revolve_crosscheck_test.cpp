@@ -36,7 +36,9 @@ TEST(OpenScadRevolveCrossCheck, VerticesAndVolumeMatch) {
         {"rotate_extrude($fn=7) polygon([[0,0],[1.5,0],[0.5,2],[0,2]]);", {onAxis}, 360, 7},
         {"rotate_extrude(angle=200, $fn=9) difference() { translate([1,0]) square(2); "
          "translate([1.5,0.5]) square(1); }",
-         {big, hole}, 200, 5},
+         {big, hole},
+         200,
+         5},
     };
     fs::path tmp = fs::temp_directory_path() / ("scadray_revolve_" + std::to_string(getpid()));
     fs::create_directories(tmp);
