@@ -40,9 +40,22 @@ TEST(OpenScadRevolveCrossCheck, VerticesAndVolumeMatch) {
          200,
          5},
     };
+    // A torus' facet outline: OpenSCAD's 8-gon of the circle (radians, from +X), translated
+    ir::ProfileOutline circle;
+    for (int i = 0; i < 8; ++i) {
+        double phi = (M_PI * 2 * i) / 8;
+        circle.push_back({0.5 * std::cos(phi) + 2, 0.5 * std::sin(phi)});
+    }
+    const RevolveCase tori[] = {
+        {"rotate_extrude($fn=8) translate([2,0]) circle(0.5, $fn=8);", {circle}, 360, 8},
+        {"rotate_extrude(angle=135, $fn=8) translate([2,0]) circle(0.5, $fn=8);", {circle}, 135,
+         3},
+    };
     fs::path tmp = fs::temp_directory_path() / ("scadray_revolve_" + std::to_string(getpid()));
     fs::create_directories(tmp);
-    for (const RevolveCase &c : cases) {
+    std::vector<RevolveCase> all(std::begin(cases), std::end(cases));
+    all.insert(all.end(), std::begin(tori), std::end(tori));
+    for (const RevolveCase &c : all) {
         SCOPED_TRACE(c.src);
         ir::Mesh ours = ir::openscadRevolve(c.outlines, c.angle, c.fragments);
         ir::Mesh theirs = openscadOff(c.src, tmp);
