@@ -347,12 +347,55 @@ Lathe::Lathe(const ir::LathePrim &prim)
             double slope = a.z != b.z ? (b.r - a.r) / (b.z - a.z) : 0;
             edges_.push_back({a.r, a.z, b.r, b.z, slope});
         }
+    // Slabs between the vertex heights: every edge spans whole slabs
+    for (const Edge &e : edges_) {
+        slabZ_.push_back(e.z1);
+        slabZ_.push_back(e.z2);
+    }
+    std::sort(slabZ_.begin(), slabZ_.end());
+    slabZ_.erase(std::unique(slabZ_.begin(), slabZ_.end()), slabZ_.end());
+    auto slabOf = [&](double z) {
+        return static_cast<size_t>(std::lower_bound(slabZ_.begin(), slabZ_.end(), z) - slabZ_.begin());
+    };
+    size_t slabs = slabZ_.empty() ? 0 : slabZ_.size() - 1, entries = 0;
+    std::vector<uint32_t> count(slabs + 1, 0);
+    for (const Edge &e : edges_) {
+        if (e.z1 == e.z2) continue;
+        size_t lo = slabOf(std::min(e.z1, e.z2)), hi = slabOf(std::max(e.z1, e.z2));
+        for (size_t k = lo; k < hi; ++k) ++count[k];
+        entries += hi - lo;
+    }
+    if (entries > kMaxSlabEntries) {
+        slabZ_.clear();
+        return;
+    }
+    slabStart_.assign(slabs + 1, 0);
+    for (size_t k = 0; k < slabs; ++k) slabStart_[k + 1] = slabStart_[k] + count[k];
+    slabEdges_.resize(entries);
+    std::vector<uint32_t> fill(slabStart_.begin(), slabStart_.end() - 1);
+    for (size_t i = 0; i < edges_.size(); ++i) {
+        const Edge &e = edges_[i];
+        if (e.z1 == e.z2) continue;
+        size_t lo = slabOf(std::min(e.z1, e.z2)), hi = slabOf(std::max(e.z1, e.z2));
+        for (size_t k = lo; k < hi; ++k) slabEdges_[fill[k]++] = static_cast<uint32_t>(i);
+    }
 }
 
 bool Lathe::insideProfile(double r, double z) const {
     // Even-odd crossing count of the horizontal half-line from (r, z) towards +r; an edge
     // counts when it spans z half-open, so a vertex at height z counts once
     bool in = false;
+    if (!slabZ_.empty()) {
+        // Only the edges of the slab [z_k, z_k+1) holding z span it, and all of them do
+        auto above = std::upper_bound(slabZ_.begin(), slabZ_.end(), z);
+        if (above == slabZ_.begin() || above == slabZ_.end()) return false;
+        size_t k = static_cast<size_t>(above - slabZ_.begin()) - 1;
+        for (uint32_t i = slabStart_[k]; i < slabStart_[k + 1]; ++i) {
+            const Edge &e = edges_[slabEdges_[i]];
+            if (r < e.r1 + (z - e.z1) * e.slope) in = !in;
+        }
+        return in;
+    }
     for (const Edge &e : edges_) {
         if ((e.z1 > z) == (e.z2 > z)) continue;
         double rc = e.r1 + (z - e.z1) * e.slope;
@@ -377,9 +420,15 @@ void Lathe::profileCandidates(const Ray &r, double tLo, double tHi,
     }
     zLine0 -= slack;
     zLine1 += slack;
+    // Nor can edges nearer the axis than the line ever comes
+    double rhoLine = axy > 0 ? radial(r.o.x - bxy / axy * r.d.x, r.o.y - bxy / axy * r.d.y)
+                             : radial(r.o.x, r.o.y);
+    rhoLine -= slack;
     for (size_t i = 0; i < edges_.size(); ++i) {
         const Edge &e = edges_[i];
-        if (std::max(e.z1, e.z2) < zLine0 || std::min(e.z1, e.z2) > zLine1) continue;
+        if (std::max(e.z1, e.z2) < zLine0 || std::min(e.z1, e.z2) > zLine1 ||
+            std::max(e.r1, e.r2) < rhoLine)
+            continue;
         int face = kFirstProfileFace + 2 * static_cast<int>(i);
         if (e.z1 == e.z2) {
             // Annulus: the plane z = z1 between the two radii

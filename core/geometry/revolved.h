@@ -121,6 +121,15 @@ class Lathe final : public RevolvedSolid {
     Vec3 edgeNormal(const Edge &e, const Vec3 &p) const;
 
     std::vector<Edge> edges_;
+    /// The heights of the profile's vertices, sorted and unique, and for the slab between
+    /// neighbours k and k + 1 the edges spanning it (slabEdges_[slabStart_[k] ..
+    /// slabStart_[k + 1]]): the inside test reads only the edges at its height. Empty (every
+    /// edge is read) for zig-zag profiles whose table would grow past kMaxSlabEntries.
+    std::vector<double> slabZ_;
+    std::vector<uint32_t> slabStart_, slabEdges_;
 };
+
+/// Largest edge-per-slab table a lathe keeps for its inside test (4 bytes each).
+constexpr size_t kMaxSlabEntries = 1 << 22;
 
 }  // namespace rt

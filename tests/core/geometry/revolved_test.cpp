@@ -433,6 +433,39 @@ TEST(Revolved, LatheMatchesTheConeItRevolves) {
     }
 }
 
+TEST(Revolved, LatheInsideIsTheEvenOddRuleAtEveryHeight) {
+    // A star with 40 points and a hole (its height table has many slabs, several edges each)
+    // against a plain even-odd count over every edge, including heights of vertices
+    Rng rng(21);
+    ir::ProfileOutline star, hole = rect(2.8, 3.2, -0.2, 0.2);
+    for (int i = 0; i < 40; ++i) {
+        double phi = 2 * M_PI * i / 40, rad = i % 2 ? 1 : 2.5;
+        star.push_back({3 + rad * std::cos(phi), rad * std::sin(phi)});
+    }
+    std::vector<ir::ProfileOutline> outlines = {star, hole};
+    Lathe l(lathe(outlines));
+    auto evenOdd = [&](double r, double z) {
+        bool in = false;
+        for (const auto &o : outlines)
+            for (size_t i = 0; i < o.size(); ++i) {
+                const ir::ProfilePoint &a = o[i], &b = o[(i + 1) % o.size()];
+                if ((a.z > z) == (b.z > z)) continue;
+                if (r < a.r + (z - a.z) * (b.r - a.r) / (b.z - a.z)) in = !in;
+            }
+        return in;
+    };
+    int in = 0;
+    for (int i = 0; i < 20000; ++i) {
+        double r = 6 * rng.uniform(), z = i % 10 ? 6 * rng.uniform() - 3 : star[i / 10 % 40].z;
+        double phi = 2 * M_PI * rng.uniform();
+        bool want = evenOdd(r, z);
+        in += want;
+        ASSERT_EQ(l.inside(Vec3(r * std::cos(phi), r * std::sin(phi), z)), want)
+            << r << " " << z;
+    }
+    EXPECT_GT(in, 2000);
+}
+
 TEST(Revolved, PartialTurnsCutAtTheirEndPlanes) {
     Lathe l90(lathe({rect(1, 2, 0, 1)}, 90));
     // y = 0.5 inside the quarter: entry through r = 1, exit through r = 2
