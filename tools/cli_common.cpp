@@ -58,8 +58,9 @@ void SceneArgs::addTo(CLI::App &cmd) {
     cmd.add_option("-D,--define", defines, "Override a top-level variable: name=value");
     cmd.add_option("-L,--library", libraries, "Extra folder searched by include<> and use<>");
     cmd.add_option("--facets", facets,
-                   "Spheres and cylinders: smooth (exactly round), openscad (OpenSCAD's $fn/$fa/$fs "
-                   "polygons) or auto (polygons where $fn gives at most " +
+                   "Spheres, cylinders and rotate_extrude solids: smooth (exactly round), "
+                   "openscad (OpenSCAD's $fn/$fa/$fs polygons) or auto (polygons where $fn "
+                   "gives at most " +
                        std::to_string(ir::kAutoFacetMaxFragments) + " fragments)")
         ->check(CLI::IsMember({"smooth", "openscad", "auto"}));
     cmd.add_option("--max-steps", maxSteps,

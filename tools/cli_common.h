@@ -29,7 +29,7 @@ struct LoadOptions {
     std::vector<std::string> libraryPaths;
     std::vector<std::pair<std::string, std::string>> defines;
     bool quiet = false;  ///< no progress line while a long .scad evaluates
-    /// How spheres and cylinders are drawn (`--facets`).
+    /// How spheres, cylinders, tori and lathes are drawn (`--facets`).
     ir::FacetMode facets = ir::FacetMode::Auto;
     int64_t maxSteps = scad::kDefaultMaxSteps;  ///< .scad evaluation step cap; 0 = none
 };

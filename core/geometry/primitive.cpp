@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/geometry/revolved.h"
 #include "core/geometry/triangle_mesh.h"
 #include "core/math/float_util.h"
 #include "core/math/quadratic.h"
@@ -20,7 +21,14 @@ std::unique_ptr<Primitive> Primitive::create(const ir::PrimShape &shape) {
         return std::make_unique<Cone>(c->z0, c->z1, c->r1, c->r2);
     if (const auto *p = std::get_if<ir::PolytopePrim>(&shape))
         return std::make_unique<ConvexPolytope>(*p);
+    if (const auto *t = std::get_if<ir::TorusPrim>(&shape)) return std::make_unique<Torus>(*t);
+    if (const auto *l = std::get_if<ir::LathePrim>(&shape)) return std::make_unique<Lathe>(*l);
     throw std::logic_error("Primitive::create: meshes are MeshInstances, not primitives");
+}
+
+void Primitive::intersectAll(const Ray &objectRay, std::vector<PrimitiveSpan> &spans) const {
+    PrimitiveSpan s;
+    if (intersect(objectRay, &s)) spans.push_back(s);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Analytic convex primitives in object space: each returns the one span of the whole ray line
-// inside it, its inside test, and surface data for a crossing.
+// Analytic primitives in object space: each returns the spans of the whole ray line inside it
+// (one for the convex ones), its inside test, and surface data for a crossing.
 #pragma once
 
 #include <memory>
@@ -15,7 +15,7 @@ namespace rt {
 
 class TriangleMesh;
 
-/// Object-space result of intersecting the ray line with a convex solid.
+/// Object-space interval of the ray line inside a solid, with the face crossed at each end.
 struct PrimitiveSpan {
     double t0 = 0, t1 = 0;
     int face0 = 0, face1 = 0;
@@ -33,8 +33,14 @@ class Primitive {
 
     virtual Bounds3 objectBounds() const = 0;
     /// Span of the whole line o + t d inside the solid, t over all reals. False when the line
-    /// misses the solid or only touches it (zero-length spans are dropped).
+    /// misses the solid or only touches it (zero-length spans are dropped). A solid that is
+    /// not convex gives the span from its first entry to its last exit (see intersectAll).
     virtual bool intersect(const Ray &objectRay, PrimitiveSpan *span) const = 0;
+    /// Whether every line meets the solid in one span at most, so intersect() says it all.
+    virtual bool convex() const { return true; }
+    /// Appends the spans of the whole line inside the solid to `spans`: sorted, disjoint, not
+    /// touching, of positive length. The default appends intersect()'s one span.
+    virtual void intersectAll(const Ray &objectRay, std::vector<PrimitiveSpan> &spans) const;
     /// Point-in-solid test, boundary included.
     virtual bool inside(const Vec3 &p) const = 0;
     /// Refines a point near the surface of the given face onto it and returns the outward normal.

@@ -60,7 +60,8 @@ PrimitiveInstance::PrimitiveInstance(std::unique_ptr<Primitive> prim,
     : LeafShape(material),
       prim_(std::move(prim)),
       placement_(worldFromObject),
-      bounds_(placement_.worldBounds(prim_->objectBounds())) {}
+      bounds_(placement_.worldBounds(prim_->objectBounds())),
+      convex_(prim_->convex()) {}
 
 bool PrimitiveInstance::lineSpan(const Ray &worldRay, Span *span) const {
     PrimitiveSpan ps;
@@ -70,13 +71,43 @@ bool PrimitiveInstance::lineSpan(const Ray &worldRay, Span *span) const {
     return true;
 }
 
+const std::vector<PrimitiveSpan> &PrimitiveInstance::allSpans(const Ray &worldRay) const {
+    // One buffer per thread serves every instance: its spans are copied out before the next
+    // call, and it keeps its capacity, so the hot path does not allocate
+    thread_local std::vector<PrimitiveSpan> spans;
+    spans.clear();
+    prim_->intersectAll(placement_.toObject(worldRay), spans);
+    return spans;
+}
+
 void PrimitiveInstance::lineSpans(const Ray &worldRay, SpanList &out) const {
+    if (!convex_) {
+        for (const PrimitiveSpan &ps : allSpans(worldRay))
+            out.push_back({{ps.t0, this, ps.face0}, {ps.t1, this, ps.face1}});
+        return;
+    }
     Span s;
     if (lineSpan(worldRay, &s)) out.push_back(s);
 }
 
 bool PrimitiveInstance::firstCrossing(const Ray &ray, double tMin, double tMax, Crossing *c,
                                       SpanScratch &) const {
+    if (!convex_) {
+        // The first span end beyond tMin
+        for (const PrimitiveSpan &ps : allSpans(ray)) {
+            if (ps.t0 >= tMax) return false;
+            if (ps.t0 > tMin) {
+                *c = {ps.t0, this, ps.face0};
+                return true;
+            }
+            if (ps.t1 > tMin) {
+                if (ps.t1 >= tMax) return false;
+                *c = {ps.t1, this, ps.face1};
+                return true;
+            }
+        }
+        return false;
+    }
     Span s;
     if (!lineSpan(ray, &s)) return false;
     if (s.in.t > tMin) {

@@ -131,13 +131,19 @@ class PrimitiveInstance final : public LeafShape {
     bool inside(const Vec3 &p) const override;
     SurfaceInteraction surfaceAt(const Ray &worldRay, const Crossing &c) const override;
 
-    /// The span of the whole world line inside this primitive.
+    /// The span of the whole world line inside this primitive; for one that is not convex,
+    /// from its first entry to its last exit.
     bool lineSpan(const Ray &worldRay, Span *span) const;
 
   private:
+    /// The primitive's spans of the world line, in a per-thread buffer (no allocation per ray
+    /// once it has grown), for primitives that are not convex.
+    const std::vector<PrimitiveSpan> &allSpans(const Ray &worldRay) const;
+
     std::unique_ptr<Primitive> prim_;
     Placement placement_;
     Bounds3 bounds_;
+    bool convex_;
 };
 
 }  // namespace rt

@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: MIT
 // OpenSCAD 2021.01's tessellation of spheres, cylinders and cones (primitives.cc,
-// calc.cc), and the pass that swaps them in for the analytic primitives.
+// calc.cc), and the pass that swaps them (and rotate_extrude's solids) in for the analytic
+// primitives.
 #include "core/ir/facets.h"
 
 #include <algorithm>
 #include <cmath>
 
+#include "core/ir/revolved_mesh.h"
 #include "core/ir/scene_ir.h"
 
 namespace rt::ir {
@@ -161,8 +163,8 @@ bool drawsFaceted(FacetMode mode, const Fragments &f, int fragments) {
 std::string FacetStats::describe() const {
     std::string s = std::string(facetModeName(mode)) + ": ";
     switch (mode) {
-        case FacetMode::Smooth: s += "every sphere and cylinder exactly round"; break;
-        case FacetMode::OpenScad: s += "spheres and cylinders as OpenSCAD tessellates them"; break;
+        case FacetMode::Smooth: s += "every round solid exactly round"; break;
+        case FacetMode::OpenScad: s += "round solids as OpenSCAD tessellates them"; break;
         case FacetMode::Auto:
             s += "OpenSCAD's polygons where $fn gives at most " +
                  std::to_string(kAutoFacetMaxFragments) + " fragments, round otherwise";
@@ -174,9 +176,45 @@ std::string FacetStats::describe() const {
 
 namespace {
 
-void facetNode(Node &n, FacetMode mode, FacetStats &stats, DiagnosticSink &diag) {
-    for (auto &c : n.children) facetNode(*c, mode, stats, diag);
+/// A solid of revolution drawn as OpenSCAD's rotate_extrude mesh, added to the scene.
+bool facetRevolved(Node &n, Scene &scene, FacetMode mode, FacetStats &stats,
+                   DiagnosticSink &diag) {
+    const auto *lathe = std::get_if<LathePrim>(&n.shape);
+    const auto *torus = std::get_if<TorusPrim>(&n.shape);
+    if (!lathe && !torus) return false;
+    int fragments = lathe ? lathe->fragments : torus->fragments;
+    // The importer gives the fragment count; without it there is no OpenSCAD polygon to draw
+    if (fragments <= 0 || !drawsFaceted(mode, n.fragments, fragments)) {
+        ++stats.smooth;
+        return true;
+    }
+    std::vector<ProfileOutline> torusOutline;
+    if (torus) torusOutline.push_back(torus->facetOutline);
+    const std::vector<ProfileOutline> &outlines = lathe ? lathe->outlines : torusOutline;
+    double angle = lathe ? lathe->angle : torus->angle;
+    size_t points = 0;
+    for (const auto &o : outlines) points += o.size();
+    size_t faces = 2 * points * static_cast<size_t>(fragments);
+    if (faces > kMaxPolytopeFaces) {
+        diag.warning(n.loc, std::to_string(fragments) + " fragments would make " +
+                                std::to_string(faces) + " faces (more than " +
+                                std::to_string(kMaxPolytopeFaces) + "); drawn round");
+        ++stats.smooth;
+        return true;
+    }
+    auto mesh = std::make_shared<Mesh>(openscadRevolve(outlines, angle, fragments));
+    mesh->name = lathe ? "rotate_extrude" : "rotate_extrude (circle)";
+    mesh->loc = n.loc;
+    scene.meshes.push_back(mesh);
+    n.shape = MeshPrim{static_cast<int>(scene.meshes.size()) - 1};
+    ++stats.faceted;
+    return true;
+}
+
+void facetNode(Node &n, Scene &scene, FacetMode mode, FacetStats &stats, DiagnosticSink &diag) {
+    for (auto &c : n.children) facetNode(*c, scene, mode, stats, diag);
     if (n.kind != NodeKind::Primitive) return;
+    if (facetRevolved(n, scene, mode, stats, diag)) return;
     const auto *sphere = std::get_if<SpherePrim>(&n.shape);
     const auto *cyl = std::get_if<CylinderPrim>(&n.shape);
     if (!sphere && !cyl) return;
@@ -205,7 +243,7 @@ void facetNode(Node &n, FacetMode mode, FacetStats &stats, DiagnosticSink &diag)
 void applyFacets(Scene &scene, FacetMode mode, DiagnosticSink &diag) {
     FacetStats stats;
     stats.mode = mode;
-    facetNode(*scene.root, mode, stats, diag);
+    facetNode(*scene.root, scene, mode, stats, diag);
     scene.stats.facets = stats;
 }
 

@@ -68,13 +68,15 @@ bool drawsFaceted(FacetMode mode, const Fragments &f, int fragments);
 /// What the pass did, for the render plan.
 struct FacetStats {
     FacetMode mode = FacetMode::Auto;
-    int faceted = 0;  ///< spheres and cylinders drawn as OpenSCAD's polytopes
-    int smooth = 0;   ///< spheres and cylinders drawn round
+    int faceted = 0;  ///< spheres, cylinders, tori and lathes drawn as OpenSCAD's polygons
+    int smooth = 0;   ///< the same drawn round
     std::string describe() const;
 };
 
 /// Replaces the spheres and cylinders of `scene` that `mode` draws faceted by OpenSCAD's
-/// polytopes, and records the counts in scene.stats.facets.
+/// polytopes, and its tori and lathes (rotate_extrude) by OpenSCAD's meshes added to
+/// scene.meshes; records the counts in scene.stats.facets. A torus or lathe is faceted with
+/// its own `fragments` (never when 0); `auto` asks for $fn at the rotate_extrude.
 void applyFacets(Scene &scene, FacetMode mode, DiagnosticSink &diag);
 
 }  // namespace rt::ir

@@ -12,6 +12,7 @@
 #include <unordered_map>
 
 #include "core/ir/facets.h"
+#include "core/ir/revolved_mesh.h"
 #include "core/ir/scene_ir.h"
 
 namespace rt::ir {
@@ -398,8 +399,18 @@ std::optional<PolytopePrim> roundPolytope(const Node &n) {
     return std::nullopt;
 }
 
+/// The vertices of OpenSCAD's rotate_extrude mesh of a torus or lathe, or none.
+std::optional<std::vector<Vec3>> revolvedPoints(const Node &n) {
+    if (const auto *l = std::get_if<LathePrim>(&n.shape))
+        return openscadRevolvePoints(l->outlines, l->angle, l->fragments);
+    if (const auto *t = std::get_if<TorusPrim>(&n.shape))
+        return openscadRevolvePoints({t->facetOutline}, t->angle, t->fragments);
+    return std::nullopt;
+}
+
 /// How many points a primitive contributes (computed without making them).
 size_t primitivePointCount(const Node &n, const Scene &scene) {
+    if (auto pts = revolvedPoints(n)) return pts->size();
     if (std::holds_alternative<BoxPrim>(n.shape)) return 8;
     if (const auto *s = std::get_if<SpherePrim>(&n.shape)) {
         size_t f = static_cast<size_t>(openscadFragments(s->radius, n.fragments));
@@ -422,6 +433,7 @@ std::vector<Vec3> primitivePoints(const Node &n, const Scene &scene) {
         return corners;
     }
     if (auto round = roundPolytope(n)) return std::move(round->vertices);
+    if (auto pts = revolvedPoints(n)) return std::move(*pts);
     if (const auto *m = std::get_if<MeshPrim>(&n.shape)) {
         // The corners of its triangles: OpenSCAD builds a polyhedron from its faces only
         if (m->mesh < 0 || m->mesh >= static_cast<int>(scene.meshes.size())) return {};
@@ -441,7 +453,10 @@ std::vector<Vec3> primitivePoints(const Node &n, const Scene &scene) {
 /// under transforms, or an intersection of such.
 bool isConvexSolid(const Node &n) {
     switch (n.kind) {
-        case NodeKind::Primitive: return !std::holds_alternative<MeshPrim>(n.shape);
+        case NodeKind::Primitive:
+            return !std::holds_alternative<MeshPrim>(n.shape) &&
+                   !std::holds_alternative<LathePrim>(n.shape) &&
+                   !std::holds_alternative<TorusPrim>(n.shape);
         case NodeKind::Intersection:
             return std::all_of(n.children.begin(), n.children.end(),
                                [](const NodePtr &c) { return isConvexSolid(*c); });
@@ -507,7 +522,7 @@ void markMaybeInside(const Node &n, const Mat4 &parentFromNode, const std::vecto
                 return dot(pl.normal, local[i]) - pl.offset <= tol;
             });
         } else {
-            // Boxes exactly; meshes by their bounds
+            // Boxes exactly; meshes, tori and lathes by their bounds
             inside = true;
             for (int a = 0; a < 3; ++a)
                 inside = inside && local[i][a] >= box.min[a] - tol && local[i][a] <= box.max[a] + tol;

@@ -51,7 +51,8 @@ constexpr size_t kMaxHullPoints = 20'000'000;
 
 /// The points whose convex hull is OpenSCAD's hull() of the subtree `node`, in the
 /// coordinates of node's parent: cube corners; spheres, cylinders and cones as OpenSCAD
-/// tessellates them (from the node's $fn/$fa/$fs, whatever the --facets mode); polyhedron and
+/// tessellates them (from the node's $fn/$fa/$fs, whatever the --facets mode); tori and
+/// lathes as OpenSCAD's rotate_extrude mesh (from their `fragments`); polyhedron and
 /// mesh vertices; polytope vertices. Unions are exact. An intersection of convex operands is
 /// clipped exactly; a difference is exact when the subtracted parts miss every vertex of the
 /// first operand's hull. Other cases are approximated with a warning at the CSG node. Returns

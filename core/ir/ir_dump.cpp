@@ -42,6 +42,14 @@ std::string matrix(const Mat4 &m) {
     return s + "]";
 }
 
+/// A profile outline as [[r, z] ...].
+std::string outline(const ProfileOutline &o) {
+    std::string s = "[";
+    for (size_t i = 0; i < o.size(); ++i)
+        s += (i ? " [" : "[") + formatNumber(o[i].r) + ", " + formatNumber(o[i].z) + "]";
+    return s + "]";
+}
+
 void dumpNode(const Node &n, int indent, std::ostringstream &os) {
     os << std::string(2 * indent, ' ');
     switch (n.kind) {
@@ -64,6 +72,18 @@ void dumpNode(const Node &n, int indent, std::ostringstream &os) {
                         os << (j ? " " : "") << p->faces[i][j];
                     os << "]";
                 }
+                os << "]";
+            }
+            else if (const auto *t = std::get_if<TorusPrim>(&n.shape)) {
+                os << "torus major " << formatNumber(t->major) << " minor "
+                   << formatNumber(t->minor) << " angle " << formatNumber(t->angle)
+                   << " fragments " << t->fragments << " outline " << outline(t->facetOutline);
+            }
+            else if (const auto *l = std::get_if<LathePrim>(&n.shape)) {
+                os << "lathe angle " << formatNumber(l->angle) << " fragments " << l->fragments
+                   << " outlines [";
+                for (size_t i = 0; i < l->outlines.size(); ++i)
+                    os << (i ? " " : "") << outline(l->outlines[i]);
                 os << "]";
             }
             else {

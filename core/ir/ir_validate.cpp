@@ -25,6 +25,45 @@ bool inRange(const Vec3 &p) {
            std::abs(p.z) <= kMaxCoordinate;
 }
 
+/// A turn of a solid of revolution: 0 < angle <= 360 degrees.
+void checkTurn(const Node &node, double angle) {
+    if (!(angle > 0 && angle <= 360))
+        throw SceneError(node.loc, "rotate_extrude angle " + number(angle) +
+                                       " is not in (0, 360] degrees (internal error)");
+}
+
+/// The parameters of tori and lathes, which the importer must have checked.
+void checkRevolved(const Node &node) {
+    if (const auto *t = std::get_if<TorusPrim>(&node.shape)) {
+        if (!std::isfinite(t->major) || !std::isfinite(t->minor) || !(t->minor > 0) ||
+            t->major < t->minor)
+            throw SceneError(node.loc, "torus needs finite radii with major >= minor > 0, not " +
+                                           number(t->major) + " and " + number(t->minor) +
+                                           " (internal error)");
+        checkTurn(node, t->angle);
+        for (const ProfilePoint &p : t->facetOutline)
+            if (!std::isfinite(p.r) || !std::isfinite(p.z) || p.r < 0)
+                throw SceneError(node.loc, "torus outline has a point with r < 0 or not finite "
+                                           "(internal error)");
+    }
+    if (const auto *l = std::get_if<LathePrim>(&node.shape)) {
+        checkTurn(node, l->angle);
+        if (l->outlines.empty())
+            throw SceneError(node.loc, "rotate_extrude has no outline (internal error)");
+        for (const ProfileOutline &o : l->outlines) {
+            if (o.size() < 3)
+                throw SceneError(node.loc, "rotate_extrude outline has " +
+                                               std::to_string(o.size()) +
+                                               " points, fewer than 3 (internal error)");
+            for (const ProfilePoint &p : o)
+                if (!std::isfinite(p.r) || !std::isfinite(p.z) || p.r < 0)
+                    throw SceneError(node.loc, "rotate_extrude outline point [" + number(p.r) +
+                                                   ", " + number(p.z) +
+                                                   "] has r < 0 or is not finite (internal error)");
+        }
+    }
+}
+
 /// Walks the tree with composed transforms and checks every primitive's world bounds.
 void checkNode(const Scene &scene, const Node &node, const Mat4 &m, int *primitives) {
     // An importer must resolve its 2D placeholders (extrude them or draw them as plates)
@@ -40,6 +79,7 @@ void checkNode(const Scene &scene, const Node &node, const Mat4 &m, int *primiti
             if (mp->mesh < 0 || mp->mesh >= static_cast<int>(scene.meshes.size()) || !scene.meshes[mp->mesh])
                 throw SceneError(node.loc, "mesh reference " + std::to_string(mp->mesh) +
                                                " is not in the scene (internal error)");
+        checkRevolved(node);
         if (node.material < 0 || node.material >= static_cast<int>(scene.materials.size()))
             throw SceneError(node.loc, "primitive has no valid material (internal error)");
         Bounds3 b = Transform(here, Mat4()).bounds(primitiveBounds(node.shape, &scene));

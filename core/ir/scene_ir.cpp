@@ -110,6 +110,22 @@ Bounds3 primitiveBounds(const PrimShape &shape, const Scene *scene) {
         for (const Vec3 &v : p->vertices) bounds = unionBounds(bounds, v);
         return bounds;
     }
+    if (const auto *t = std::get_if<TorusPrim>(&shape)) {
+        // The whole turn's bounds, also for a partial turn (safe, and what the POV-Ray writer
+        // and CSG culling need; the render primitive bounds its wedge tightly)
+        double r = t->major + t->minor;
+        return Bounds3(Vec3(-r, -r, -t->minor), Vec3(r, r, t->minor));
+    }
+    if (const auto *l = std::get_if<LathePrim>(&shape)) {
+        // The whole turn's bounds, also for a partial turn (as for the torus)
+        Bounds3 bounds;
+        for (const auto &o : l->outlines)
+            for (const ProfilePoint &p : o) {
+                bounds = unionBounds(bounds, Vec3(p.r, p.r, p.z));
+                bounds = unionBounds(bounds, Vec3(-p.r, -p.r, p.z));
+            }
+        return bounds;
+    }
     const auto &c = std::get<CylinderPrim>(shape);
     double r = std::max(c.r1, c.r2);
     return Bounds3(Vec3(-r, -r, c.z0), Vec3(r, r, c.z1));

@@ -11,6 +11,8 @@
 #include <stdexcept>
 
 #include "core/image/image_io.h"
+#include "core/ir/revolved_mesh.h"
+#include "core/math/degree_trig.h"
 #include "exporters/povray/pov_format.h"
 
 namespace rt::pov {
@@ -26,6 +28,79 @@ std::string where(const SourceLoc &loc) {
 }
 
 std::string materialName(int index) { return "Material_" + std::to_string(index); }
+
+/// POV-Ray's lathe revolves points <r, y> about its y axis; `rotate x*90` turns y into +Z,
+/// scadray's axis. A closed outline repeats its first point.
+std::string lathe(const ir::ProfileOutline &o) {
+    std::string s = "lathe { linear_spline " + std::to_string(o.size() + 1);
+    for (size_t i = 0; i <= o.size(); ++i) {
+        const ir::ProfilePoint &p = o[i % o.size()];
+        s += ", <" + num(p.r) + ", " + num(p.z) + ">";
+    }
+    return s + " rotate x*90 }";
+}
+
+/// The even-odd region of outline k and those nested in it: POV-Ray's lathe takes one closed
+/// spline (its inside test counts the crossings of every segment, so a second outline would
+/// need a visible bridge), hence each outline is a lathe and each hole a difference.
+std::string latheRegion(const std::vector<ir::ProfileOutline> &outlines,
+                        const std::vector<int> &parents, int k, const std::string &pad) {
+    std::string s = lathe(outlines[k]);
+    std::string children;
+    for (size_t h = 0; h < outlines.size(); ++h)
+        if (parents[h] == k)
+            children += "\n" + pad + "    " +
+                        latheRegion(outlines, parents, static_cast<int>(h), pad + "    ");
+    if (children.empty()) return s;
+    return "difference {\n" + pad + "    " + s + children + "\n" + pad + "}";
+}
+
+/// An open solid of revolution for the writer to close: a torus or lathe about +Z, cut to
+/// azimuths [0, angle] by planes through the axis when the turn is partial.
+std::string revolvedShape(const ir::PrimShape &shape, const std::string &pad) {
+    const auto *t = std::get_if<ir::TorusPrim>(&shape);
+    const auto *l = std::get_if<ir::LathePrim>(&shape);
+    double angle = t ? t->angle : l->angle;
+    bool full = angle >= 360;
+    std::string inner = full ? pad : pad + "    ";
+    std::string solid;
+    if (t) {
+        // POV-Ray's torus lies in its x-z plane about y; sturm: the accurate quartic solver,
+        // which thin tori need
+        solid = "torus { " + num(t->major) + ", " + num(t->minor) + " sturm rotate x*90";
+        if (!full) solid += " }";
+    } else {
+        std::vector<int> parents = ir::profileParents(l->outlines);
+        std::vector<std::string> regions;
+        for (size_t k = 0; k < l->outlines.size(); ++k)
+            if (parents[k] < 0)
+                regions.push_back(latheRegion(l->outlines, parents, static_cast<int>(k), inner));
+        if (regions.size() == 1) {
+            solid = regions[0];
+        } else {
+            // Disjoint outer outlines: merge, so no face shows inside a transparent solid
+            solid = "merge {";
+            for (const auto &r : regions) solid += "\n" + inner + "    " + r;
+            solid += "\n" + inner + "}";
+        }
+        // Left open for the texture and the placement
+        if (full) solid.pop_back();
+    }
+    if (full) return solid;
+    // The wedge of azimuths [0, angle]: y >= 0 and clockwise of the end direction; past a
+    // half turn the union of the two half-spaces (merge, so neither plane shows inside the
+    // other), at exactly a half turn the one plane
+    Vec3 endNormal(-sinDegrees(angle), cosDegrees(angle), 0);
+    std::string start = "plane { <0, -1, 0>, 0 }", end = "plane { " + vec(endNormal) + ", 0 }";
+    std::string wedge;
+    if (angle == 180)
+        wedge = start;
+    else if (angle < 180)
+        wedge = "intersection { " + start + " " + end + " }";
+    else
+        wedge = "merge { " + start + " " + end + " }";
+    return "intersection {\n" + inner + solid + "\n" + inner + wedge + "\n" + pad;
+}
 
 /// A node that CSG treats as its only child: groups, unions and transforms of one child.
 bool passesThrough(const ir::Node &n) {
@@ -348,6 +423,10 @@ class Writer {
                 for (const auto &pl : ir::polytopePlanes(*p))
                     shape += "\n" + pad + "plane { " + vec(pl.normal) + ", " + num(pl.offset) + " }";
                 shape += "\n" + pad;
+            }
+            else if (std::holds_alternative<ir::TorusPrim>(cur->shape) ||
+                     std::holds_alternative<ir::LathePrim>(cur->shape)) {
+                shape = revolvedShape(cur->shape, std::string(4 * (indent + 1), ' '));
             }
             else {
                 const auto &c = std::get<ir::CylinderPrim>(cur->shape);
