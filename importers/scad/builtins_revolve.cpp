@@ -175,8 +175,9 @@ ir::NodePtr Evaluator::revolveShape(const Shape2d &s, const RevolveSpec &spec,
         ir::LathePrim l;
         l.angle = angle;
         l.fragments = segments;
+        // Repeated points and straight corners dropped, as OpenSCAD's Clipper pass does
         for (const Outline &o : outlines) {
-            Outline c = clipToPositiveX(o);
+            Outline c = cleanOutline(clipToPositiveX(o));
             if (c.size() >= 3 && twiceSignedArea(c) != 0) l.outlines.push_back(toProfile(c));
         }
         if (l.outlines.empty()) return nullptr;
