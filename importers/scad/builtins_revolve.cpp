@@ -73,7 +73,15 @@ ir::NodePtr Evaluator::moduleRotateExtrude(const ModuleInstantiation &inst, cons
         for (const Outline &o : polygons.outlines)
             for (Vec2 p : o) range.add(p.x);
     }
-    if (range.empty) return out;
+    if (range.empty) {
+        // Nothing on OpenSCAD's 2D grid (2^-16): either no area at all, or a profile that
+        // small, which OpenSCAD rounds away but the exact revolve below keeps
+        range = pointRange2d(*children, Affine2());
+        if (range.empty || range.min == range.max) return out;
+        warn(inst.loc, "rotate_extrude(): the 2D profile is smaller than OpenSCAD's 2D grid "
+                       "(1/65536), where OpenSCAD makes nothing of it; scadray revolves it "
+                       "exactly");
+    }
     if (range.crossesAxis()) {
         diag_.report(Severity::Error, inst.loc,
                      "all points for rotate_extrude() must have the same X coordinate sign "
@@ -98,6 +106,19 @@ ir::NodePtr Evaluator::moduleRotateExtrude(const ModuleInstantiation &inst, cons
     }
     out->children.push_back(std::move(solid));
     return out;
+}
+
+XRange Evaluator::pointRange2d(const ir::Node &n, const Affine2 &placed) {
+    XRange r;
+    if (const Shape2d *s = shape2dOf(n)) {
+        for (const Outline &o : shapeOutlines(*s))
+            for (Vec2 p : o) r.add(placed.apply(p).x);
+        return r;
+    }
+    Affine2 inner = placed;
+    if (n.kind == ir::NodeKind::Transform) inner = placed * Affine2::fromMat4(n.matrix);
+    for (const ir::Node *c : children2d(n, false, false)) r.add(pointRange2d(*c, inner));
+    return r;
 }
 
 ir::NodePtr Evaluator::liftRevolve(const ir::Node &n, const RevolveSpec &spec,

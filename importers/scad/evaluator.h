@@ -285,6 +285,8 @@ class Evaluator {
 
     // rotate_extrude (builtins_revolve.cpp)
     ir::NodePtr moduleRotateExtrude(const ModuleInstantiation &inst, const FramePtr &f);
+    /// The x range of every outline point of the 2D subtree n placed by `placed`.
+    XRange pointRange2d(const ir::Node &n, const Affine2 &placed);
     /// The 3D solid of a 2D subtree revolved as `spec` says (the subtree's profile is on the
     /// +X side once placed); `subtracted` inside what a difference subtracts.
     ir::NodePtr liftRevolve(const ir::Node &n, const RevolveSpec &spec, const Affine2 &placed,

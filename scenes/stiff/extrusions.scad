@@ -38,9 +38,9 @@ material(color="gold", ambient=0.12, diffuse=0.7, phong=0.4) placed([4, -6, 0])
 material(color="orchid", ambient=0.12, diffuse=0.7) placed([10, -5, 0])
     linear_extrude(height=S * 5, scale=0) circle(S * 1.5, $fn=40);
 
-// Ten full turns of twist
+// Ten full turns of twist ($fn: a slice count that does not depend on the size, as $fs's does)
 material(color="seagreen", ambient=0.12, diffuse=0.7) placed([-8, 5, 0])
-    linear_extrude(height=S * 8, twist=3600) square(S * [3, 1.2], center=true);
+    linear_extrude(height=S * 8, twist=3600, $fn=12) square(S * [3, 1.2], center=true);
 
 // Flush with a cube: the extrusion's bottom face lies in the cube's top face
 material(color="slategray", ambient=0.12, diffuse=0.7) placed([-2, 4, 0]) {
@@ -48,7 +48,8 @@ material(color="slategray", ambient=0.12, diffuse=0.7) placed([-2, 4, 0]) {
     translate(S * [0, 0, 1]) linear_extrude(S * 2) polygon(S * [[0, 0], [4, 0], [4, 4], [2, 1.5], [0, 4]]);
 }
 
-// A horn torus and a lathe whose profile has an edge on the axis
+// A horn torus and a lathe whose profile has an edge on the axis (at S = 1e-6 the profile is
+// below OpenSCAD's 2D grid, which a warning says)
 material(color="chocolate", ambient=0.12, diffuse=0.7, phong=0.3) placed([6, 5, 1.5])
     rotate_extrude() translate(S * [1.5, 0]) circle(S * 1.5);
 material(color="darkkhaki", ambient=0.12, diffuse=0.7) placed([11, 4, 0])
