@@ -13,19 +13,14 @@
 
 #include "core/ir/facets.h"
 #include "importers/mesh/mesh_reader.h"
-#include "importers/scad/test_support.h"
+#include "importers/scad/openscad_support.h"
 
 namespace rt::scad::test {
 namespace {
 
 namespace fs = std::filesystem;
 
-/// OFF files print 6 significant digits, and OpenSCAD snaps 2D outlines to a fixed-point
-/// grid (Clipper) before revolving them.
-constexpr double kVertexTolerance = 2e-5;
-constexpr double kVolumeTolerance = 1e-5;  ///< relative
-
-bool haveOpenScad() { return std::system("command -v openscad >/dev/null 2>&1") == 0; }
+constexpr double kVolumeTolerance = 1e-5;  ///< relative (OFF's 6 digits)
 
 class RevolveCrossCheck : public ::testing::TestWithParam<const char *> {};
 
@@ -35,17 +30,10 @@ TEST_P(RevolveCrossCheck, FacetedMeshIsOpenScads) {
     SCOPED_TRACE(src);
     fs::path dir = fs::temp_directory_path() / ("scadray_revolve_" + std::to_string(getpid()));
     fs::create_directories(dir);
-    std::string in = (dir / "case.scad").string(), off = (dir / "case.off").string();
-    std::ofstream(in) << src << "\n";
-    fs::remove(off);
-    std::string cmd = "openscad -o '" + off + "' '" + in + "' >/dev/null 2>&1";
-    int status = std::system(cmd.c_str());
-    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << cmd;
-    DiagnosticSink offDiag;
-    ir::Mesh ref = meshio::readOff(off, offDiag);
+    ir::Mesh ref = openscadOff(src, dir);
 
     DiagnosticSink diag;
-    ir::Scene scene = importScad(in, diag);
+    ir::Scene scene = importScad((dir / "case.scad").string(), diag);
     ir::applyFacets(scene, ir::FacetMode::OpenScad, diag);
     auto prims = primitives(*scene.root);
     ASSERT_EQ(prims.size(), 1u);
@@ -56,19 +44,10 @@ TEST_P(RevolveCrossCheck, FacetedMeshIsOpenScads) {
     std::vector<Vec3> ours;
     for (const Vec3 &v : mesh.positions) ours.push_back(prims[0].worldFromObject.transformPoint(v));
 
-    EXPECT_NEAR(meshio::signedVolume(mesh), std::abs(meshio::signedVolume(ref)),
-                kVolumeTolerance * std::abs(meshio::signedVolume(ref)));
-    auto has = [](const std::vector<Vec3> &set, const Vec3 &v) {
-        for (const Vec3 &w : set)
-            if (length(w - v) < kVertexTolerance * std::max(1.0, length(v))) return true;
-        return false;
-    };
-    for (const Vec3 &v : ref.positions)
-        EXPECT_TRUE(has(ours, v)) << "OpenSCAD vertex missing: " << v.x << " " << v.y << " "
-                                  << v.z;
-    for (const Vec3 &v : ours)
-        EXPECT_TRUE(has(ref.positions, v))
-            << "vertex not in OpenSCAD's: " << v.x << " " << v.y << " " << v.z;
+    double refVolume = std::abs(meshVolume(ref));
+    EXPECT_NEAR(meshVolume(mesh), refVolume, kVolumeTolerance * refVolume);
+    expectCovered(ref.positions, ours, "OpenSCAD vertex missing:");
+    expectCovered(ours, ref.positions, "vertex not in OpenSCAD's:");
 }
 
 INSTANTIATE_TEST_SUITE_P(
