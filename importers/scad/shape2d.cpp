@@ -27,6 +27,12 @@ double turn(Vec2 a, Vec2 b, Vec2 c) {
     return std::abs(t) <= kCollinearTolerance * norm(u) * norm(v) ? 0 : t;
 }
 
+/// Whether p, on the line through a and b, lies on the segment between them.
+bool onSegment(Vec2 p, Vec2 a, Vec2 b) {
+    return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+           p.y <= std::max(a.y, b.y);
+}
+
 /// Orientation sign of c against the line a -> b.
 int side(Vec2 a, Vec2 b, Vec2 c) {
     double t = cross(b - a, c - a);
@@ -230,8 +236,13 @@ bool outlinesIntersect(const std::vector<Outline> &outlines) {
                 if ((e.index + 1) % n == f.index || (f.index + 1) % n == e.index) continue;
             }
             // A proper crossing: each edge's ends lie strictly on both sides of the other
-            if (side(e.a, e.b, f.a) * side(e.a, e.b, f.b) < 0 &&
-                side(f.a, f.b, e.a) * side(f.a, f.b, e.b) < 0)
+            int d1 = side(e.a, e.b, f.a), d2 = side(e.a, e.b, f.b);
+            int d3 = side(f.a, f.b, e.a), d4 = side(f.a, f.b, e.b);
+            if (d1 * d2 < 0 && d3 * d4 < 0) return true;
+            // Touching: an end of one edge on the other (a repeated corner, a corner on an
+            // edge, overlapping collinear edges)
+            if ((d1 == 0 && onSegment(f.a, e.a, e.b)) || (d2 == 0 && onSegment(f.b, e.a, e.b)) ||
+                (d3 == 0 && onSegment(e.a, f.a, f.b)) || (d4 == 0 && onSegment(e.b, f.a, f.b)))
                 return true;
         }
     }

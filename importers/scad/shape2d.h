@@ -87,8 +87,9 @@ Outline clipConvex(const Outline &subject, const Outline &clip);
 /// Even-odd point-in-outline test.
 bool insideOutline(Vec2 p, const Outline &o);
 
-/// Whether any two edges of the outlines cross or overlap (not counting edges meeting at a
-/// shared corner of one outline).
+/// Whether any two edges of the outlines cross or touch (a repeated corner, a corner on an
+/// edge, overlapping edges), not counting the corner two neighbouring edges of one outline
+/// share: such outlines do not sweep to closed manifold solids on their own.
 bool outlinesIntersect(const std::vector<Outline> &outlines);
 
 /// The even-odd fill of non-crossing outlines as disjoint regions: an outer outline (nesting

@@ -1,7 +1,7 @@
 // Stiff cases of OpenSCAD's 2D subset and extrusions, with every length (the 2D shapes too,
 // not only a 3D scale around them) multiplied by S and the scene moved by T, so the picture
 // must not change with them (tests/integration/stiff_scenes_test.cpp renders S = 1e-6 and
-// 1e6). A 10,000-vertex polygon, collinear and repeated points, a self-touching polygon, a
+// 1e6). A 10,000-vertex polygon, collinear and repeated points, a
 // 0-height extrusion (empty), scale=0 (a pyramid and a cone to a point), twist=3600, a
 // linear_extrude flush with a cube, a horn torus (a circle touching the axis) and a lathe
 // with a profile on the axis.
@@ -25,11 +25,11 @@ material(color="steelblue", ambient=0.12, diffuse=0.7) placed([-10, -3, 0])
         polygon([for (i = [0 : 9999]) let(a = 360 * i / 10000, r = S * (3 + 0.25 * sin(40 * a)))
                  [r * cos(a), r * sin(a)]]);
 
-// Collinear and repeated points, and a polygon touching itself at a corner
-material(color="tomato", ambient=0.12, diffuse=0.7) placed([-4, -6, 0]) linear_extrude(S * 1.5) {
+// Collinear and repeated points. Polygons crossing or touching themselves are left out
+// here: OpenSCAD's Clipper pieces of them touch at a point, which its CGAL refuses in a union
+// ("The given mesh is not closed!") and drops (tests/importers/scad cover them)
+material(color="tomato", ambient=0.12, diffuse=0.7) placed([-4, -6, 0]) linear_extrude(S * 1.5)
     polygon(S * [[0, 0], [1, 0], [1, 0], [2, 0], [3, 0], [3, 3], [3, 3], [1.5, 1.5], [0, 3], [0, 1.5]]);
-    translate(S * [4, 0]) polygon(S * [[0, 0], [2, 0], [1, 1], [2, 2], [0, 2], [1, 1]]);
-}
 
 // Empty (height 0), a pyramid and a cone to a point (scale = 0)
 placed([2, -6, 0]) linear_extrude(0) square(S * 2);

@@ -236,6 +236,21 @@ TEST(Extrude, TwistMeshHasOpenScadSlices) {
     EXPECT_EQ(meshOf(r, *primitives(*r.scene.root)[0].node).positions.size(), 4u * 4);
 }
 
+TEST(Extrude, PolygonTouchingItselfSweepsToClosedSolids) {
+    // A corner visited twice (a bow-tie through a repeated point): on its own its sweep would
+    // be a non-manifold mesh, which CSG cannot use; Clipper's strictly simple pieces are solids
+    Imported r = importText(
+        "difference() { cube([9, 9, 1]); translate([1, 1, -1]) linear_extrude(3) "
+        "polygon([[0,0],[2,0],[1,1],[2,2],[0,2],[1,1]]); }");
+    auto p = primitives(*r.scene.root);
+    ASSERT_EQ(p.size(), 3u);
+    for (size_t i = 1; i < p.size(); ++i) {
+        const auto *mp = std::get_if<ir::MeshPrim>(&p[i].node->shape);
+        if (mp) EXPECT_TRUE(ir::analyzeMesh(*r.scene.meshes[mp->mesh]).closed());
+    }
+    EXPECT_TRUE(r.warnings().empty());
+}
+
 TEST(Extrude, StiffCasesStayFinite) {
     // Collinear and repeated points are dropped: a convex quad
     Imported r = importText(
