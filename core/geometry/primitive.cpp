@@ -8,6 +8,7 @@
 
 #include "core/geometry/revolved.h"
 #include "core/geometry/triangle_mesh.h"
+#include "core/ir/prism.h"
 #include "core/math/float_util.h"
 #include "core/math/quadratic.h"
 
@@ -21,6 +22,9 @@ std::unique_ptr<Primitive> Primitive::create(const ir::PrimShape &shape) {
         return std::make_unique<Cone>(c->z0, c->z1, c->r1, c->r2);
     if (const auto *p = std::get_if<ir::PolytopePrim>(&shape))
         return std::make_unique<ConvexPolytope>(*p);
+    // A convex prism is the polytope of its faces; a non-convex one is drawn as its mesh
+    if (const auto *p = std::get_if<ir::PrismPrim>(&shape); p && p->mesh < 0)
+        return std::make_unique<ConvexPolytope>(ir::prismPolytope(*p));
     if (const auto *t = std::get_if<ir::TorusPrim>(&shape)) return std::make_unique<Torus>(*t);
     if (const auto *l = std::get_if<ir::LathePrim>(&shape)) return std::make_unique<Lathe>(*l);
     throw std::logic_error("Primitive::create: meshes are MeshInstances, not primitives");

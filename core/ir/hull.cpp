@@ -12,6 +12,7 @@
 #include <unordered_map>
 
 #include "core/ir/facets.h"
+#include "core/ir/prism.h"
 #include "core/ir/revolved_mesh.h"
 #include "core/ir/scene_ir.h"
 
@@ -422,6 +423,7 @@ size_t primitivePointCount(const Node &n, const Scene &scene) {
         return m->mesh >= 0 && m->mesh < static_cast<int>(scene.meshes.size())
                    ? scene.meshes[m->mesh]->positions.size()
                    : 0;
+    if (const auto *p = std::get_if<PrismPrim>(&n.shape)) return prismPoints(*p).size();
     return std::get<PolytopePrim>(n.shape).vertices.size();
 }
 
@@ -446,14 +448,16 @@ std::vector<Vec3> primitivePoints(const Node &n, const Scene &scene) {
             if (used[i]) pts.push_back(mesh.positions[i]);
         return pts;
     }
+    if (const auto *p = std::get_if<PrismPrim>(&n.shape)) return prismPoints(*p);
     return std::get<PolytopePrim>(n.shape).vertices;
 }
 
-/// True for a subtree that is one convex solid: a box, sphere, cylinder or polytope (a hull)
-/// under transforms, or an intersection of such.
+/// True for a subtree that is one convex solid: a box, sphere, cylinder, polytope (a hull) or
+/// prism of a convex outline under transforms, or an intersection of such.
 bool isConvexSolid(const Node &n) {
     switch (n.kind) {
         case NodeKind::Primitive:
+            if (const auto *p = std::get_if<PrismPrim>(&n.shape)) return p->mesh < 0;
             return !std::holds_alternative<MeshPrim>(n.shape) &&
                    !std::holds_alternative<LathePrim>(n.shape) &&
                    !std::holds_alternative<TorusPrim>(n.shape);
@@ -512,6 +516,8 @@ void markMaybeInside(const Node &n, const Mat4 &parentFromNode, const std::vecto
     double tol = hullTolerance(scale);
     std::optional<PolytopePrim> round = roundPolytope(n);
     if (const auto *poly = std::get_if<PolytopePrim>(&n.shape)) round = *poly;
+    if (const auto *prism = std::get_if<PrismPrim>(&n.shape); prism && prism->mesh < 0)
+        round = prismPolytope(*prism);
     std::vector<FacePlane> planes;
     if (round) planes = polytopePlanes(*round);
     Bounds3 box = primitiveBounds(n.shape, &scene);
@@ -522,7 +528,7 @@ void markMaybeInside(const Node &n, const Mat4 &parentFromNode, const std::vecto
                 return dot(pl.normal, local[i]) - pl.offset <= tol;
             });
         } else {
-            // Boxes exactly; meshes, tori and lathes by their bounds
+            // Boxes exactly; meshes, non-convex prisms, tori and lathes by their bounds
             inside = true;
             for (int a = 0; a < 3; ++a)
                 inside = inside && local[i][a] >= box.min[a] - tol && local[i][a] <= box.max[a] + tol;

@@ -86,6 +86,15 @@ void dumpNode(const Node &n, int indent, std::ostringstream &os) {
                     os << (i ? " " : "") << outline(l->outlines[i]);
                 os << "]";
             }
+            else if (const auto *p = std::get_if<PrismPrim>(&n.shape)) {
+                os << "prism z0 " << formatNumber(p->z0) << " z1 " << formatNumber(p->z1)
+                   << " k0 " << formatNumber(p->k0) << " k1 " << formatNumber(p->k1) << " mesh "
+                   << p->mesh << " outline [";
+                for (size_t i = 0; i < p->outline.size(); ++i)
+                    os << (i ? " [" : "[") << formatNumber(p->outline[i].x) << ", "
+                       << formatNumber(p->outline[i].y) << "]";
+                os << "]";
+            }
             else {
                 const auto &c = std::get<CylinderPrim>(n.shape);
                 os << "cylinder z0 " << formatNumber(c.z0) << " z1 " << formatNumber(c.z1)

@@ -64,6 +64,32 @@ void checkRevolved(const Node &node) {
     }
 }
 
+/// The parameters of a prism, which the importer must have checked: a finite outline of at
+/// least 3 points, z0 < z1, scales k0, k1 >= 0 and not both 0, a mesh in the scene if any.
+void checkPrism(const Scene &scene, const Node &node) {
+    const auto *p = std::get_if<PrismPrim>(&node.shape);
+    if (!p) return;
+    if (p->outline.size() < 3)
+        throw SceneError(node.loc, "prism outline has " + std::to_string(p->outline.size()) +
+                                       " points, fewer than 3 (internal error)");
+    for (const Point2 &q : p->outline)
+        if (!std::isfinite(q.x) || !std::isfinite(q.y))
+            throw SceneError(node.loc, "prism outline has a point that is not finite "
+                                       "(internal error)");
+    if (!(std::isfinite(p->z0) && std::isfinite(p->z1) && p->z0 < p->z1))
+        throw SceneError(node.loc, "prism needs finite z0 < z1, not " + number(p->z0) + " and " +
+                                       number(p->z1) + " (internal error)");
+    if (!(std::isfinite(p->k0) && std::isfinite(p->k1) && p->k0 >= 0 && p->k1 >= 0 &&
+          (p->k0 > 0 || p->k1 > 0)))
+        throw SceneError(node.loc, "prism needs finite scales >= 0, not both 0, not " +
+                                       number(p->k0) + " and " + number(p->k1) +
+                                       " (internal error)");
+    if (p->mesh >= static_cast<int>(scene.meshes.size()) ||
+        (p->mesh >= 0 && !scene.meshes[p->mesh]))
+        throw SceneError(node.loc, "prism mesh " + std::to_string(p->mesh) +
+                                       " is not in the scene (internal error)");
+}
+
 /// Walks the tree with composed transforms and checks every primitive's world bounds.
 void checkNode(const Scene &scene, const Node &node, const Mat4 &m, int *primitives) {
     // An importer must resolve its 2D placeholders (extrude them or draw them as plates)
@@ -80,6 +106,7 @@ void checkNode(const Scene &scene, const Node &node, const Mat4 &m, int *primiti
                 throw SceneError(node.loc, "mesh reference " + std::to_string(mp->mesh) +
                                                " is not in the scene (internal error)");
         checkRevolved(node);
+        checkPrism(scene, node);
         if (node.material < 0 || node.material >= static_cast<int>(scene.materials.size()))
             throw SceneError(node.loc, "primitive has no valid material (internal error)");
         Bounds3 b = Transform(here, Mat4()).bounds(primitiveBounds(node.shape, &scene));

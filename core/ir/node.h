@@ -74,8 +74,27 @@ struct TorusPrim {
     int fragments = 0;
 };
 
+/// A point of a plane outline.
+struct Point2 {
+    double x = 0, y = 0;
+};
+
+/// A prism, frustum or pyramid (OpenSCAD's linear_extrude without twist and with a uniform
+/// scale): the simple counter-clockwise `outline` swept along +Z from z0 to z1, scaled about
+/// the Z axis by k0 at z0 and by k1 at z1, linearly in between (k0, k1 >= 0, not both 0; a
+/// scale of 0 is an apex). A convex outline has `mesh` -1 and is drawn as the convex polytope
+/// of its planar faces; a non-convex one names its closed triangle mesh in Scene::meshes (the
+/// importer's sweep, with OpenSCAD's triangles), which the renderer draws. The POV-Ray writer
+/// writes the outline itself as a `prism`.
+struct PrismPrim {
+    std::vector<Point2> outline;
+    double z0 = 0, z1 = 1;
+    double k0 = 1, k1 = 1;
+    int mesh = -1;
+};
+
 using PrimShape = std::variant<SpherePrim, BoxPrim, CylinderPrim, MeshPrim, PolytopePrim,
-                               LathePrim, TorusPrim>;
+                               LathePrim, TorusPrim, PrismPrim>;
 
 /// OpenSCAD's $fn/$fa/$fs at the primitive, for the tessellated comparison mode.
 struct Fragments {

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "core/ir/prism.h"
 #include "core/math/float_util.h"
 #include "core/math/transform.h"
 
@@ -108,6 +109,11 @@ Bounds3 primitiveBounds(const PrimShape &shape, const Scene *scene) {
     if (const auto *p = std::get_if<PolytopePrim>(&shape)) {
         Bounds3 bounds;
         for (const Vec3 &v : p->vertices) bounds = unionBounds(bounds, v);
+        return bounds;
+    }
+    if (const auto *p = std::get_if<PrismPrim>(&shape)) {
+        Bounds3 bounds;
+        for (const Vec3 &v : prismPoints(*p)) bounds = unionBounds(bounds, v);
         return bounds;
     }
     if (const auto *t = std::get_if<TorusPrim>(&shape)) {

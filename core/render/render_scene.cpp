@@ -173,8 +173,11 @@ class Compiler {
         if (mat < 0 || mat >= static_cast<int>(scene_.materials.size()))
             throw SceneError(node.loc, "primitive has no valid material (internal error)");
         std::unique_ptr<LeafShape> leaf;
+        const auto *prism = std::get_if<ir::PrismPrim>(&node.shape);
         if (const auto *mp = std::get_if<ir::MeshPrim>(&node.shape))
             leaf = std::make_unique<MeshInstance>(triangleMesh(node, mp->mesh), *t, mat);
+        else if (prism && prism->mesh >= 0)
+            leaf = std::make_unique<MeshInstance>(triangleMesh(node, prism->mesh), *t, mat);
         else
             leaf = std::make_unique<PrimitiveInstance>(Primitive::create(node.shape), *t, mat);
         leaf->tieRank = ranks_[mat];

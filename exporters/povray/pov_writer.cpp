@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -53,6 +54,36 @@ std::string latheRegion(const std::vector<ir::ProfileOutline> &outlines,
                         latheRegion(outlines, parents, static_cast<int>(h), pad + "    ");
     if (children.empty()) return s;
     return "difference {\n" + pad + "    " + s + children + "\n" + pad + "}";
+}
+
+/// A prism as POV-Ray's exact `prism` with linear segments. POV-Ray sweeps the outline, given
+/// in its x-z plane, along its y axis; the matrix swaps y and z, so the outline lands in our
+/// x-y plane and the sweep on +Z (a reflection, which leaves the solid's inside as it is). A
+/// constant scale k is a linear_sweep of the scaled points from z0 to z1. A changing scale is
+/// a conic_sweep, whose section at height h is the outline scaled by h: heights k0 .. k1 (from
+/// 0 for an apex), then height k mapped to z = z0 + (k - k0) (z1 - z0) / (k1 - k0).
+std::string prismShape(const ir::PrismPrim &p) {
+    bool conic = p.k0 != p.k1;
+    double k = conic ? 1 : p.k0;
+    double h0 = conic ? std::min(p.k0, p.k1) : p.z0, h1 = conic ? std::max(p.k0, p.k1) : p.z1;
+    std::string s = std::string("prism { ") + (conic ? "conic_sweep" : "linear_sweep") +
+                    " linear_spline " + num(h0) + ", " + num(h1) + ", " +
+                    std::to_string(p.outline.size() + 1);
+    // The outline is closed by repeating its first point
+    for (size_t i = 0; i <= p.outline.size(); ++i) {
+        const ir::Point2 &q = p.outline[i % p.outline.size()];
+        s += ", <" + num(k * q.x) + ", " + num(k * q.y) + ">";
+    }
+    Mat4 m;
+    m.m[1][1] = m.m[2][2] = 0;
+    m.m[1][2] = 1;
+    m.m[2][1] = 1;
+    if (conic) {
+        double stretch = (p.z1 - p.z0) / (p.k1 - p.k0);
+        m.m[2][1] = stretch;
+        m.m[2][3] = p.z0 - p.k0 * stretch;
+    }
+    return s + " " + matrix(m);
 }
 
 /// An open solid of revolution for the writer to close: a torus or lathe about +Z, cut to
@@ -424,6 +455,8 @@ class Writer {
                     shape += "\n" + pad + "plane { " + vec(pl.normal) + ", " + num(pl.offset) + " }";
                 shape += "\n" + pad;
             }
+            else if (const auto *pr = std::get_if<ir::PrismPrim>(&cur->shape))
+                shape = prismShape(*pr);
             else if (std::holds_alternative<ir::TorusPrim>(cur->shape) ||
                      std::holds_alternative<ir::LathePrim>(cur->shape)) {
                 shape = revolvedShape(cur->shape, std::string(4 * (indent + 1), ' '));

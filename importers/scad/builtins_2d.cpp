@@ -426,30 +426,34 @@ ir::NodePtr Evaluator::lift2d(const ir::Node &n, const ExtrudeSpec &spec, const 
 
 ir::NodePtr Evaluator::sweptSolid(const Outline &ccw, const ExtrudeSpec &spec, double pad,
                                   int material, const SourceLoc &loc) {
-    Sweep sweep;
+    ir::Mesh mesh;
+    mesh.name = "linear_extrude";
+    mesh.loc = loc;
     if (spec.meshPath) {
+        // Twisted or scaled unevenly: OpenSCAD's slices as a mesh
+        Sweep sweep;
         sweep.z0 = spec.z0;
         sweep.z1 = spec.z1;
         sweep.scale1 = spec.scale;
         sweep.rot1 = spec.twist;
         sweep.slices = spec.slices;
-    } else {
-        Range r = paddedRange(spec, pad);
-        if (isConvex(ccw))
-            return makeLifted(sweepPolytope(ccw, r.za, r.zb, r.ka, r.kb), material, loc);
-        sweep.z0 = r.za;
-        sweep.z1 = r.zb;
-        sweep.scale0 = {r.ka, r.ka};
-        sweep.scale1 = {r.kb, r.kb};
+        if (!sweepMesh(ccw, sweep, mesh)) {
+            warn(loc, "linear_extrude(): an outline of no area is left out");
+            return nullptr;
+        }
+        return makeLifted(ir::MeshPrim{addMesh(std::move(mesh))}, material, loc);
     }
-    ir::Mesh mesh;
-    mesh.name = "linear_extrude";
-    mesh.loc = loc;
-    if (!sweepMesh(ccw, sweep, mesh)) {
-        warn(loc, "linear_extrude(): an outline of no area is left out");
-        return nullptr;
+    // Straight: a prism, drawn as its polytope when convex, else as its mesh
+    Range r = paddedRange(spec, pad);
+    ir::PrismPrim prism = straightPrism(ccw, r.za, r.zb, r.ka, r.kb);
+    if (!isConvex(ccw)) {
+        if (!prismMesh(prism, mesh)) {
+            warn(loc, "linear_extrude(): an outline of no area is left out");
+            return nullptr;
+        }
+        prism.mesh = addMesh(std::move(mesh));
     }
-    return makeLifted(ir::MeshPrim{addMesh(std::move(mesh))}, material, loc);
+    return makeLifted(prism, material, loc);
 }
 
 ir::NodePtr Evaluator::liftShape(const Shape2d &s, const ExtrudeSpec &spec, const Affine2 &placed,
@@ -463,7 +467,7 @@ ir::NodePtr Evaluator::liftShape(const Shape2d &s, const ExtrudeSpec &spec, cons
             box.max = Vec3(s.max.x, s.max.y, r.zb);
             return makeLifted(box, material, s.loc);
         }
-        return makeLifted(sweepPolytope(shapeOutlines(s)[0], r.za, r.zb, r.ka, r.kb), material,
+        return makeLifted(straightPrism(shapeOutlines(s)[0], r.za, r.zb, r.ka, r.kb), material,
                           s.loc);
     }
     if (!spec.meshPath && s.kind == Shape2dKind::Circle) {

@@ -87,33 +87,13 @@ int extrudeSlices(int slices, double height, double twist, Vec2 scale, double rS
     return 1;
 }
 
-ir::PolytopePrim sweepPolytope(const Outline &ccw, double z0, double z1, double k0, double k1) {
-    ir::PolytopePrim p;
-    size_t n = ccw.size();
-    // A ring of n vertices, or one apex where the scale is 0
-    auto ring = [&](double k, double z) {
-        std::vector<int> idx;
-        if (k == 0) {
-            idx.assign(n, static_cast<int>(p.vertices.size()));
-            p.vertices.push_back(Vec3(0, 0, z));
-            return idx;
-        }
-        for (Vec2 v : ccw) {
-            idx.push_back(static_cast<int>(p.vertices.size()));
-            p.vertices.push_back(Vec3(k * v.x, k * v.y, z));
-        }
-        return idx;
-    };
-    std::vector<int> bottom = ring(k0, z0), top = ring(k1, z1);
-    if (k0 != 0) p.faces.push_back(std::vector<int>(bottom.rbegin(), bottom.rend()));
-    if (k1 != 0) p.faces.push_back(top);
-    for (size_t i = 0; i < n; ++i) {
-        size_t j = (i + 1) % n;
-        std::vector<int> f{bottom[i], bottom[j], top[j], top[i]};
-        // The apex joins both top (or bottom) corners: a triangle
-        f.erase(std::unique(f.begin(), f.end()), f.end());
-        p.faces.push_back(f);
-    }
+ir::PrismPrim straightPrism(const Outline &ccw, double z0, double z1, double k0, double k1) {
+    ir::PrismPrim p;
+    for (Vec2 v : ccw) p.outline.push_back({v.x, v.y});
+    p.z0 = z0;
+    p.z1 = z1;
+    p.k0 = k0;
+    p.k1 = k1;
     return p;
 }
 
@@ -173,6 +153,17 @@ bool sweepMesh(const Outline &ccw, const Sweep &s, ir::Mesh &out) {
     bool ok = cap(rings[0], true);
     ok = cap(rings[slices], false) && ok;
     return ok;
+}
+
+bool prismMesh(const ir::PrismPrim &p, ir::Mesh &out) {
+    Outline ccw;
+    for (const ir::Point2 &q : p.outline) ccw.push_back({q.x, q.y});
+    Sweep s;
+    s.z0 = p.z0;
+    s.z1 = p.z1;
+    s.scale0 = {p.k0, p.k0};
+    s.scale1 = {p.k1, p.k1};
+    return sweepMesh(ccw, s, out);
 }
 
 }  // namespace rt::scad

@@ -19,14 +19,18 @@ struct Sweep {
     int slices = 1;
 };
 
-/// A convex counter-clockwise outline swept straight (no twist, uniform scales k0 at z0 and
-/// k1 at z1): a frustum with planar faces, a pyramid where a scale is 0.
-ir::PolytopePrim sweepPolytope(const Outline &ccw, double z0, double z1, double k0, double k1);
+/// A simple counter-clockwise outline swept straight (no twist, uniform scales k0 at z0 and
+/// k1 at z1): a prism, a frustum, a pyramid where a scale is 0. Its `mesh` is left -1.
+ir::PrismPrim straightPrism(const Outline &ccw, double z0, double z1, double k0, double k1);
 
 /// A simple counter-clockwise outline swept as a closed triangle mesh: OpenSCAD's rings, its
 /// choice of diagonal for each side quad, and ear-clipped caps (none where a ring is a point).
 /// Returns false when a cap cannot be triangulated (no area).
 bool sweepMesh(const Outline &ccw, const Sweep &s, ir::Mesh &out);
+
+/// The closed triangle mesh of a prism, as sweepMesh builds it (what OpenSCAD renders of a
+/// straight linear_extrude). Returns false when a cap cannot be triangulated (no area).
+bool prismMesh(const ir::PrismPrim &p, ir::Mesh &out);
 
 /// OpenSCAD 2021.01's slice count for linear_extrude (has_slices wins; twist: helix or conical
 /// helix length; non-uniform scale: the longest diagonal path; else 1). rSqr is the largest

@@ -5,27 +5,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <regex>
 
-#include "core/image/image_io.h"
-#include "core/render/render_scene.h"
-#include "core/render/renderer.h"
-#include "exporters/povray/pov_runner.h"
 #include "exporters/povray/pov_writer.h"
+#include "support/pov_pictures.h"
 #include "support/scene_builder.h"
 
 namespace rt {
 namespace {
 
 using namespace rt::test;
-
-int count(const std::string &text, const std::string &what) {
-    int n = 0;
-    for (size_t p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-    return n;
-}
 
 ir::ProfileOutline rect(double r0, double r1, double z0, double z1) {
     return {{r0, z0}, {r1, z0}, {r1, z1}, {r0, z1}};
@@ -76,66 +65,30 @@ TEST(PovRevolved, TorusAndLatheAreWrittenAboutZ) {
     EXPECT_EQ(count(t, "merge { plane { <0, -1, 0>, 0 } plane { <1, 0, 0>, 0 } }"), 1) << t;
 }
 
-/// Pixels covered (brighter than half) in `a`, and those whose coverage differs in `b`.
-std::pair<int, int> coverage(const Image &a, const Image &b) {
-    int covered = 0, differ = 0;
-    for (int y = 0; y < a.height(); ++y)
-        for (int x = 0; x < a.width(); ++x) {
-            bool p = a.at(x, y).g > 0.5, q = b.at(x, y).g > 0.5;
-            covered += p;
-            differ += p != q;
-        }
-    return {covered, differ};
-}
-
 TEST(PovRevolved, PovRayDrawsTheSameSilhouettes) {
     if (!pov::povrayAvailable()) GTEST_SKIP() << "POV-Ray (povray) is not installed";
     ir::Scene s = revolvedScene();
     const int w = 200, h = 150;
-    DiagnosticSink diag;
-    auto rs = RenderScene::compile(s, diag);
-    RenderOptions o;
-    o.width = w;
-    o.height = h;
-    o.threads = 2;
-    Image ours = renderImage(*rs, o).image;
-
-    auto dir = std::filesystem::temp_directory_path() / "scadray_pov_revolved";
-    std::filesystem::create_directories(dir);
-    auto povImage = [&](const std::string &sdl, const std::string &name) {
-        pov::IniOptions ini;
-        ini.povFile = name + ".pov";
-        ini.outputFile = name + ".png";
-        ini.width = w;
-        ini.height = h;
-        ini.threads = 2;
-        std::ofstream((dir / ini.povFile).string()) << sdl;
-        std::ofstream((dir / (name + ".ini")).string()) << pov::writeIni(ini);
-        pov::runPovRay(dir.string(), name + ".ini", 2, 120);
-        return readImage((dir / ini.outputFile).string(), true);
-    };
+    Image ours = scadrayPicture(s, w, h);
     std::string sdl = pov::writeSdl(s, "revolved");
-    Image theirs = povImage(sdl, "scene");
+    Image theirs = povrayPicture(sdl, "scadray_pov_revolved", "scene", w, h);
     ASSERT_EQ(theirs.width(), w);
     ASSERT_EQ(theirs.height(), h);
 
     // Pixels covered in one picture and not in the other: only along silhouettes, where a
     // pixel centre's ray grazes the surface
-    auto [covered, differ] = coverage(ours, theirs);
-    std::printf("revolved silhouettes: %d pixels covered, %d differ\n", covered, differ);
-    EXPECT_GT(covered, w * h / 10);
-    EXPECT_LT(differ, covered / 100 + 5);
+    int covered = expectSameSilhouettes(ours, theirs, "revolved");
 
     // The comparison can say no: the solids turned the other way about x (the axis to -Z)
     // and the wedges drawn from -X differ in many pixels
     std::string flipped = std::regex_replace(sdl, std::regex("rotate x\\*90"), "rotate x*-90");
     flipped = std::regex_replace(flipped, std::regex("plane \\{ <0, -1, 0>, 0 \\}"),
                                  "plane { <0, 1, 0>, 0 }");
-    auto [covered2, differ2] = coverage(ours, povImage(flipped, "flipped"));
+    int differ2 =
+        coverage(ours, povrayPicture(flipped, "scadray_pov_revolved", "flipped", w, h)).second;
     std::printf("negative control (solids upside down, wedges mirrored): %d pixels differ\n",
                 differ2);
     EXPECT_GT(differ2, covered / 10);
-    (void)covered2;
 }
 
 TEST(PovRevolved, PovRayShadesTheSameSurfaces) {
@@ -144,46 +97,11 @@ TEST(PovRevolved, PovRayShadesTheSameSurfaces) {
     if (!pov::povrayAvailable()) GTEST_SKIP() << "POV-Ray (povray) is not installed";
     ir::Scene s = revolvedScene(true);
     const int w = 200, h = 150;
-    DiagnosticSink diag;
-    auto rs = RenderScene::compile(s, diag);
-    RenderOptions o;
-    o.width = w;
-    o.height = h;
-    o.threads = 2;
-    Image ours = renderImage(*rs, o).image;
-    auto dir = std::filesystem::temp_directory_path() / "scadray_pov_revolved";
-    std::filesystem::create_directories(dir);
-    pov::IniOptions ini;
-    ini.povFile = "shaded.pov";
-    ini.outputFile = "shaded.png";
-    ini.width = w;
-    ini.height = h;
-    ini.threads = 2;
-    pov::exportPov(s, (dir / ini.povFile).string(), "revolved", ini);
-    pov::runPovRay(dir.string(), "shaded.ini", 2, 120);
-    Image theirs = readImage((dir / ini.outputFile).string(), true);
+    Image ours = scadrayPicture(s, w, h);
+    Image theirs =
+        povrayPicture(pov::writeSdl(s, "revolved"), "scadray_pov_revolved", "shaded", w, h);
     ASSERT_EQ(theirs.width(), w);
-
-    // Compare pixels whose 3x3 neighbourhood is covered in both pictures
-    auto covered = [](const Image &img, int x, int y) { return img.at(x, y).g > 0.05; };
-    int compared = 0, off = 0;
-    double sum = 0;
-    for (int y = 1; y + 1 < h; ++y)
-        for (int x = 1; x + 1 < w; ++x) {
-            bool inner = true;
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx)
-                    inner = inner && covered(ours, x + dx, y + dy) && covered(theirs, x + dx, y + dy);
-            if (!inner) continue;
-            ++compared;
-            double d = std::abs(ours.at(x, y).g - theirs.at(x, y).g);
-            sum += d;
-            off += d > 0.02;
-        }
-    std::printf("revolved shading: %d pixels compared, mean difference %.3g, %d off by > 0.02\n",
-                compared, compared ? sum / compared : 0.0, off);
-    EXPECT_GT(compared, w * h / 10);
-    EXPECT_LT(off, compared / 100 + 5);
+    expectSameShading(ours, theirs, "revolved");
 }
 
 }  // namespace

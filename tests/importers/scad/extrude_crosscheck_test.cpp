@@ -11,6 +11,7 @@
 #include <fstream>
 
 #include "core/ir/facets.h"
+#include "core/ir/prism.h"
 #include "core/math/bounds3.h"
 #include "importers/mesh/mesh_reader.h"
 #include "importers/scad/test_support.h"
@@ -42,6 +43,16 @@ double meshVolume(const ir::Mesh &m) {
     return v;
 }
 
+/// Volume of a polytope; its faces may be listed either way round (polytopePlanes orients
+/// them).
+double polytopeVolume(const ir::PolytopePrim &poly) {
+    double v = 0;
+    for (const auto &f : poly.faces)
+        for (size_t i = 1; i + 1 < f.size(); ++i)
+            v += triVolume(poly.vertices[f[0]], poly.vertices[f[i]], poly.vertices[f[i + 1]]);
+    return std::abs(v);
+}
+
 /// World vertices and volume of one primitive (faceted cylinders are polytopes by now).
 struct Solid {
     std::vector<Vec3> vertices;
@@ -60,11 +71,12 @@ Solid solidOf(const ir::Scene &scene, const PlacedPrimitive &p) {
         s.volume = d.x * d.y * d.z;
     } else if (const auto *poly = std::get_if<ir::PolytopePrim>(&p.node->shape)) {
         local = poly->vertices;
-        for (const auto &f : poly->faces)
-            for (size_t i = 1; i + 1 < f.size(); ++i)
-                s.volume += triVolume(local[f[0]], local[f[i]], local[f[i + 1]]);
-        // Faces may be listed either way round (polytopePlanes orients them)
-        s.volume = std::abs(s.volume);
+        s.volume = polytopeVolume(*poly);
+    } else if (const auto *prism = std::get_if<ir::PrismPrim>(&p.node->shape)) {
+        // Its corners; its volume from its mesh, or from its faces when convex
+        local = ir::prismPoints(*prism);
+        s.volume = prism->mesh >= 0 ? meshVolume(*scene.meshes[prism->mesh])
+                                    : polytopeVolume(ir::prismPolytope(*prism));
     } else if (const auto *mp = std::get_if<ir::MeshPrim>(&p.node->shape)) {
         local = scene.meshes[mp->mesh]->positions;
         s.volume = meshVolume(*scene.meshes[mp->mesh]);

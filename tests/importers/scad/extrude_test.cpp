@@ -5,6 +5,8 @@
 
 #include "core/ir/facets.h"
 #include "core/ir/mesh.h"
+#include "core/ir/prism.h"
+#include "importers/scad/extrude.h"
 #include "importers/scad/test_support.h"
 
 namespace rt::scad::test {
@@ -18,8 +20,18 @@ double meshVolume(const ir::Mesh &m) {
     return v / 6;
 }
 
+/// The mesh of a twisted or unevenly scaled extrusion, or of a non-convex prism.
 const ir::Mesh &meshOf(const Imported &r, const ir::Node &n) {
+    if (const auto *prism = std::get_if<ir::PrismPrim>(&n.shape))
+        return *r.scene.meshes.at(prism->mesh);
     return *r.scene.meshes.at(std::get<ir::MeshPrim>(n.shape).mesh);
+}
+
+/// The planar faces of a prism of a convex outline (which has no mesh).
+ir::PolytopePrim polytopeOf(const ir::Node &n) {
+    const auto &prism = std::get<ir::PrismPrim>(n.shape);
+    EXPECT_LT(prism.mesh, 0);
+    return ir::prismPolytope(prism);
 }
 
 TEST(Extrude, SquareBecomesBox) {
@@ -72,21 +84,47 @@ TEST(Extrude, ScaleZeroMakesPyramidAndCone) {
                             "linear_extrude(height=3, scale=-1) circle(1);");
     auto p = primitives(*r.scene.root);
     ASSERT_EQ(p.size(), 2u);
-    const auto &pyr = std::get<ir::PolytopePrim>(p[0].node->shape);
+    const auto &pyr = polytopeOf(*p[0].node);
     EXPECT_EQ(pyr.vertices.size(), 5u);
     EXPECT_EQ(pyr.faces.size(), 5u);
     EXPECT_EQ(std::get<ir::CylinderPrim>(p[1].node->shape).r2, 0);
 }
 
-TEST(Extrude, ConvexPolygonIsPolytopeNonConvexIsClosedMesh) {
+TEST(Extrude, PolygonIsPrismConvexWithoutMeshNonConvexWithClosedMesh) {
     Imported r = importText("linear_extrude(2) polygon([[0,0],[4,0],[4,3]]);"
                             "linear_extrude(2) polygon([[0,0],[4,0],[4,1],[1,1],[1,4],[0,4]]);");
     auto p = primitives(*r.scene.root);
     ASSERT_EQ(p.size(), 2u);
-    EXPECT_EQ(std::get<ir::PolytopePrim>(p[0].node->shape).vertices.size(), 6u);
+    EXPECT_EQ(polytopeOf(*p[0].node).vertices.size(), 6u);
+    const auto &prism = std::get<ir::PrismPrim>(p[1].node->shape);
+    EXPECT_EQ(prism.outline.size(), 6u);
+    EXPECT_EQ(prism.z0, 0);
+    EXPECT_EQ(prism.z1, 2);
+    EXPECT_EQ(prism.k0, 1);
+    EXPECT_EQ(prism.k1, 1);
     const ir::Mesh &m = meshOf(r, *p[1].node);
     EXPECT_TRUE(ir::analyzeMesh(m).oriented());
     EXPECT_NEAR(meshVolume(m), 7 * 2, 1e-12);
+}
+
+TEST(Extrude, PrismMeshIsClosedAndOutwardWithPrismVolumes) {
+    // An L of area 5: straight, narrowing, to an apex on top and from one below
+    const std::vector<ir::Point2> ell{{0, 0}, {3, 0}, {3, 1}, {1, 1}, {1, 3}, {0, 3}};
+    struct Case {
+        double k0, k1, volume;
+        size_t positions;
+    };
+    for (Case c : {Case{1, 1, 5 * 2, 12}, Case{2, 0.5, 2.0 / 3 * 5 * (4 + 0.25 + 1), 12},
+                   Case{1, 0, 5 * 2.0 / 3, 7}, Case{0, 1, 5 * 2.0 / 3, 7}}) {
+        ir::Mesh m;
+        ASSERT_TRUE(prismMesh(ir::PrismPrim{ell, 0, 2, c.k0, c.k1, -1}, m));
+        EXPECT_TRUE(ir::analyzeMesh(m).oriented()) << c.k0 << " " << c.k1;
+        EXPECT_NEAR(meshVolume(m), c.volume, 1e-12) << c.k0 << " " << c.k1;
+        EXPECT_EQ(m.positions.size(), c.positions);
+    }
+    // An outline of no area has no caps
+    ir::Mesh m;
+    EXPECT_FALSE(prismMesh(ir::PrismPrim{{{0, 0}, {1, 0}, {2, 0}}, 0, 1, 1, 1, -1}, m));
 }
 
 TEST(Extrude, PolygonHoleIsDifferenceWithPaddedSubtrahend) {
@@ -97,7 +135,7 @@ TEST(Extrude, PolygonHoleIsDifferenceWithPaddedSubtrahend) {
         auto p = primitives(*r.scene.root);
         ASSERT_EQ(p.size(), 2u) << hole;
         // The hole reaches beyond both caps, so no cap of it lies in a cap of the outline
-        const auto &h = std::get<ir::PolytopePrim>(p[1].node->shape);
+        const auto &h = polytopeOf(*p[1].node);
         double zmin = 1e9, zmax = -1e9;
         for (const Vec3 &v : h.vertices) {
             zmin = std::min(zmin, v.z);
@@ -134,7 +172,7 @@ TEST(Extrude, ScaledTranslateLiftsToShear) {
     Imported r = importText("linear_extrude(height=2, scale=2) translate([1,0]) square(1);");
     auto p = primitives(*r.scene.root);
     ASSERT_EQ(p.size(), 1u);
-    const auto &poly = std::get<ir::PolytopePrim>(p[0].node->shape);
+    const auto &poly = polytopeOf(*p[0].node);
     double xmin = 1e9, xmax = -1e9;
     for (const Vec3 &v : poly.vertices) {
         Vec3 w = p[0].worldFromObject.transformPoint(v);
@@ -257,7 +295,7 @@ TEST(Extrude, StiffCasesStayFinite) {
         "linear_extrude(1) polygon([[0,0],[1,0],[1,0],[2,0],[2,2],[1,2],[0,2],[0,1],[0,0]]);");
     auto p = primitives(*r.scene.root);
     ASSERT_EQ(p.size(), 1u);
-    EXPECT_EQ(std::get<ir::PolytopePrim>(p[0].node->shape).vertices.size(), 8u);
+    EXPECT_EQ(polytopeOf(*p[0].node).vertices.size(), 8u);
     // 10,000 points, non-convex (a wavy circle)
     r = importText(
         "n = 10000; linear_extrude(1) polygon([for (i = [0:n-1]) "
@@ -275,8 +313,9 @@ TEST(Extrude, StiffCasesStayFinite) {
         r = importText(src);
         p = primitives(*r.scene.root);
         ASSERT_EQ(p.size(), 1u) << src;
-        if (const auto *mp = std::get_if<ir::MeshPrim>(&p[0].node->shape)) {
-            const ir::Mesh &mm = *r.scene.meshes[mp->mesh];
+        const auto *prism = std::get_if<ir::PrismPrim>(&p[0].node->shape);
+        if (std::holds_alternative<ir::MeshPrim>(p[0].node->shape) || (prism && prism->mesh >= 0)) {
+            const ir::Mesh &mm = meshOf(r, *p[0].node);
             for (const Vec3 &v : mm.positions)
                 EXPECT_TRUE(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z));
             EXPECT_TRUE(ir::analyzeMesh(mm).oriented()) << src;

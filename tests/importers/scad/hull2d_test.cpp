@@ -6,16 +6,22 @@
 
 #include <cmath>
 
+#include "core/ir/prism.h"
 #include "importers/scad/shape2d.h"
 #include "importers/scad/test_support.h"
 
 namespace rt::scad::test {
 namespace {
 
-const ir::PolytopePrim &onlyPolytope(const Imported &r) {
+/// The faces of the one hull: a 3D hull's polytope, or an extruded 2D hull, a prism of a
+/// convex outline (which has no mesh).
+ir::PolytopePrim onlyPolytope(const Imported &r) {
     auto p = primitives(*r.scene.root);
     EXPECT_EQ(p.size(), 1u);
-    return std::get<ir::PolytopePrim>(p.at(0).node->shape);
+    if (const auto *poly = std::get_if<ir::PolytopePrim>(&p.at(0).node->shape)) return *poly;
+    const auto &prism = std::get<ir::PrismPrim>(p.at(0).node->shape);
+    EXPECT_LT(prism.mesh, 0);
+    return ir::prismPolytope(prism);
 }
 
 Bounds3 boundsOf(const ir::PolytopePrim &p) {

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "core/ir/prism.h"
 #include "core/math/bounds3.h"
 #include "importers/scad/test_support.h"
 
@@ -18,8 +19,8 @@ Bounds3 sceneBounds(const ir::Scene &scene) {
         std::vector<Vec3> local;
         if (const auto *box = std::get_if<ir::BoxPrim>(&p.node->shape)) {
             local = {box->min, box->max};
-        } else if (const auto *poly = std::get_if<ir::PolytopePrim>(&p.node->shape)) {
-            local = poly->vertices;
+        } else if (const auto *prism = std::get_if<ir::PrismPrim>(&p.node->shape)) {
+            local = ir::prismPoints(*prism);
         } else if (const auto *mp = std::get_if<ir::MeshPrim>(&p.node->shape)) {
             local = scene.meshes[mp->mesh]->positions;
         }
@@ -53,8 +54,8 @@ TEST(Offset, JoinTypesGiveTheirCorners) {
         EXPECT_TRUE(r.warnings().empty()) << r.warnings().front();
         auto p = primitives(*r.scene.root);
         EXPECT_EQ(p.size(), 1u);
-        const auto *poly = p.empty() ? nullptr : std::get_if<ir::PolytopePrim>(&p[0].node->shape);
-        return poly ? poly->vertices.size() / 2 : 0;
+        const auto *prism = p.empty() ? nullptr : std::get_if<ir::PrismPrim>(&p[0].node->shape);
+        return prism && prism->mesh < 0 ? prism->outline.size() : 0;
     };
     EXPECT_EQ(points("linear_extrude(1) offset(delta=1) square(2);"), 4u);
     EXPECT_EQ(points("linear_extrude(1) offset(delta=1, chamfer=true) square(2);"), 8u);
@@ -118,9 +119,10 @@ TEST(SelfIntersectingPolygon, IsFilledEvenOddWithoutAWarning) {
     auto prims = primitives(*r.scene.root);
     EXPECT_EQ(prims.size(), 5u);
     for (const auto &p : prims) {
-        const auto *prism = std::get_if<ir::PolytopePrim>(&p.node->shape);
+        const auto *prism = std::get_if<ir::PrismPrim>(&p.node->shape);
         ASSERT_TRUE(prism);
-        EXPECT_EQ(prism->vertices.size(), 6u);
+        EXPECT_EQ(prism->outline.size(), 3u);
+        EXPECT_LT(prism->mesh, 0);
     }
     // In CSG the pieces must be closed solids (an outline touching itself is split)
     r = importText("union() { linear_extrude(1) polygon([for (i = [0:4]) 5 * [cos(90 + 144 * "

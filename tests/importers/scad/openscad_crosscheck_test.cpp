@@ -180,6 +180,17 @@ void expectSameShape(const ir::PrimShape &a, const ir::PrimShape &b, const std::
         EXPECT_TRUE(near(c->z0, d.z0) && near(c->z1, d.z1) && near(c->r1, d.r1) &&
                     near(c->r2, d.r2))
             << where;
+    } else if (auto *p = std::get_if<ir::PrismPrim>(&a)) {
+        const auto &q = std::get<ir::PrismPrim>(b);
+        EXPECT_TRUE(near(p->z0, q.z0) && near(p->z1, q.z1) && near(p->k0, q.k0) &&
+                    near(p->k1, q.k1))
+            << where;
+        EXPECT_EQ(p->mesh < 0, q.mesh < 0) << where;
+        ASSERT_EQ(p->outline.size(), q.outline.size()) << where;
+        for (size_t i = 0; i < p->outline.size(); ++i)
+            EXPECT_TRUE(near(p->outline[i].x, q.outline[i].x) &&
+                        near(p->outline[i].y, q.outline[i].y))
+                << where << " outline point " << i;
     }
 }
 
@@ -213,6 +224,9 @@ void expectSameTree(const Canon &a, const ir::Scene &sa, const Canon &b, const i
         if (auto *ma = std::get_if<ir::MeshPrim>(&a.node->shape))
             expectSameMesh(*sa.meshes.at(ma->mesh),
                            *sb.meshes.at(std::get<ir::MeshPrim>(b.node->shape).mesh), where);
+        if (auto *pa = std::get_if<ir::PrismPrim>(&a.node->shape); pa && pa->mesh >= 0)
+            expectSameMesh(*sa.meshes.at(pa->mesh),
+                           *sb.meshes.at(std::get<ir::PrismPrim>(b.node->shape).mesh), where);
         // The .csg records $fn/$fa/$fs for round primitives only
         if (!std::holds_alternative<ir::BoxPrim>(a.node->shape)) {
             EXPECT_TRUE(near(a.node->fragments.fn, b.node->fragments.fn)) << where;

@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "core/ir/facets.h"
+#include "core/ir/prism.h"
 #include "importers/scad/openscad_support.h"
 
 namespace rt::scad::test {
@@ -31,6 +32,8 @@ std::vector<Vec3> worldPoints(const ir::Scene &scene) {
                                      i & 4 ? b->max.z : b->min.z));
         } else if (const auto *poly = std::get_if<ir::PolytopePrim>(&p.node->shape)) {
             local = poly->vertices;
+        } else if (const auto *prism = std::get_if<ir::PrismPrim>(&p.node->shape)) {
+            local = ir::prismPoints(*prism);
         } else if (const auto *mp = std::get_if<ir::MeshPrim>(&p.node->shape)) {
             local = scene.meshes[mp->mesh]->positions;
         } else {

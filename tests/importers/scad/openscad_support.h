@@ -10,12 +10,14 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/ir/diagnostics.h"
 #include "core/ir/facets.h"
 #include "core/ir/mesh.h"
+#include "core/ir/prism.h"
 #include "core/math/float_util.h"
 #include "importers/mesh/mesh_reader.h"
 #include "importers/scad/test_support.h"
@@ -68,13 +70,19 @@ inline ir::Mesh openscadOff(const std::string &src, const std::filesystem::path 
     return meshio::readMeshFile(off, diag);
 }
 
-/// The scene's one primitive, a polytope, with its vertices in world coordinates (an empty
-/// polytope, after a test failure, when the scene holds anything else).
+/// The scene's one primitive, a polytope or a prism of a convex outline (as its polytope),
+/// with its vertices in world coordinates (an empty polytope, after a test failure, when the
+/// scene holds anything else).
 inline ir::PolytopePrim worldPolytope(const ir::Scene &scene) {
     auto prims = primitives(*scene.root);
     EXPECT_EQ(prims.size(), 1u);
-    const auto *poly = prims.size() == 1 ? std::get_if<ir::PolytopePrim>(&prims[0].node->shape)
-                                         : nullptr;
+    std::optional<ir::PolytopePrim> poly;
+    if (prims.size() == 1) {
+        const ir::PrimShape &shape = prims[0].node->shape;
+        if (const auto *p = std::get_if<ir::PolytopePrim>(&shape)) poly = *p;
+        const auto *prism = std::get_if<ir::PrismPrim>(&shape);
+        if (prism && prism->mesh < 0) poly = ir::prismPolytope(*prism);
+    }
     EXPECT_TRUE(poly) << "not a polytope";
     if (!poly) return {};
     ir::PolytopePrim world = *poly;
