@@ -283,8 +283,10 @@ TEST(Extrude, PolygonTouchingItselfSweepsToClosedSolids) {
     auto p = primitives(*r.scene.root);
     ASSERT_EQ(p.size(), 3u);
     for (size_t i = 1; i < p.size(); ++i) {
-        const auto *mp = std::get_if<ir::MeshPrim>(&p[i].node->shape);
-        if (mp) EXPECT_TRUE(ir::analyzeMesh(*r.scene.meshes[mp->mesh]).closed());
+        int mesh = -1;
+        if (const auto *mp = std::get_if<ir::MeshPrim>(&p[i].node->shape)) mesh = mp->mesh;
+        if (const auto *pp = std::get_if<ir::PrismPrim>(&p[i].node->shape)) mesh = pp->mesh;
+        if (mesh >= 0) EXPECT_TRUE(ir::analyzeMesh(*r.scene.meshes[mesh]).closed());
     }
     EXPECT_TRUE(r.warnings().empty());
 }
