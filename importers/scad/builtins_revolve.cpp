@@ -14,6 +14,10 @@ namespace rt::scad {
 
 namespace {
 
+/// A profile whose points span at most this many of Clipper's grid steps in x may vanish on
+/// the grid for its size alone.
+constexpr double kBelowGridSteps = 4;
+
 std::string rangeText(double v) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.2f", v);
@@ -76,8 +80,12 @@ ir::NodePtr Evaluator::moduleRotateExtrude(const ModuleInstantiation &inst, cons
     if (range.empty) {
         // Nothing on OpenSCAD's 2D grid (2^-16): either no area at all, or a profile that
         // small, which OpenSCAD rounds away but the exact revolve below keeps
+        // (the points' extent decides: a profile spanning more than a few grid steps that
+        // Clipper empties has no area, e.g. two identical outlines under the even-odd rule)
         range = pointRange2d(*children, Affine2());
-        if (range.empty || range.min == range.max) return out;
+        if (range.empty || range.min == range.max ||
+            range.max - range.min > kBelowGridSteps / clipper2d::kScale)
+            return out;
         warn(inst.loc, "rotate_extrude(): the 2D profile is smaller than OpenSCAD's 2D grid "
                        "(1/65536), where OpenSCAD makes nothing of it; scadray revolves it "
                        "exactly");

@@ -157,6 +157,21 @@ TEST(Revolve, SidesAreThoseOfTheResultNotOfItsOperands) {
     EXPECT_EQ(ignoring, 1);
 }
 
+TEST(Revolve, ProfileBelowOpenScadsGridIsRevolvedWithAWarning) {
+    // OpenSCAD sanitizes a polygon() on its grid (a square alone it takes as it is)
+    Imported r = importText("rotate_extrude() polygon([[2e-6, 0], [3e-6, 0], [3e-6, 1e-6]]);");
+    EXPECT_EQ(primitives(*r.scene.root).size(), 1u);
+    EXPECT_TRUE(r.hasWarning("smaller than OpenSCAD's 2D grid"));
+    r = importText("rotate_extrude() translate([2e-6, 0]) square(1e-6);");
+    EXPECT_EQ(primitives(*r.scene.root).size(), 1u);
+    EXPECT_TRUE(r.warnings().empty());
+    // A profile with no area (one outline twice: even-odd) is empty, as in OpenSCAD, silently
+    r = importText(
+        "rotate_extrude() polygon([[1,0],[2,0],[2,1],[1,1]], [[0,1,2,3],[0,1,2,3]]);");
+    EXPECT_TRUE(primitives(*r.scene.root).empty());
+    EXPECT_TRUE(r.warnings().empty());
+}
+
 TEST(Revolve, FirstPositionalArgumentIsTheDxfFile) {
     // 2021.01 binds rotate_extrude(180) to file = "180", reads no children and makes nothing
     Imported r = importText("rotate_extrude(180) translate([2, 0]) square(1);");
