@@ -2,6 +2,8 @@
 // Exact number formatting for the POV-Ray writer.
 #include "exporters/povray/pov_format.h"
 
+#include <cctype>
+
 #include <charconv>
 
 namespace rt::pov {
@@ -39,6 +41,41 @@ std::string transform(const Mat4 &m) {
     if (linearIdentity) return "translate " + vec(Vec3(a[0][3], a[1][3], a[2][3]));
     if (diagonal && noTranslation) return "scale " + vec(Vec3(a[0][0], a[1][1], a[2][2]));
     return matrix(m);
+}
+
+std::string commentText(std::string_view text) {
+    static const char *hex = "0123456789abcdef";
+    std::string out;
+    out.reserve(text.size());
+    for (size_t i = 0; i < text.size(); ++i) {
+        unsigned char c = static_cast<unsigned char>(text[i]);
+        bool pair = (c == '*' && i + 1 < text.size() && text[i + 1] == '/') ||
+                    (c == '/' && i + 1 < text.size() && text[i + 1] == '*');
+        if (c >= 0x20 && c < 0x7f && c != '\\' && !pair) {
+            out += static_cast<char>(c);
+        } else {
+            out += "\\x";
+            out += hex[c >> 4];
+            out += hex[c & 15];
+        }
+    }
+    return out;
+}
+
+std::string safeFileName(std::string_view name) {
+    std::string out(name);
+    for (char &c : out)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-' && c != '_')
+            c = '_';
+    return out;
+}
+
+bool iniSafe(std::string_view value) {
+    for (char c : value) {
+        unsigned char u = static_cast<unsigned char>(c);
+        if (u < 0x20 || u == 0x7f || c == ';') return false;
+    }
+    return true;
 }
 
 }  // namespace rt::pov

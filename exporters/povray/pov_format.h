@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include "core/math/mat4.h"
 #include "core/math/rgb.h"
@@ -22,5 +23,20 @@ std::string matrix(const Mat4 &m);
 /// The shortest exact POV-Ray transform for m: `translate <...>` for a pure translation,
 /// `scale <...>` for a pure axis scale, otherwise `matrix <...>`.
 std::string transform(const Mat4 &m);
+
+/// Any text (a file name, a glTF mesh name) made safe inside a `//` comment of SDL: printable
+/// ASCII is kept except `\`, `*` and `/` next to each other (no `/*` or `*/`); every other
+/// byte (newlines and other control characters, non-ASCII and non-UTF-8 bytes) is written
+/// as `\xNN`. So nothing written into a comment can end it and reach POV-Ray's parser. The
+/// one function every user-supplied string in the exporter goes through.
+std::string commentText(std::string_view text);
+
+/// A name for a file scadray writes beside the .pov (a texture): letters, digits, `.`, `-`
+/// and `_`; every other byte becomes `_`, so the name is safe in an SDL string and an .ini.
+std::string safeFileName(std::string_view name);
+
+/// Whether a file name may be written as an .ini value: no control characters (a newline
+/// would start a new option, such as a shell-out command) and no `;` (a comment).
+bool iniSafe(std::string_view value);
 
 }  // namespace rt::pov

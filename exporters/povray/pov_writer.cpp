@@ -148,7 +148,7 @@ const ir::Node *firstPrimitive(const ir::Node &n) {
 class Writer {
   public:
     Writer(const ir::Scene &scene, std::string assetPrefix, std::vector<TextureFile> *images)
-        : scene_(scene), assetPrefix_(std::move(assetPrefix)), images_(images) {}
+        : scene_(scene), assetPrefix_(safeFileName(assetPrefix)), images_(images) {}
 
     std::string run(const std::string &sourceName) {
         collectUsed(*scene_.root);
@@ -173,7 +173,7 @@ class Writer {
     }
 
     void header(const std::string &sourceName) {
-        os_ << "// Exported by scadray from " << sourceName << "\n"
+        os_ << "// Exported by scadray from " << commentText(sourceName) << "\n"
             << "// The scene is right-handed with +Z up, as OpenSCAD's. Geometry is written in\n"
             << "// its own coordinates; the camera's negative `right` vector makes POV-Ray's\n"
             << "// look_at construction right-handed too.\n"
@@ -378,7 +378,7 @@ class Writer {
     static std::string comment(const SourceLoc &loc, const std::string &what) {
         std::string w = where(loc);
         if (w.empty() && what.empty()) return "";
-        return "// " + what + (what.empty() || w.empty() ? "" : ": ") + w + "\n";
+        return "// " + commentText(what + (what.empty() || w.empty() ? "" : ": ") + w) + "\n";
     }
 
     void line(int indent, const std::string &text) {
@@ -468,7 +468,7 @@ class Writer {
             }
             std::string w = where(cur->loc);
             line(indent, shape + "  texture { " + materialName(cur->material) + " }" + tail +
-                             " }" + (w.empty() ? "" : "  // " + w));
+                             " }" + (w.empty() ? "" : "  // " + commentText(w)));
             return;
         }
         std::string op;
@@ -478,7 +478,7 @@ class Writer {
             default: op = merge ? "merge" : "union"; break;
         }
         std::string w = where(cur->loc);
-        line(indent, op + " {" + (w.empty() ? "" : "  // " + w));
+        line(indent, op + " {" + (w.empty() ? "" : "  // " + commentText(w)));
         for (const auto &c : cur->children) solid(*c, Mat4(), indent + 1, "", merge);
         if (!tail.empty()) os_ << tail.substr(1) << "\n";
         line(indent, "}");
@@ -517,6 +517,12 @@ void exportPov(const ir::Scene &scene, const std::string &povPath, const std::st
 }
 
 std::string writeIni(const IniOptions &o) {
+    // A newline in a file name would start a new option (Pre_Scene_Command=... runs a shell)
+    for (const std::string *name : {&o.povFile, &o.outputFile})
+        if (!iniSafe(*name))
+            throw std::runtime_error("the file name '" + commentText(*name) +
+                                     "' has a control character or ';', which cannot be written "
+                                     "into a POV-Ray .ini file; choose another name");
     std::ostringstream os;
     os << "; scadray: render " << o.povFile << " headless, quietly and deterministically\n"
        << "Input_File_Name=" << o.povFile << "\n"
