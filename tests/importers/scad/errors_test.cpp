@@ -118,5 +118,18 @@ TEST(Errors, MissingMainFile) {
     EXPECT_THROW(importScad("/no/such/dir/main.scad", diag), ParseError);
 }
 
+TEST(Errors, TwoDCoordinatesBeyondClippersRangeAreLocated) {
+    // Clipper's integers hold |x| <= 7e13 (2^62 / 2^16): beyond, a located error, never a crash
+    expectError<EvalError>("linear_extrude(1)\n  offset(r=1e14) square(1);", 2, 3,
+                           "2D coordinate 100000000000000.000000 is beyond the range of "
+                           "OpenSCAD's 2D geometry (|x| <= 7e13)");
+    // A self-crossing polygon is sanitized by Clipper (plain shapes are lifted exactly, with no
+    // such limit)
+    expectError<EvalError>("linear_extrude(1)\n  polygon([[0,0],[1e15,1e15],[1e15,0],[0,1e15]]);",
+                           2, 3,
+                           "2D coordinate 1000000000000000.000000 is beyond the range of "
+                           "OpenSCAD's 2D geometry (|x| <= 7e13)");
+}
+
 }  // namespace
 }  // namespace rt::scad::test
