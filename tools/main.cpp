@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "core/ir/diagnostics.h"
+#include "core/system/large_stack.h"
 #include "tools/cli_common.h"
 #include "tools/commands.h"
 
@@ -25,8 +26,12 @@ int main(int argc, char **argv) {
         int rc = app.exit(e);
         return rc == 0 ? cli::kExitOk : cli::kExitUsage;
     }
+    if (!action) return cli::kExitUsage;
     try {
-        return action ? action() : cli::kExitUsage;
+        // On a large stack: the walks over a scene tree recurse once per level (ir::kMaxTreeDepth)
+        int rc = cli::kExitUsage;
+        runWithStack(kLargeStackBytes, [&] { rc = action(); });
+        return rc;
     } catch (const LocatedError &e) {
         std::cerr << formatDiagnostic(e.diagnostic()) << "\n";
         return cli::kExitInputError;

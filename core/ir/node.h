@@ -110,6 +110,11 @@ enum class NodeKind {
     Primitive,
 };
 
+/// Deepest nesting of nodes a scene may have (modules, transforms, colours and CSG operations
+/// each add a level). OpenSCAD 2021.01 stops recursive modules near 2,500 calls (7,500 levels
+/// here); the walks over the tree recurse, on stacks sized for this depth (core/system/large_stack.h).
+constexpr int kMaxTreeDepth = 20000;
+
 struct Node {
     NodeKind kind = NodeKind::Group;
     SourceLoc loc;
@@ -124,6 +129,13 @@ struct Node {
     /// Importer-internal: on an empty Group, the index of a 2D shape the importer keeps beside
     /// the tree until it is extruded or drawn as a plate. Never set in a finished scene.
     int shape2d = -1;
+
+    Node() = default;
+    Node(Node &&) = default;
+    Node &operator=(Node &&) = default;
+    /// Frees the subtree without recursion, so even a tree deeper than kMaxTreeDepth (one an
+    /// importer is still refusing) cannot overflow the stack on its way out.
+    ~Node();
 
     static std::unique_ptr<Node> makeGroup(NodeKind kind, SourceLoc loc);
     static std::unique_ptr<Node> makeTransform(const Mat4 &m, SourceLoc loc);

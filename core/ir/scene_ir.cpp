@@ -10,6 +10,17 @@
 
 namespace rt::ir {
 
+Node::~Node() {
+    if (children.empty()) return;
+    std::vector<std::unique_ptr<Node>> pending = std::move(children);
+    while (!pending.empty()) {
+        std::unique_ptr<Node> n = std::move(pending.back());
+        pending.pop_back();
+        for (auto &c : n->children) pending.push_back(std::move(c));
+        n->children.clear();
+    }  // each node is destroyed with no children left
+}
+
 std::unique_ptr<Node> Node::makeGroup(NodeKind kind, SourceLoc loc) {
     auto n = std::make_unique<Node>();
     n->kind = kind;

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "core/camera/camera.h"
+#include "core/system/large_stack.h"
 
 namespace rt {
 
@@ -41,9 +42,9 @@ GeometryBuffer renderGeometry(const RenderScene &scene, int width, int height, i
                 s.tie = si.tie;
             }
     };
-    std::vector<std::thread> pool;
-    for (int i = 0; i < n; ++i) pool.emplace_back(worker);
-    for (auto &t : pool) t.join();
+    std::vector<std::unique_ptr<StackThread>> pool;
+    for (int i = 0; i < n; ++i) pool.push_back(std::make_unique<StackThread>(kWorkerStackBytes, worker));
+    for (auto &t : pool) t->join();
     return buf;
 }
 

@@ -14,6 +14,7 @@
 #include "core/camera/camera.h"
 #include "core/math/rng.h"
 #include "core/render/whitted.h"
+#include "core/system/large_stack.h"
 
 namespace rt {
 
@@ -117,8 +118,9 @@ RenderResult renderImage(const RenderScene &scene, const RenderOptions &opts) {
         finished.notify_all();
     };
 
-    std::vector<std::thread> pool;
-    for (int i = 0; i < threads; ++i) pool.emplace_back(worker, i);
+    std::vector<std::unique_ptr<StackThread>> pool;
+    for (int i = 0; i < threads; ++i)
+        pool.push_back(std::make_unique<StackThread>(kWorkerStackBytes, [&worker, i] { worker(i); }));
     {
         std::unique_lock<std::mutex> lock(mutex);
         while (doneTiles.load() < tileCount) {
@@ -126,7 +128,7 @@ RenderResult renderImage(const RenderScene &scene, const RenderOptions &opts) {
             if (opts.progress) opts.progress(double(doneTiles.load()) / tileCount);
         }
     }
-    for (auto &t : pool) t.join();
+    for (auto &t : pool) t->join();
     for (const auto &s : threadStats) result.stats += s;
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
