@@ -78,4 +78,43 @@ bool iniSafe(std::string_view value) {
     return true;
 }
 
+std::string sdlDirectiveProblem(std::string_view sdl) {
+    auto isIdent = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    int line = 1, commentDepth = 0;
+    bool inString = false;
+    for (size_t i = 0; i < sdl.size(); ++i) {
+        char c = sdl[i];
+        char next = i + 1 < sdl.size() ? sdl[i + 1] : '\0';
+        if (c == '\n') ++line;
+        if (commentDepth > 0) {  // POV-Ray's block comments nest
+            if (c == '/' && next == '*') ++commentDepth, ++i;
+            else if (c == '*' && next == '/') --commentDepth, ++i;
+        } else if (inString) {
+            if (c == '\\' && next != '\0' && next != '\n') ++i;
+            else if (c == '"') inString = false;
+            else if (c == '\n' || c == '\r')
+                return "line " + std::to_string(line) + ": a string runs past the end of its line";
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '/' && next == '*') {
+            commentDepth = 1, ++i;
+        } else if (c == '/' && next == '/') {
+            while (i + 1 < sdl.size() && sdl[i + 1] != '\n' && sdl[i + 1] != '\r') ++i;
+        } else if (c == '#') {
+            size_t j = i + 1;
+            while (j < sdl.size() && (sdl[j] == ' ' || sdl[j] == '\t')) ++j;
+            size_t k = j;
+            while (k < sdl.size() && isIdent(sdl[k])) ++k;
+            std::string_view word = sdl.substr(j, k - j);
+            if (word != "version" && word != "declare")
+                return "line " + std::to_string(line) + ": directive #" +
+                       commentText(word.substr(0, 32)) + " (only #version and #declare are allowed)";
+            i = k - 1;
+        }
+    }
+    if (inString) return "a string is not closed";
+    if (commentDepth > 0) return "a /* comment is not closed";
+    return "";
+}
+
 }  // namespace rt::pov

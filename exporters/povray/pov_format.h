@@ -39,4 +39,12 @@ std::string safeFileName(std::string_view name);
 /// would start a new option, such as a shell-out command) and no `;` (a comment).
 bool iniSafe(std::string_view value);
 
+/// Checks SDL before POV-Ray runs it, as POV-Ray's tokenizer reads it (`//` and nested `/* */`
+/// comments, strings with `\` escapes): the code may use only the directives the exporter
+/// writes (`#version`, `#declare`), never file I/O (`#fopen`, `#read`, `#write`, `#include`),
+/// macros or anything else. Returns "" when the text is acceptable, otherwise the problem with
+/// its line number. A second line of defence behind commentText: POV-Ray's own I/O
+/// restrictions cannot be narrowed below the system povray.conf (Debian's allows /tmp).
+std::string sdlDirectiveProblem(std::string_view sdl);
+
 }  // namespace rt::pov

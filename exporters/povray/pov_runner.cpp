@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/system/subprocess.h"
+#include "exporters/povray/pov_format.h"
 
 namespace rt::pov {
 
@@ -35,12 +36,50 @@ constexpr const char *kRestrictedConf =
     "[Permitted Paths]\n"
     "read+write = .\n";
 
+/// The .ini options scadray writes (pov_writer.cpp writeIni); any other could make POV-Ray read
+/// or run something (Include_Header, Pre_Scene_Command, ...).
+bool knownIniKey(const std::string &key) {
+    static const char *kKeys[] = {"Input_File_Name", "Output_File_Name", "Width",           "Height",
+                                  "Antialias",       "Output_File_Type", "Bits_Per_Color",  "File_Gamma",
+                                  "Display",         "Verbose",          "Render_Console",  "Pause_When_Done",
+                                  "Work_Threads"};
+    for (const char *k : kKeys)
+        if (key == k) return true;
+    return false;
+}
+
+/// Refuses an .ini or scene that is not what the exporter writes (see sdlDirectiveProblem).
+void vetExportedScene(const fs::path &dir, const std::string &iniFile) {
+    std::ifstream ini(dir / iniFile, std::ios::binary);
+    if (!ini) throw std::runtime_error("cannot read " + (dir / iniFile).string());
+    std::string pov;
+    for (std::string line; std::getline(ini, line);) {
+        if (line.empty() || line[0] == ';') continue;
+        size_t eq = line.find('=');
+        std::string key = line.substr(0, eq);
+        if (eq == std::string::npos || !knownIniKey(key) || !iniSafe(line.substr(eq + 1)))
+            throw std::runtime_error("refusing to run POV-Ray: " + iniFile + " has an option scadray does not write: " +
+                                     commentText(line.substr(0, 80)));
+        if (key == "Input_File_Name") pov = line.substr(eq + 1);
+    }
+    if (pov.empty()) throw std::runtime_error("refusing to run POV-Ray: " + iniFile + " names no scene");
+    std::ifstream in(dir / pov, std::ios::binary);
+    std::ostringstream sdl;
+    sdl << in.rdbuf();
+    if (!in) throw std::runtime_error("cannot read " + (dir / pov).string());
+    std::string problem = sdlDirectiveProblem(sdl.str());
+    if (!problem.empty())
+        throw std::runtime_error("refusing to run POV-Ray on " + pov + ", which is not what scadray exports: " +
+                                 problem);
+}
+
 }  // namespace
 
 PovRunResult runPovRay(const std::string &dir, const std::string &iniFile, int threads,
                        int timeoutSeconds) {
     if (!povrayAvailable())
         throw std::runtime_error("POV-Ray (povray) is not installed; tools/setup.sh installs it");
+    vetExportedScene(dir.empty() ? "." : dir, iniFile);
     std::vector<std::string> args = {"povray", iniFile};
     if (threads > 0) args.push_back("+WT" + std::to_string(threads));
     // POV-Ray reads a user povray.conf from $HOME/.povray/3.7 on top of the system one; with

@@ -87,27 +87,74 @@ TEST(PovHostile, IniRefusesNamesThatWouldAddOptions) {
     EXPECT_NO_THROW(pov::writeIni(o));
 }
 
+TEST(PovHostile, DirectiveScanReadsSdlAsPovRayDoes) {
+    EXPECT_EQ(pov::sdlDirectiveProblem("#version 3.7;\n#declare A = 1;\n# declare B = 2;\n"), "");
+    // Inside comments (nested block comments included) and strings nothing counts
+    EXPECT_EQ(pov::sdlDirectiveProblem("// #fopen F \"x\" write\n/* a /* #write */ #system */\n"), "");
+    EXPECT_EQ(pov::sdlDirectiveProblem("#declare S = \"quote \\\" #fopen\";\n"), "");
+    // Everything else is refused, with its line
+    EXPECT_NE(pov::sdlDirectiveProblem("sphere{0,1}\n#fopen F \"x\" write\n").find("line 2: directive #fopen"),
+              std::string::npos);
+    EXPECT_NE(pov::sdlDirectiveProblem("#  include \"/etc/passwd\"").find("#include"), std::string::npos);
+    EXPECT_NE(pov::sdlDirectiveProblem("#macro M() #end").find("#macro"), std::string::npos);
+    EXPECT_NE(pov::sdlDirectiveProblem("/* a /* b */ #write */ #write(F)").find("#write"), std::string::npos);
+    // A `//` comment ends at a carriage return too, as in POV-Ray
+    EXPECT_NE(pov::sdlDirectiveProblem("// x\r#fopen F").find("#fopen"), std::string::npos);
+    EXPECT_NE(pov::sdlDirectiveProblem("/* open"), "");
+    EXPECT_NE(pov::sdlDirectiveProblem("#declare S = \"open\n#fopen"), "");
+    // The exporter's own output of the hostile scene passes
+    EXPECT_EQ(pov::sdlDirectiveProblem(pov::writeSdl(hostileScene(), kPayload)), "");
+}
+
+struct PovRunDir {
+    fs::path dir = fs::temp_directory_path() / ("scadray_hostile_" + std::to_string(::getpid()));
+    PovRunDir() {
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+    }
+    ~PovRunDir() { fs::remove_all(dir); }
+    void write(const std::string &name, const std::string &text) const { std::ofstream(dir / name) << text; }
+    void writeIni(const std::string &pov) const {
+        pov::IniOptions o;
+        o.povFile = pov;
+        o.outputFile = "out.png";
+        o.width = 8;
+        o.height = 8;
+        write("scene.ini", pov::writeIni(o));
+    }
+};
+
+TEST(PovHostile, CheckRefusesScenesWithFileIoOrForeignIniOptions) {
+    PovRunDir run;
+    // Refused before POV-Ray starts, so this holds with or without POV-Ray installed
+    run.write("io.pov", "#fopen F \"pwned.txt\" write\n#write(F, \"x\")\n#fclose F\nsphere { 0, 1 }\n");
+    run.writeIni("io.pov");
+    try {
+        pov::runPovRay(run.dir.string(), "scene.ini", 1, 60);
+        ADD_FAILURE() << "a scene with #fopen ran";
+    } catch (const std::runtime_error &e) {
+        EXPECT_NE(std::string(e.what()).find("line 1: directive #fopen"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(fs::exists(run.dir / "pwned.txt"));
+    run.write("plain.pov", "sphere { 0, 1 pigment { rgb 1 } }\n");
+    run.write("scene.ini", "Input_File_Name=plain.pov\nPre_Scene_Command=touch pwned.txt\n");
+    EXPECT_THROW(pov::runPovRay(run.dir.string(), "scene.ini", 1, 60), std::runtime_error);
+    run.write("scene.ini", "Input_File_Name=plain.pov\nInclude_Header=/etc/passwd\n");
+    EXPECT_THROW(pov::runPovRay(run.dir.string(), "scene.ini", 1, 60), std::runtime_error);
+    EXPECT_FALSE(fs::exists(run.dir / "pwned.txt"));
+}
+
 TEST(PovHostile, PovRayRunsUnderItsOwnRestrictedConf) {
     if (!pov::povrayAvailable()) GTEST_SKIP() << "povray is not installed; run skipped";
-    fs::path dir = fs::temp_directory_path() / ("scadray_hostile_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    // Writing in its own folder still works under the restricted conf
-    std::ofstream(dir / "fine.pov") << "#fopen F \"inside.txt\" write\n#write(F, \"x\")\n"
-                                       "#fclose F\nsphere { 0, 1 pigment { rgb 1 } }\n";
-    pov::IniOptions o;
-    o.povFile = "fine.pov";
-    o.outputFile = "fine.png";
-    o.width = 8;
-    o.height = 8;
-    std::ofstream(dir / "fine.ini") << pov::writeIni(o);
-    EXPECT_NO_THROW(pov::runPovRay(dir.string(), "fine.ini", 1, 60));
-    EXPECT_TRUE(fs::exists(dir / "inside.txt"));
-    std::ifstream conf(dir / ".povray" / "3.7" / "povray.conf");
+    PovRunDir run;
+    run.write("plain.pov", "#version 3.7;\nbackground { rgb 1 }\nsphere { 0, 1 pigment { rgb 1 } }\n");
+    run.writeIni("plain.pov");
+    EXPECT_NO_THROW(pov::runPovRay(run.dir.string(), "scene.ini", 1, 60));
+    EXPECT_TRUE(fs::exists(run.dir / "out.png"));
+    std::ifstream conf(run.dir / ".povray" / "3.7" / "povray.conf");
     std::string text((std::istreambuf_iterator<char>(conf)), std::istreambuf_iterator<char>());
     EXPECT_NE(text.find("[Shellout Security]\nforbidden"), std::string::npos);
     EXPECT_NE(text.find("read+write = ."), std::string::npos);
-    fs::remove_all(dir);
 }
 
 }  // namespace
