@@ -8,6 +8,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <algorithm>
 #include <filesystem>
 
 #include "importers/gltf/gltf_internal.h"
@@ -305,13 +306,27 @@ bool fsReadWholeFile(std::vector<unsigned char> *out, std::string *err, const st
         return false;
     }
     struct stat st {};
-    bool ok = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size >= 0 &&
-              static_cast<uint64_t>(st.st_size) <= kMaxExternalFileBytes &&
-              static_cast<uint64_t>(st.st_size) <= kMaxExternalBytes - files->bytesRead;
-    if (!ok) {
+    std::string refusal;
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_size < 0) {
+        refusal = "is not a regular file";
+    } else {
+        auto size = static_cast<uint64_t>(st.st_size);
+        uint64_t distinct = files->distinctBytes;
+        if (!files->sizes.count(resolved.string())) distinct += size;
+        uint64_t budget = std::min(kMaxExternalBytes, 2 * distinct + kExternalRereadSlack);
+        if (size > kMaxExternalFileBytes)
+            refusal = "is " + std::to_string(size) + " bytes, more than the limit of " +
+                      std::to_string(kMaxExternalFileBytes) + " for one file";
+        else if (size > budget - std::min(budget, files->bytesRead))
+            refusal = "would bring the bytes read for this model to " +
+                      std::to_string(files->bytesRead + size) +
+                      ", more than twice the size of the files it names plus " +
+                      std::to_string(kExternalRereadSlack) + " (one file named again and again)";
+    }
+    if (!refusal.empty()) {
         ::close(fd);
-        files->refused.push_back("'" + path + "' is not a regular file or is too large");
-        if (err) *err += "not a regular file, or too large";
+        files->refused.push_back("'" + path + "' " + refusal);
+        if (err) *err += refusal;
         return false;
     }
     size_t size = static_cast<size_t>(st.st_size);
@@ -326,6 +341,7 @@ bool fsReadWholeFile(std::vector<unsigned char> *out, std::string *err, const st
     ::close(fd);
     out->resize(got);
     files->bytesRead += got;
+    if (files->sizes.emplace(resolved.string(), got).second) files->distinctBytes += got;
     return true;
 }
 

@@ -271,7 +271,7 @@ std::unique_ptr<LoadedFile> loadFile(const std::string &path, const SourceLoc &l
     bool binary = bytes.size() >= 4 && std::equal(bytes.begin(), bytes.begin() + 4, "glTF");
     std::string baseDir = std::filesystem::path(path).parent_path().string();
 
-    detail::FileAccess files{detail::ModelFolder(path), baseDir, {}, 0};
+    detail::FileAccess files{detail::ModelFolder(path), baseDir, {}, 0, {}, 0};
     prescan(jsonText(bytes, binary), binary, path, loc, files.folder);
 
     auto file = std::make_unique<LoadedFile>();

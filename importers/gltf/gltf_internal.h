@@ -48,9 +48,11 @@ std::string jsonPath(const char *array, size_t index);
 constexpr size_t kMaxJsonDepth = 512;
 /// Largest file a buffer or image URI may name: the GLB format's own limit (4 GiB - 1).
 constexpr uint64_t kMaxExternalFileBytes = 0xFFFFFFFFull;
-/// Most bytes read from all the files a model names, together (one 100 MB file named by 10^4
-/// buffers would otherwise be read 10^4 times).
+/// Most bytes read from all the files a model names, together: at most this, and at most twice
+/// the size of the distinct files plus kExternalRereadSlack (one 1 MB file named by 10^4
+/// buffers would otherwise be read, and kept, 10^4 times).
 constexpr uint64_t kMaxExternalBytes = 0xFFFFFFFFull;
+constexpr uint64_t kExternalRereadSlack = uint64_t(16) << 20;
 
 /// A buffer or image URI in the JSON text.
 struct UriRef {
@@ -98,6 +100,8 @@ struct FileAccess {
     std::string baseDir;  ///< the base directory handed to tinygltf
     std::vector<std::string> refused;
     uint64_t bytesRead = 0;
+    std::map<std::string, uint64_t> sizes;  ///< distinct files read, by canonical path
+    uint64_t distinctBytes = 0;
     tinygltf::FsCallbacks callbacks();
 };
 

@@ -155,6 +155,39 @@ TEST(GltfHostile, GlbBuffersWithoutUriCannotMultiplyTheBinChunk) {
             << e->what();
 }
 
+TEST(GltfHostile, OneFileNamedByManyBuffersIsNotReadAgainAndAgain) {
+    // 200 buffers naming one 256 KiB file would keep 50 MiB; reading stops past twice the
+    // file's size plus 16 MiB
+    TempDir tmp;
+    writeText(tmp.file("one.bin"), std::string(256 << 10, '\0'));
+    std::string json = R"({"asset":{"version":"2.0"},"buffers":[)";
+    for (int i = 0; i < 200; ++i)
+        json += std::string(i ? "," : "") + R"({"byteLength":262144,"uri":"one.bin"})";
+    writeText(tmp.file("many.gltf"), json + "]}");
+    if (auto e = parseError(tmp.file("many.gltf")))
+        EXPECT_NE(std::string(e->what()).find("more than twice the size of the files it names"),
+                  std::string::npos)
+            << e->what();
+    // Named twice is fine
+    json = R"({"asset":{"version":"2.0"},"scenes":[{"nodes":[]}],"buffers":[)"
+           R"({"byteLength":262144,"uri":"one.bin"},{"byteLength":262144,"uri":"one.bin"}]})";
+    writeText(tmp.file("twice.gltf"), json);
+    DiagnosticSink diag;
+    EXPECT_NO_THROW(importGltf(tmp.file("twice.gltf"), diag));
+}
+
+TEST(GltfHostile, AccessorOfZerosIsBoundedByTheBuffers) {
+    // No bufferView: glTF starts the accessor as zeros; 6e7 of them took 2.4 GB from 650 bytes
+    TempDir tmp;
+    std::string text = replaceOnce(triangleGltf(""), R"({"bufferView":0,"componentType":5126,"count":3,)",
+                                   R"({"componentType":5126,"count":60000000,)");
+    writeText(tmp.file("zeros.gltf"), text);
+    if (auto e = parseError(tmp.file("zeros.gltf")))
+        EXPECT_NE(std::string(e->what()).find("count 60000000 without a bufferView is more than 65536"),
+                  std::string::npos)
+            << e->what();
+}
+
 TEST(GltfHostile, LongStringInInvalidJsonIsLocated) {
     // The error message quotes the bad token; a std::regex over it recursed per character and
     // overflowed the stack near 26,000 characters
