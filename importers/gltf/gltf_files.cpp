@@ -12,6 +12,7 @@
 #include <filesystem>
 
 #include "importers/gltf/gltf_internal.h"
+#include "importers/scad/lexer.h"  // appendUtf8
 
 namespace rt::gltf::detail {
 
@@ -28,25 +29,6 @@ struct Container {
     size_t index = 0;
     bool hasUri = false;  ///< objects: a "uri" member was seen
 };
-
-/// Appends the UTF-8 encoding of `cp`.
-void appendUtf8(std::string &out, uint32_t cp) {
-    if (cp < 0x80) {
-        out += static_cast<char>(cp);
-    } else if (cp < 0x800) {
-        out += static_cast<char>(0xC0 | (cp >> 6));
-        out += static_cast<char>(0x80 | (cp & 0x3F));
-    } else if (cp < 0x10000) {
-        out += static_cast<char>(0xE0 | (cp >> 12));
-        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
-        out += static_cast<char>(0x80 | (cp & 0x3F));
-    } else {
-        out += static_cast<char>(0xF0 | (cp >> 18));
-        out += static_cast<char>(0x80 | ((cp >> 12) & 0x3F));
-        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
-        out += static_cast<char>(0x80 | (cp & 0x3F));
-    }
-}
 
 int hexValue(char c) {
     if (c >= '0' && c <= '9') return c - '0';
@@ -82,7 +64,7 @@ size_t readString(std::string_view text, size_t at, std::string &out) {
                     int h = hexValue(text[i]);
                     cp = cp * 16 + static_cast<uint32_t>(h < 0 ? 0 : h);
                 }
-                appendUtf8(out, cp);  // surrogate pairs are left as they are (only compared)
+                scad::appendUtf8(out, cp);  // surrogate pairs are left as they are (only compared)
                 break;
             }
             default: out += e; break;  // \" \\ \/ and anything invalid, which nlohmann reports
@@ -318,10 +300,11 @@ bool fsReadWholeFile(std::vector<unsigned char> *out, std::string *err, const st
             refusal = "is " + std::to_string(size) + " bytes, more than the limit of " +
                       std::to_string(kMaxExternalFileBytes) + " for one file";
         else if (size > budget - std::min(budget, files->bytesRead))
-            refusal = "would bring the bytes read for this model to " +
+            refusal = "is named too often: reading it again would bring the bytes read for this "
+                      "model to " +
                       std::to_string(files->bytesRead + size) +
                       ", more than twice the size of the files it names plus " +
-                      std::to_string(kExternalRereadSlack) + " (one file named again and again)";
+                      std::to_string(kExternalRereadSlack);
     }
     if (!refusal.empty()) {
         ::close(fd);
