@@ -29,12 +29,23 @@ std::optional<ImageHeader> pngHeader(std::span<const unsigned char> b) {
     h.height = be32(b.data() + 20);
     h.bitDepth = b[24];
     switch (b[25]) {
-        case 0: h.channels = 1; break;  // grey
-        case 2: h.channels = 3; break;  // RGB
-        case 3: h.channels = 1; break;  // palette index
-        case 4: h.channels = 2; break;  // grey + alpha
-        case 6: h.channels = 4; break;  // RGBA
-        default: return std::nullopt;
+        case 0:
+            h.channels = 1;
+            break;  // grey
+        case 2:
+            h.channels = 3;
+            break;  // RGB
+        case 3:
+            h.channels = 1;
+            break;  // palette index
+        case 4:
+            h.channels = 2;
+            break;  // grey + alpha
+        case 6:
+            h.channels = 4;
+            break;  // RGBA
+        default:
+            return std::nullopt;
     }
     return h;
 }
@@ -54,8 +65,8 @@ std::optional<ImageHeader> jpegHeader(std::span<const unsigned char> b) {
             continue;
         }
         size_t length = be16(b.data() + at + 2);
-        bool sof = marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 &&
-                   marker != 0xCC;
+        bool sof =
+            marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
         if (sof) {
             if (at + 10 > b.size()) return std::nullopt;
             ImageHeader h;
@@ -111,8 +122,7 @@ std::string imageSizeProblem(uint64_t width, uint64_t height, uint64_t maxPixels
     std::string size = std::to_string(width) + " x " + std::to_string(height) + " pixels";
     if (width == 0 || height == 0) return "declares " + size;
     if (width > maxSide || height > maxSide)
-        return "declares " + size + ", a side longer than the limit of " +
-               std::to_string(maxSide);
+        return "declares " + size + ", a side longer than the limit of " + std::to_string(maxSide);
     if (width * height > maxPixels)
         return "declares " + size + ", more than the limit of " + std::to_string(maxPixels) +
                " pixels";

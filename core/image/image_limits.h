@@ -40,8 +40,7 @@ uint64_t pngRawBytes(uint64_t width, uint64_t height, int channels, int bitDepth
 
 /// Empty when an image of `width` x `height` fits `maxPixels` and `maxSide`, else the reason
 /// ("is 30000 x 30000 pixels, more than the limit of ...").
-std::string imageSizeProblem(uint64_t width, uint64_t height, uint64_t maxPixels,
-                             uint64_t maxSide);
+std::string imageSizeProblem(uint64_t width, uint64_t height, uint64_t maxPixels, uint64_t maxSide);
 
 /// Empty when a PNG declaring `header` can plausibly be held by `fileBytes` bytes (deflate's
 /// ratio bound), else the reason.

@@ -6,9 +6,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
-#include <algorithm>
 #include <filesystem>
 
 #include "importers/gltf/gltf_internal.h"
@@ -53,11 +53,21 @@ size_t readString(std::string_view text, size_t at, std::string &out) {
         char e = text[i + 1];
         i += 2;
         switch (e) {
-            case 'b': out += '\b'; break;
-            case 'f': out += '\f'; break;
-            case 'n': out += '\n'; break;
-            case 'r': out += '\r'; break;
-            case 't': out += '\t'; break;
+            case 'b':
+                out += '\b';
+                break;
+            case 'f':
+                out += '\f';
+                break;
+            case 'n':
+                out += '\n';
+                break;
+            case 'r':
+                out += '\r';
+                break;
+            case 't':
+                out += '\t';
+                break;
             case 'u': {
                 uint32_t cp = 0;
                 for (int k = 0; k < 4 && i < text.size(); ++k, ++i) {
@@ -67,7 +77,9 @@ size_t readString(std::string_view text, size_t at, std::string &out) {
                 scad::appendUtf8(out, cp);  // surrogate pairs are left as they are (only compared)
                 break;
             }
-            default: out += e; break;  // \" \\ \/ and anything invalid, which nlohmann reports
+            default:
+                out += e;
+                break;  // \" \\ \/ and anything invalid, which nlohmann reports
         }
     }
     return i < text.size() ? i + 1 : i;
@@ -300,11 +312,12 @@ bool fsReadWholeFile(std::vector<unsigned char> *out, std::string *err, const st
             refusal = "is " + std::to_string(size) + " bytes, more than the limit of " +
                       std::to_string(kMaxExternalFileBytes) + " for one file";
         else if (size > budget - std::min(budget, files->bytesRead))
-            refusal = "is named too often: reading it again would bring the bytes read for this "
-                      "model to " +
-                      std::to_string(files->bytesRead + size) +
-                      ", more than twice the size of the files it names plus " +
-                      std::to_string(kExternalRereadSlack);
+            refusal =
+                "is named too often: reading it again would bring the bytes read for this "
+                "model to " +
+                std::to_string(files->bytesRead + size) +
+                ", more than twice the size of the files it names plus " +
+                std::to_string(kExternalRereadSlack);
     }
     if (!refusal.empty()) {
         ::close(fd);

@@ -241,15 +241,15 @@ void prescan(std::string_view text, bool binary, const std::string &path, const 
 [[noreturn]] void failLoad(const std::string &err, const std::vector<unsigned char> &bytes,
                            bool binary, const std::string &path, const SourceLoc &loc) {
     std::string message;
-    for (const std::string &line : splitLines(err))
-        message += (message.empty() ? "" : "; ") + line;
+    for (const std::string &line : splitLines(err)) message += (message.empty() ? "" : "; ") + line;
     if (message.empty()) message = "unknown error";
     // A JSON syntax error points into the text: at its line and column for a .gltf, in the
     // message for the JSON chunk of a .glb
     if (std::optional<JsonError> e = parseJsonError(message)) {
         if (!binary)
-            throw ParseError(SourceLoc(std::make_shared<const std::string>(path), e->line, e->column),
-                             "invalid JSON: " + e->what);
+            throw ParseError(
+                SourceLoc(std::make_shared<const std::string>(path), e->line, e->column),
+                "invalid JSON: " + e->what);
         throw ParseError(loc, "invalid JSON chunk in binary glTF at its line " +
                                   std::to_string(e->line) + ", column " +
                                   std::to_string(e->column) + ": " + e->what);
@@ -297,8 +297,7 @@ std::unique_ptr<LoadedFile> loadFile(const std::string &path, const SourceLoc &l
         ok = false;
     }
     // The scan above refuses every URI that leads outside; this catches what it could not see
-    if (!files.refused.empty())
-        throw ParseError(loc, "refused to read " + files.refused.front());
+    if (!files.refused.empty()) throw ParseError(loc, "refused to read " + files.refused.front());
     for (const std::string &line : splitLines(warn)) diag.warning(loc, "tinygltf: " + line);
     for (const std::string &problem : file->images.problems) diag.warning(loc, problem);
     if (!ok) failLoad(err, bytes, binary, path, loc);
@@ -368,8 +367,7 @@ ir::Scene importGltf(const std::string &path, DiagnosticSink &diag, const Import
     SourceLoc loc = fileLoc(path);
     checkOptions(opts, loc);
     std::unique_ptr<LoadedFile> file = loadFile(path, loc, diag, true);
-    detail::ImportContext ctx{file->model,          loc, diag, opts, safeBaseName(path),
-                              &file->imageBytes};
+    detail::ImportContext ctx{file->model, loc, diag, opts, safeBaseName(path), &file->imageBytes};
     checkExtensions(ctx);
     int sceneIndex = chooseScene(file->model, opts, loc);
 
@@ -391,8 +389,7 @@ ir::NodePtr importGltfInto(ir::Scene &scene, const std::string &path, const Sour
         throw SceneError(loc, "import of '" + path + "': material " +
                                   std::to_string(*materialOverride) + " does not exist");
     std::unique_ptr<LoadedFile> file = loadFile(path, floc, diag, !materialOverride);
-    detail::ImportContext ctx{file->model,          floc, diag, opts, safeBaseName(path),
-                              &file->imageBytes};
+    detail::ImportContext ctx{file->model, floc, diag, opts, safeBaseName(path), &file->imageBytes};
     checkExtensions(ctx);
     int sceneIndex = chooseScene(file->model, opts, floc);
 

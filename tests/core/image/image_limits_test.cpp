@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Image headers declaring more than the file can hold or than the limits allow (issue 14): the
 // reader refuses them before allocating the declared pixels.
+#include "core/image/image_limits.h"
+
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
@@ -10,7 +12,6 @@
 #include <stdexcept>
 
 #include "core/image/image_io.h"
-#include "core/image/image_limits.h"
 
 namespace rt {
 namespace {
@@ -31,7 +32,8 @@ class ImageLimits : public ::testing::Test {
     std::string write(const std::string &name, const std::vector<unsigned char> &bytes) {
         std::string path = (dir / name).string();
         std::ofstream out(path, std::ios::binary);
-        out.write(reinterpret_cast<const char *>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+        out.write(reinterpret_cast<const char *>(bytes.data()),
+                  static_cast<std::streamsize>(bytes.size()));
         return path;
     }
 
@@ -62,7 +64,8 @@ void putBe32(std::vector<unsigned char> &out, uint32_t v) {
 }
 
 /// A PNG chunk with its CRC (libpng checks it).
-void chunk(std::vector<unsigned char> &png, const char *type, const std::vector<unsigned char> &data) {
+void chunk(std::vector<unsigned char> &png, const char *type,
+           const std::vector<unsigned char> &data) {
     putBe32(png, static_cast<uint32_t>(data.size()));
     size_t start = png.size();
     png.insert(png.end(), type, type + 4);
@@ -108,7 +111,8 @@ std::vector<unsigned char> exrDeclaring(const fs::path &dir, int32_t width, int3
     std::string path = (dir / "small.exr").string();
     writeImage(img, path);
     std::ifstream in(path, std::ios::binary);
-    std::vector<unsigned char> exr((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::vector<unsigned char> exr((std::istreambuf_iterator<char>(in)),
+                                   std::istreambuf_iterator<char>());
     // dataWindow box2i: xmin, ymin, xmax, ymax after name, type and size
     const char key[] = "dataWindow\0box2i";
     auto at = std::search(exr.begin(), exr.end(), key, key + sizeof key);
@@ -137,7 +141,8 @@ std::vector<unsigned char> exrDeclaring(const fs::path &dir, int32_t width, int3
 
 TEST_F(ImageLimits, ExrDeclaringTooManyPixelsIsRefused) {
     std::string msg = readError(write("huge.exr", exrDeclaring(dir, 30000, 30000)));
-    EXPECT_NE(msg.find("declares 30000 x 30000 pixels, more than the limit"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("declares 30000 x 30000 pixels, more than the limit"), std::string::npos)
+        << msg;
     msg = readError(write("wide.exr", exrDeclaring(dir, 40000, 4)));
     EXPECT_NE(msg.find("declares 40000 x 4 pixels, a side longer"), std::string::npos) << msg;
 }
@@ -161,8 +166,8 @@ TEST(ImageHeader, ReadsPngJpegAndBmpHeaders) {
     EXPECT_FALSE(readImageHeader(std::span(png.data(), 20)));
 
     // SOI, an APP0 segment, SOF0 (8 bits, 300 high, 200 wide, 3 components)
-    std::vector<unsigned char> jpeg = {0xFF, 0xD8, 0xFF, 0xE0, 0, 4, 'J', 'F', 0xFF, 0xC0, 0, 17,
-                                       8,    1,    44,   0,    200, 3};
+    std::vector<unsigned char> jpeg = {0xFF, 0xD8, 0xFF, 0xE0, 0, 4,  'J', 'F', 0xFF,
+                                       0xC0, 0,    17,   8,    1, 44, 0,   200, 3};
     jpeg.resize(40, 0);
     h = readImageHeader(jpeg);
     ASSERT_TRUE(h);

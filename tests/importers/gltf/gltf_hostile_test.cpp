@@ -52,7 +52,8 @@ std::optional<ParseError> parseError(const std::string &path, DiagnosticSink *si
 std::pair<int, int> lineColumn(const std::string &text, const std::string &needle) {
     size_t at = text.find(needle);
     EXPECT_NE(at, std::string::npos);
-    int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+    int line =
+        1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
     size_t lineStart = text.rfind('\n', at);
     return {line, static_cast<int>(lineStart == std::string::npos ? at + 1 : at - lineStart)};
 }
@@ -92,7 +93,8 @@ TEST(GltfHostile, FilesInsideTheFolderAreRead) {
     writeBytes(tmp.file("model/sub/box data.bin"), bin.data(), bin.size());
     fs::create_symlink("sub/box data.bin", tmp.file("model/inside.bin"));
     std::string model = tmp.file("model/box.gltf");
-    for (const std::string uri : {"sub/box%20data.bin", "./sub/../sub/box data.bin", "inside.bin"}) {
+    for (const std::string uri :
+         {"sub/box%20data.bin", "./sub/../sub/box data.bin", "inside.bin"}) {
         SCOPED_TRACE(uri);
         boxWithUri(model, uri);
         DiagnosticSink diag;
@@ -105,8 +107,8 @@ TEST(GltfHostile, ImageUriOutsideIsAnError) {
     TempDir tmp;
     writeText(tmp.file("secret.png"), "not an image");
     fs::create_directories(tmp.file("model"));
-    std::string text = triangleGltf(
-        "", R"(,"textures":[{"source":0}],"images":[{"uri":"../secret.png"}])");
+    std::string text =
+        triangleGltf("", R"(,"textures":[{"source":0}],"images":[{"uri":"../secret.png"}])");
     writeText(tmp.file("model/tri.gltf"), text);
     if (auto e = parseError(tmp.file("model/tri.gltf"))) {
         EXPECT_NE(std::string(e->what()).find("images[0].uri '../secret.png'"), std::string::npos)
@@ -129,7 +131,8 @@ TEST(GltfHostile, NonRegularFilesAreRefused) {
     }
     // The model itself
     if (auto e = parseError(tmp.file("fifo.bin")))
-        EXPECT_NE(std::string(e->what()).find("not a regular file"), std::string::npos) << e->what();
+        EXPECT_NE(std::string(e->what()).find("not a regular file"), std::string::npos)
+            << e->what();
 }
 
 TEST(GltfHostile, GlbBuffersWithoutUriCannotMultiplyTheBinChunk) {
@@ -138,7 +141,9 @@ TEST(GltfHostile, GlbBuffersWithoutUriCannotMultiplyTheBinChunk) {
     for (int i = 0; i < 2000; ++i) json += std::string(i ? "," : "") + R"({"byteLength":65536})";
     json += "]}";
     while (json.size() % 4) json += ' ';
-    auto u32 = [](std::string &out, uint32_t v) { out.append(reinterpret_cast<const char *>(&v), 4); };
+    auto u32 = [](std::string &out, uint32_t v) {
+        out.append(reinterpret_cast<const char *>(&v), 4);
+    };
     std::string glb = "glTF";
     u32(glb, 2);
     u32(glb, static_cast<uint32_t>(20 + json.size() + 8 + 65536));
@@ -179,12 +184,14 @@ TEST(GltfHostile, OneFileNamedByManyBuffersIsNotReadAgainAndAgain) {
 TEST(GltfHostile, AccessorOfZerosIsBoundedByTheBuffers) {
     // No bufferView: glTF starts the accessor as zeros; 6e7 of them took 2.4 GB from 650 bytes
     TempDir tmp;
-    std::string text = replaceOnce(triangleGltf(""), R"({"bufferView":0,"componentType":5126,"count":3,)",
-                                   R"({"componentType":5126,"count":60000000,)");
+    std::string text =
+        replaceOnce(triangleGltf(""), R"({"bufferView":0,"componentType":5126,"count":3,)",
+                    R"({"componentType":5126,"count":60000000,)");
     writeText(tmp.file("zeros.gltf"), text);
     if (auto e = parseError(tmp.file("zeros.gltf")))
-        EXPECT_NE(std::string(e->what()).find("count 60000000 without a bufferView is more than 65536"),
-                  std::string::npos)
+        EXPECT_NE(
+            std::string(e->what()).find("count 60000000 without a bufferView is more than 65536"),
+            std::string::npos)
             << e->what();
 }
 
@@ -192,8 +199,8 @@ TEST(GltfHostile, LongStringInInvalidJsonIsLocated) {
     // The error message quotes the bad token; a std::regex over it recursed per character and
     // overflowed the stack near 26,000 characters
     TempDir tmp;
-    std::string text = "{\"asset\": {\"version\": \"2.0\"},\n \"x\": \"" + std::string(300000, 'a') +
-                       "\x01\"}";
+    std::string text =
+        "{\"asset\": {\"version\": \"2.0\"},\n \"x\": \"" + std::string(300000, 'a') + "\x01\"}";
     writeText(tmp.file("long.gltf"), text);
     if (auto e = parseError(tmp.file("long.gltf"))) {
         EXPECT_NE(std::string(e->what()).find("invalid JSON"), std::string::npos);
@@ -203,7 +210,8 @@ TEST(GltfHostile, LongStringInInvalidJsonIsLocated) {
 
 TEST(GltfHostile, DeepNestingIsLocatedBeforeParsing) {
     TempDir tmp;
-    std::string text = "{\"asset\": {\"version\": \"2.0\"},\n \"extras\": " + std::string(1000000, '[');
+    std::string text =
+        "{\"asset\": {\"version\": \"2.0\"},\n \"extras\": " + std::string(1000000, '[');
     writeText(tmp.file("deep.gltf"), text);
     if (auto e = parseError(tmp.file("deep.gltf"))) {
         EXPECT_NE(std::string(e->what()).find("nested more than 512 levels"), std::string::npos)
@@ -212,7 +220,8 @@ TEST(GltfHostile, DeepNestingIsLocatedBeforeParsing) {
         EXPECT_EQ(e->loc().col, 12 + 511);  // the 513th level
     }
     // Just within the limit: tinygltf's recursive conversion of extras copes
-    std::string ok = triangleGltf("", ",\"extras\":" + std::string(500, '[') + std::string(500, ']'));
+    std::string ok =
+        triangleGltf("", ",\"extras\":" + std::string(500, '[') + std::string(500, ']'));
     writeText(tmp.file("ok.gltf"), ok);
     DiagnosticSink diag;
     EXPECT_EQ(instancedTriangles(importGltf(tmp.file("ok.gltf"), diag)), 1u);
@@ -232,10 +241,10 @@ std::vector<unsigned char> pngHeaderOnly(uint32_t width, uint32_t height, size_t
 /// Imports a triangle whose base colour texture is `image`; returns the warnings.
 std::string importWithTexture(const std::vector<unsigned char> &image) {
     // metallicRoughnessTexture: decoded (for its mean) without texture coordinates
-    std::string text = triangleGltf(
-        R"({"pbrMetallicRoughness":{"metallicRoughnessTexture":{"index":0}}})",
-        R"(,"textures":[{"source":0}],"images":[{"uri":"data:image/png;base64,)" +
-            base64Encode(image) + R"("}])");
+    std::string text =
+        triangleGltf(R"({"pbrMetallicRoughness":{"metallicRoughnessTexture":{"index":0}}})",
+                     R"(,"textures":[{"source":0}],"images":[{"uri":"data:image/png;base64,)" +
+                         base64Encode(image) + R"("}])");
     TempDir tmp;
     writeText(tmp.file("tex.gltf"), text);
     DiagnosticSink diag;
@@ -250,9 +259,11 @@ std::string importWithTexture(const std::vector<unsigned char> &image) {
 TEST(GltfHostile, HugeTexturesAreIgnoredBeforeDecoding) {
     // 30000 x 30000 in 68 bytes: 3.6 GB if stb believed it
     std::string w = importWithTexture(pngHeaderOnly(30000, 30000, 68));
-    EXPECT_NE(w.find("cannot decode images[0] (image/png): PNG declares 30000 x 30000 pixels, a side longer "
-                     "than the limit of 16384 for a texture; texture ignored"),
-              std::string::npos)
+    EXPECT_NE(
+        w.find(
+            "cannot decode images[0] (image/png): PNG declares 30000 x 30000 pixels, a side longer "
+            "than the limit of 16384 for a texture; texture ignored"),
+        std::string::npos)
         << w;
     // 16384 x 16384: within the side limit, over the pixel limit
     w = importWithTexture(pngHeaderOnly(16384, 16384, 100));
