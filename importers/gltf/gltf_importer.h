@@ -22,6 +22,10 @@ struct ImportOptions {
     uint64_t maxTexturePixels = uint64_t(1) << 26;
     /// Longest texture side decoded.
     uint64_t maxTextureSide = 16384;
+    /// Most pixels decoded for all of a model's textures together (2^29, about 8 GiB as float
+    /// RGBA): 1000 images naming one small, highly compressed 8192 x 8192 PNG would otherwise
+    /// each be decoded and kept. Textures past it are ignored with a warning.
+    uint64_t maxTotalTexturePixels = uint64_t(1) << 29;
 };
 
 /// Reads a whole file as a scene: geometry, materials, textures, the first camera in traversal

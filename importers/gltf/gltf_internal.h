@@ -154,6 +154,7 @@ class MaterialMapper {
     ir::Scene &scene_;
     std::vector<Mapped> mapped_;  ///< by glTF material index + 1 (slot 0: default material)
     std::map<int, std::unique_ptr<DecodedImage>> images_;  ///< by image index; null = failed
+    uint64_t decodedPixels_ = 0;  ///< declared pixels of the images decoded so far
     std::map<int, int> textures_;  ///< glTF texture index -> IR texture index (-1 = failed)
 };
 

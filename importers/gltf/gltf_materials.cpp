@@ -383,6 +383,16 @@ const MaterialMapper::DecodedImage *MaterialMapper::decodedImage(int textureInde
         problem = header->format + std::string(" ") + p + " for a texture";
     else if (std::string_view(header->format) == "PNG")
         problem = pngPlausibilityProblem(*header, encoded->size());
+    if (problem.empty()) {
+        uint64_t total = decodedPixels_ + header->width * header->height;
+        if (total > ctx_.opts.maxTotalTexturePixels)
+            problem = "its " + std::to_string(header->width) + " x " +
+                      std::to_string(header->height) + " pixels would bring the model's decoded " +
+                      "texture pixels to " + std::to_string(total) + ", more than the limit of " +
+                      std::to_string(ctx_.opts.maxTotalTexturePixels);
+        else
+            decodedPixels_ = total;
+    }
     std::string mime = image.mimeType.empty() ? "" : " (" + image.mimeType + ")";
     if (!problem.empty()) {
         ctx_.warning(what + ": cannot decode " + label + mime + ": " + problem +

@@ -239,7 +239,8 @@ std::vector<unsigned char> pngHeaderOnly(uint32_t width, uint32_t height, size_t
 }
 
 /// Imports a triangle whose base colour texture is `image`; returns the warnings.
-std::string importWithTexture(const std::vector<unsigned char> &image) {
+std::string importWithTexture(const std::vector<unsigned char> &image,
+                              const ImportOptions &opts = {}) {
     // metallicRoughnessTexture: decoded (for its mean) without texture coordinates
     std::string text =
         triangleGltf(R"({"pbrMetallicRoughness":{"metallicRoughnessTexture":{"index":0}}})",
@@ -248,7 +249,7 @@ std::string importWithTexture(const std::vector<unsigned char> &image) {
     TempDir tmp;
     writeText(tmp.file("tex.gltf"), text);
     DiagnosticSink diag;
-    ir::Scene scene = importGltf(tmp.file("tex.gltf"), diag);
+    ir::Scene scene = importGltf(tmp.file("tex.gltf"), diag, opts);
     EXPECT_EQ(instancedTriangles(scene), 1u);
     EXPECT_TRUE(scene.textures.empty());
     std::string warnings;
@@ -271,6 +272,15 @@ TEST(GltfHostile, HugeTexturesAreIgnoredBeforeDecoding) {
     // 8000 x 8000 RGBA (256 MB inflated) cannot come out of 100 bytes
     w = importWithTexture(pngHeaderOnly(8000, 8000, 100));
     EXPECT_NE(w.find("more than its 100 bytes can hold"), std::string::npos) << w;
+    // The total over a model's textures (here with a limit of 3 pixels)
+    ImportOptions opts;
+    opts.maxTotalTexturePixels = 3;
+    w = importWithTexture(bmp2x2(0, 0, 0, 0), opts);
+    EXPECT_NE(w.find("its 2 x 2 pixels would bring the model's decoded texture pixels to 4, more "
+                     "than the limit of 3"),
+              std::string::npos)
+        << w;
+    EXPECT_EQ(importWithTexture(bmp2x2(0, 0, 0, 0)), "");
     // Neither PNG, JPEG nor BMP
     w = importWithTexture(std::vector<unsigned char>(64, 'G'));
     EXPECT_NE(w.find("is not a PNG, JPEG or BMP image"), std::string::npos) << w;
