@@ -8,7 +8,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <memory>
+#include <span>
 #include <stdexcept>
+
+#include "core/image/image_limits.h"
 
 namespace rt {
 
@@ -77,6 +82,38 @@ void writeWithSpec(const OIIO::ImageSpec &spec, const void *pixels, const std::s
     }
 }
 
+/// Opens an image file for reading after checking what its header declares against the limits
+/// (image_limits.h) and, for PNG, against the file's size: the pixel buffers are allocated from
+/// the declared size, before a pixel is read.
+std::unique_ptr<OIIO::ImageInput> openForReading(const std::string &path) {
+    std::error_code ec;
+    fs::file_status st = fs::status(path, ec);
+    if (fs::exists(st) && !fs::is_regular_file(st))
+        throw std::runtime_error("cannot read image '" + path + "': not a regular file");
+    uint64_t fileBytes = fs::exists(st) ? fs::file_size(path, ec) : 0;
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) throw std::runtime_error("cannot read image '" + path + "': " + OIIO::geterror());
+    const OIIO::ImageSpec &spec = in->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels < 1)
+        throw std::runtime_error("image '" + path + "' has no pixels");
+    if (spec.nchannels > kMaxReadImageChannels)
+        throw std::runtime_error("image '" + path + "' has " + std::to_string(spec.nchannels) +
+                                 " channels, more than the limit of " +
+                                 std::to_string(kMaxReadImageChannels));
+    std::string problem = imageSizeProblem(uint64_t(spec.width), uint64_t(spec.height),
+                                           kMaxReadImagePixels, kMaxReadImageSide);
+    if (problem.empty() && std::string(in->format_name()) == "png") {
+        // The header's own fields (a palette image has one channel before expansion)
+        unsigned char head[64] = {};
+        std::ifstream file(path, std::ios::binary);
+        file.read(reinterpret_cast<char *>(head), sizeof head);
+        if (auto header = readImageHeader(std::span(head, size_t(file.gcount()))))
+            problem = pngPlausibilityProblem(*header, fileBytes);
+    }
+    if (!problem.empty()) throw std::runtime_error("image '" + path + "' " + problem);
+    return in;
+}
+
 }  // namespace
 
 void writeImage(const Image &img, const std::string &path, const WriteOptions &opts) {
@@ -126,8 +163,7 @@ void writeEstimate(const ImageEstimate &est, const std::string &path) {
 }
 
 ImageEstimate readEstimate(const std::string &path, bool assumeLinear) {
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) throw std::runtime_error("cannot read image '" + path + "': " + OIIO::geterror());
+    std::unique_ptr<OIIO::ImageInput> in = openForReading(path);
     const OIIO::ImageSpec &spec = in->spec();
     auto channel = [&](const std::string &name) {
         for (int i = 0; i < spec.nchannels; ++i)
@@ -192,11 +228,8 @@ ImageEstimate downsample(const Image &img, int k) {
 }
 
 Image readImage(const std::string &path, bool assumeLinear) {
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) throw std::runtime_error("cannot read image '" + path + "': " + OIIO::geterror());
+    std::unique_ptr<OIIO::ImageInput> in = openForReading(path);
     const OIIO::ImageSpec &spec = in->spec();
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels < 1)
-        throw std::runtime_error("image '" + path + "' has no pixels");
     std::vector<float> px(size_t(spec.width) * spec.height * spec.nchannels);
     if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data()))
         throw std::runtime_error("cannot read image '" + path + "': " + in->geterror());

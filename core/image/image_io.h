@@ -31,14 +31,18 @@ void writeImage(const Image &img, const std::string &path, const WriteOptions &o
 /// ties.R/G/B when present, and the batch count as the header attribute "scadray:batches".
 void writeEstimate(const ImageEstimate &est, const std::string &path);
 
-/// Reads an image written by writeEstimate, or any image (then only the mean is filled).
+/// Reads an image written by writeEstimate, or any image (then only the mean is filled); checked
+/// as readImage is.
 ImageEstimate readEstimate(const std::string &path, bool assumeLinear = false);
 
 /// Box-filters each k x k block into one pixel; `spread` receives max - min over the block and
 /// the ring of sub-samples bordering it.
 ImageEstimate downsample(const Image &img, int k);
 
-/// Reads an image as linear float RGB. 8/16-bit files are decoded with the sRGB curve unless
+/// Reads an image as linear float RGB. The header is checked before any pixel memory is
+/// allocated: at most kMaxReadImagePixels pixels, kMaxReadImageSide per side and
+/// kMaxReadImageChannels channels (image_limits.h), a regular file, and for PNG a size its
+/// compressed data can hold. 8/16-bit files are decoded with the sRGB curve unless
 /// they declare themselves linear (gAMA 1.0, as POV-Ray's File_Gamma=1.0 output and scadray's
 /// --linear PNGs do) or `assumeLinear` is set. Throws std::runtime_error.
 Image readImage(const std::string &path, bool assumeLinear = false);

@@ -21,8 +21,11 @@ namespace {
 
 using Bytes = std::span<const unsigned char>;
 
-/// Most elements an accessor without bufferView (zeros plus sparse values) may have.
-constexpr size_t kMaxZeroInitialisedCount = size_t(1) << 26;
+/// Most elements an accessor without bufferView (zeros plus sparse values) may have: this many,
+/// or as many as the file's buffers hold bytes (such an accessor mirrors a real one, a morph
+/// target of a mesh whose vertices take at least that much), so a 650-byte file cannot ask
+/// for gigabytes of zeros.
+constexpr size_t kMinZeroInitialisedLimit = size_t(1) << 16;
 
 size_t componentSize(int componentType) {
     switch (componentType) {
@@ -194,10 +197,14 @@ std::vector<Out> readAccessor(const ImportContext &ctx, const tinygltf::Accessor
     } else {
         // glTF 3.6.2.3: an accessor without bufferView starts as zeros. No data bounds its
         // count, so a limit keeps a corrupt count from asking for gigabytes
-        if (acc.count > kMaxZeroInitialisedCount)
+        size_t bufferBytes = 0;
+        for (const tinygltf::Buffer &b : ctx.model.buffers) bufferBytes += b.data.size();
+        size_t limit = std::max(kMinZeroInitialisedLimit, bufferBytes);
+        if (acc.count > limit)
             ctx.fail(what + ": count " + std::to_string(acc.count) +
-                     " without a bufferView is more than " +
-                     std::to_string(kMaxZeroInitialisedCount) + " elements");
+                     " without a bufferView is more than " + std::to_string(limit) +
+                     " elements (the larger of " + std::to_string(kMinZeroInitialisedLimit) +
+                     " and the bytes in the file's buffers)");
         out.assign(acc.count * static_cast<size_t>(comps), Out(0));
     }
 

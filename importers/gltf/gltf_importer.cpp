@@ -12,7 +12,7 @@
 #include <iterator>
 #include <limits>
 #include <optional>
-#include <regex>
+#include <span>
 #include <string_view>
 
 #include "importers/gltf/gltf_internal.h"
@@ -39,8 +39,23 @@ bool isSupported(const std::string &ext) {
 struct ImageCollector {
     const tinygltf::Model *model = nullptr;  ///< the model being parsed (its buffers come first)
     bool keep = true;
-    std::map<int, std::vector<unsigned char>> encoded;
+    /// Images read from a file or a data: URI (tinygltf hands over a temporary copy).
+    std::map<int, std::vector<unsigned char>> owned;
+    /// Images in a bufferView: not copied (10^4 images may share one 100 MB view), looked up
+    /// in the model's buffers once it is loaded.
+    std::map<int, std::pair<size_t, size_t>> inBuffer;  ///< image -> (buffer, byte offset)
+    std::map<int, size_t> inBufferSize;
     std::vector<std::string> problems;
+
+    /// Every kept image's bytes, once the model is complete.
+    std::map<int, std::span<const unsigned char>> bytes() const {
+        std::map<int, std::span<const unsigned char>> all;
+        for (const auto &[index, data] : owned) all[index] = std::span(data);
+        for (const auto &[index, where] : inBuffer)
+            all[index] = std::span(model->buffers[where.first].data)
+                             .subspan(where.second, inBufferSize.at(index));
+        return all;
+    }
 };
 
 /// tinygltf LoadImageDataFunction: keeps the bytes; never fails, so a bad image cannot stop the
@@ -62,16 +77,20 @@ bool collectImage(tinygltf::Image *image, const int imageIndex, std::string *, s
                 inside = view.byteOffset <= bufferSize &&
                          view.byteLength <= bufferSize - view.byteOffset &&
                          static_cast<size_t>(size) <= view.byteLength;
+                if (inside) {
+                    collector->inBuffer[imageIndex] = {static_cast<size_t>(view.buffer),
+                                                       view.byteOffset};
+                    collector->inBufferSize[imageIndex] = static_cast<size_t>(size);
+                }
             }
         }
-        if (!inside) {
+        if (!inside)
             collector->problems.push_back(
                 detail::jsonPath("images", static_cast<size_t>(imageIndex)) +
                 ": its bufferView lies outside its buffer; image ignored");
-            return true;
-        }
+        return true;
     }
-    collector->encoded[imageIndex].assign(bytes, bytes + size);
+    collector->owned[imageIndex].assign(bytes, bytes + size);
     return true;
 }
 
@@ -91,9 +110,9 @@ std::vector<std::string> splitLines(const std::string &text) {
 struct LoadedFile {
     tinygltf::Model model;
     ImageCollector images;
+    std::map<int, std::span<const unsigned char>> imageBytes;  ///< filled after loading
 };
 
-/// Parses the file, telling .glb from .gltf by its magic bytes, not its extension.
 /// Line and column (from 1) of the first standalone occurrence of a number token in JSON text.
 std::optional<std::pair<int, int>> findNumberToken(std::string_view text, const std::string &token) {
     auto numberChar = [](char c) {
@@ -112,11 +131,71 @@ std::optional<std::pair<int, int>> findNumberToken(std::string_view text, const 
     return std::nullopt;
 }
 
-std::unique_ptr<LoadedFile> loadFile(const std::string &path, const SourceLoc &loc,
-                                     DiagnosticSink &diag, bool keepImages) {
+/// Reads the decimal number at text[at]; npos when there is none.
+size_t readNumber(std::string_view text, size_t &at) {
+    size_t start = at, value = 0;
+    while (at < text.size() && std::isdigit(static_cast<unsigned char>(text[at])) && at - start < 9)
+        value = value * 10 + static_cast<size_t>(text[at++] - '0');
+    return at == start ? std::string_view::npos : value;
+}
+
+/// nlohmann's "[json.exception.parse_error.101] parse error at line L, column C: what" taken
+/// apart by plain scanning (a regular expression recursed per character of the message).
+struct JsonError {
+    int line = 0, column = 0;
+    std::string what;
+};
+std::optional<JsonError> parseJsonError(std::string_view message) {
+    static constexpr std::string_view kTag = "[json.exception.parse_error.";
+    static constexpr std::string_view kAtLine = "parse error at line ";
+    static constexpr std::string_view kColumn = ", column ";
+    size_t at = message.find(kTag);
+    if (at == std::string_view::npos) return std::nullopt;
+    at = message.find(kAtLine, at);
+    if (at == std::string_view::npos) return std::nullopt;
+    at += kAtLine.size();
+    size_t line = readNumber(message, at);
+    if (line == std::string_view::npos || message.substr(at, kColumn.size()) != kColumn)
+        return std::nullopt;
+    at += kColumn.size();
+    size_t column = readNumber(message, at);
+    if (column == std::string_view::npos || message.substr(at, 2) != ": ") return std::nullopt;
+    return JsonError{static_cast<int>(line), static_cast<int>(column),
+                     std::string(message.substr(at + 2))};
+}
+
+/// The token of nlohmann's "number overflow parsing '1e999'".
+std::optional<std::string> overflowToken(std::string_view message) {
+    static constexpr std::string_view kOverflow = "number overflow parsing '";
+    size_t at = message.find(kOverflow);
+    if (at == std::string_view::npos) return std::nullopt;
+    at += kOverflow.size();
+    size_t end = message.find('\'', at);
+    if (end == std::string_view::npos || end == at) return std::nullopt;
+    return std::string(message.substr(at, end - at));
+}
+
+/// Where a problem at (line, column) of the JSON text is reported: the .gltf itself, or the
+/// file with the position inside the .glb's JSON chunk in the message.
+[[noreturn]] void failAt(bool binary, const std::string &path, const SourceLoc &loc, int line,
+                         int column, const std::string &what) {
+    if (!binary)
+        throw ParseError(SourceLoc(std::make_shared<const std::string>(path), line, column), what);
+    throw ParseError(loc, what + " (JSON chunk of the binary glTF, its line " +
+                              std::to_string(line) + ", column " + std::to_string(column) + ")");
+}
+
+/// The file's bytes, refusing what is not a regular file (a FIFO, /dev/zero) or is larger than
+/// a glTF file can be.
+std::vector<unsigned char> readMainFile(const std::string &path, const SourceLoc &loc) {
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-        throw ParseError(loc, "'" + path + "' is a directory");
+    std::filesystem::file_status st = std::filesystem::status(path, ec);
+    if (std::filesystem::is_directory(st)) throw ParseError(loc, "'" + path + "' is a directory");
+    if (std::filesystem::exists(st) && !std::filesystem::is_regular_file(st))
+        throw ParseError(loc, "'" + path + "' is not a regular file");
+    if (std::filesystem::exists(st) &&
+        std::filesystem::file_size(path, ec) >= std::numeric_limits<unsigned int>::max())
+        throw ParseError(loc, "glTF file is larger than 4 GiB");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw ParseError(loc, "cannot open glTF file '" + path + "'");
     std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
@@ -124,15 +203,83 @@ std::unique_ptr<LoadedFile> loadFile(const std::string &path, const SourceLoc &l
     if (in.bad()) throw ParseError(loc, "cannot read glTF file '" + path + "'");
     if (bytes.size() >= std::numeric_limits<unsigned int>::max())
         throw ParseError(loc, "glTF file is larger than 4 GiB");
+    return bytes;
+}
 
+/// The JSON text: the whole .gltf, or a .glb's first chunk (empty when its header is broken,
+/// which tinygltf reports).
+std::string_view jsonText(const std::vector<unsigned char> &bytes, bool binary) {
+    std::string_view text(reinterpret_cast<const char *>(bytes.data()), bytes.size());
+    if (!binary) return text;
+    uint32_t chunk = 0;
+    if (bytes.size() < 20) return {};
+    std::memcpy(&chunk, bytes.data() + 12, 4);
+    return chunk <= bytes.size() - 20 ? text.substr(20, chunk) : std::string_view();
+}
+
+/// Checks the JSON text before tinygltf parses it: nesting depth, buffer and image URIs.
+void prescan(std::string_view text, bool binary, const std::string &path, const SourceLoc &loc,
+             const detail::ModelFolder &folder) {
+    detail::JsonScan scan = detail::scanJson(text);
+    if (scan.tooDeep)
+        failAt(binary, path, loc, scan.deepLine, scan.deepColumn,
+               "JSON nested more than " + std::to_string(detail::kMaxJsonDepth) + " levels deep");
+    for (const detail::UriRef &ref : scan.uris) {
+        std::string problem = folder.checkUri(ref.uri);
+        if (!problem.empty())
+            failAt(binary, path, loc, ref.line, ref.column,
+                   ref.path + " '" + ref.uri + "' " + problem + "; not read");
+    }
+    // Each uri-less buffer of a .glb is a copy of the BIN chunk; only buffers[0] may be one
+    if (binary && scan.buffersWithoutUri > 1)
+        throw ParseError(loc, std::to_string(scan.buffersWithoutUri) +
+                                  " buffers have no uri; in a binary glTF only buffers[0] may "
+                                  "refer to the BIN chunk");
+}
+
+/// Turns tinygltf's error into a located ParseError.
+[[noreturn]] void failLoad(const std::string &err, const std::vector<unsigned char> &bytes,
+                           bool binary, const std::string &path, const SourceLoc &loc) {
+    std::string message;
+    for (const std::string &line : splitLines(err)) message += (message.empty() ? "" : "; ") + line;
+    if (message.empty()) message = "unknown error";
+    // A JSON syntax error points into the text: at its line and column for a .gltf, in the
+    // message for the JSON chunk of a .glb
+    if (std::optional<JsonError> e = parseJsonError(message)) {
+        if (!binary)
+            throw ParseError(
+                SourceLoc(std::make_shared<const std::string>(path), e->line, e->column),
+                "invalid JSON: " + e->what);
+        throw ParseError(loc, "invalid JSON chunk in binary glTF at its line " +
+                                  std::to_string(e->line) + ", column " +
+                                  std::to_string(e->column) + ": " + e->what);
+    }
+    // A number too large for a double (1e999): nlohmann names the token but not where it is
+    if (std::optional<std::string> token = overflowToken(message)) {
+        if (auto at = findNumberToken(jsonText(bytes, binary), *token))
+            failAt(binary, path, loc, at->first, at->second,
+                   "number " + *token + " is too large for a double");
+    }
+    throw ParseError(loc, std::string("cannot load glTF") + (binary ? " binary (.glb)" : "") +
+                              " file: " + message);
+}
+
+/// Parses the file, telling .glb from .gltf by its magic bytes, not its extension.
+std::unique_ptr<LoadedFile> loadFile(const std::string &path, const SourceLoc &loc,
+                                     DiagnosticSink &diag, bool keepImages) {
+    std::vector<unsigned char> bytes = readMainFile(path, loc);
     bool binary = bytes.size() >= 4 && std::equal(bytes.begin(), bytes.begin() + 4, "glTF");
     std::string baseDir = std::filesystem::path(path).parent_path().string();
+
+    detail::FileAccess files{detail::ModelFolder(path), baseDir, {}, 0, {}, 0};
+    prescan(jsonText(bytes, binary), binary, path, loc, files.folder);
 
     auto file = std::make_unique<LoadedFile>();
     file->images.model = &file->model;
     file->images.keep = keepImages;
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(collectImage, &file->images);
+    loader.SetFsCallbacks(files.callbacks());
     std::string err, warn;
     bool ok = false;
     try {
@@ -149,50 +296,12 @@ std::unique_ptr<LoadedFile> loadFile(const std::string &path, const SourceLoc &l
         err += e.what();
         ok = false;
     }
+    // The scan above refuses every URI that leads outside; this catches what it could not see
+    if (!files.refused.empty()) throw ParseError(loc, "refused to read " + files.refused.front());
     for (const std::string &line : splitLines(warn)) diag.warning(loc, "tinygltf: " + line);
     for (const std::string &problem : file->images.problems) diag.warning(loc, problem);
-    if (!ok) {
-        std::string message;
-        for (const std::string &line : splitLines(err))
-            message += (message.empty() ? "" : "; ") + line;
-        if (message.empty()) message = "unknown error";
-        // A JSON syntax error points into the text: at its line and column for a .gltf, in the
-        // message for the JSON chunk of a .glb
-        std::smatch m;
-        static const std::regex kJsonError(
-            R"(\[json\.exception\.parse_error\.\d+\] parse error at line (\d+), column (\d+): (.*))");
-        if (std::regex_search(message, m, kJsonError)) {
-            std::string what = "invalid JSON: " + m[3].str();
-            if (!binary)
-                throw ParseError(SourceLoc(std::make_shared<const std::string>(path),
-                                           std::stoi(m[1].str()), std::stoi(m[2].str())),
-                                 what);
-            throw ParseError(loc, "invalid JSON chunk in binary glTF at its line " + m[1].str() +
-                                      ", column " + m[2].str() + ": " + m[3].str());
-        }
-        // A number too large for a double (1e999): nlohmann names the token but not where it
-        // is (a .glb's JSON chunk starts at byte 20)
-        static const std::regex kOverflow(R"(number overflow parsing '([^']+)')");
-        if (std::regex_search(message, m, kOverflow)) {
-            std::string_view text(reinterpret_cast<const char *>(bytes.data()), bytes.size());
-            if (binary) {
-                uint32_t chunk = 0;
-                if (bytes.size() >= 20) std::memcpy(&chunk, bytes.data() + 12, 4);
-                text = bytes.size() >= 20 ? text.substr(20, chunk) : std::string_view();
-            }
-            const std::string token = m[1].str(), what = "number " + token + " is too large for a double";
-            if (auto at = findNumberToken(text, token)) {
-                if (binary)
-                    throw ParseError(loc, what + " (JSON chunk of the binary glTF, its line " +
-                                              std::to_string(at->first) + ", column " +
-                                              std::to_string(at->second) + ")");
-                throw ParseError(SourceLoc(std::make_shared<const std::string>(path), at->first, at->second),
-                                 what);
-            }
-        }
-        throw ParseError(loc, std::string("cannot load glTF") + (binary ? " binary (.glb)" : "") +
-                                  " file: " + message);
-    }
+    if (!ok) failLoad(err, bytes, binary, path, loc);
+    file->imageBytes = file->images.bytes();
     return file;
 }
 
@@ -258,8 +367,7 @@ ir::Scene importGltf(const std::string &path, DiagnosticSink &diag, const Import
     SourceLoc loc = fileLoc(path);
     checkOptions(opts, loc);
     std::unique_ptr<LoadedFile> file = loadFile(path, loc, diag, true);
-    detail::ImportContext ctx{file->model,          loc, diag, opts, safeBaseName(path),
-                              &file->images.encoded};
+    detail::ImportContext ctx{file->model, loc, diag, opts, safeBaseName(path), &file->imageBytes};
     checkExtensions(ctx);
     int sceneIndex = chooseScene(file->model, opts, loc);
 
@@ -281,8 +389,7 @@ ir::NodePtr importGltfInto(ir::Scene &scene, const std::string &path, const Sour
         throw SceneError(loc, "import of '" + path + "': material " +
                                   std::to_string(*materialOverride) + " does not exist");
     std::unique_ptr<LoadedFile> file = loadFile(path, floc, diag, !materialOverride);
-    detail::ImportContext ctx{file->model,          floc, diag, opts, safeBaseName(path),
-                              &file->images.encoded};
+    detail::ImportContext ctx{file->model, floc, diag, opts, safeBaseName(path), &file->imageBytes};
     checkExtensions(ctx);
     int sceneIndex = chooseScene(file->model, opts, floc);
 

@@ -3,6 +3,7 @@
 // KHR_lights_punctual into the IR, with glTF's Y-up placed Z-up ((x, y, z) -> (x, -z, y)).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -16,6 +17,15 @@ struct ImportOptions {
     double unitScale = 1.0;
     /// Scene to show; -1 = the file's `scene`, else scene 0.
     int sceneIndex = -1;
+    /// Largest texture decoded, in pixels (8192 x 8192 = 2^26, about 1 GiB once converted to
+    /// float RGBA); a larger one is ignored with a warning, as an undecodable one is.
+    uint64_t maxTexturePixels = uint64_t(1) << 26;
+    /// Longest texture side decoded.
+    uint64_t maxTextureSide = 16384;
+    /// Most pixels decoded for all of a model's textures together (2^29, about 8 GiB as float
+    /// RGBA): 1000 images naming one small, highly compressed 8192 x 8192 PNG would otherwise
+    /// each be decoded and kept. Textures past it are ignored with a warning.
+    uint64_t maxTotalTexturePixels = uint64_t(1) << 29;
 };
 
 /// Reads a whole file as a scene: geometry, materials, textures, the first camera in traversal

@@ -5,10 +5,13 @@
 #include <tiny_gltf.h>
 
 #include <cstdint>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/ir/diagnostics.h"
@@ -27,7 +30,7 @@ struct ImportContext {
     /// File name without directory and extension, made safe for file names ("Duck").
     std::string baseName;
     /// Encoded image bytes kept by the loader callback (decoded on demand), by image index.
-    const std::map<int, std::vector<unsigned char>> *encodedImages = nullptr;
+    const std::map<int, std::span<const unsigned char>> *encodedImages = nullptr;
 
     [[noreturn]] void fail(const std::string &message) const { throw ParseError(loc, message); }
     void warning(const std::string &message) const { diag.warning(loc, message); }
@@ -36,6 +39,71 @@ struct ImportContext {
 
 /// "meshes[2].primitives[0]" and the like.
 std::string jsonPath(const char *array, size_t index);
+
+// What the file may read (gltf_files.cpp)
+
+/// Deepest nesting of JSON arrays and objects accepted. tinygltf converts `extras` and
+/// `extensions` recursively, so a file of 10^6 nested brackets would overflow the stack; real
+/// files nest fewer than 20 levels.
+constexpr size_t kMaxJsonDepth = 512;
+/// Largest file a buffer or image URI may name: the GLB format's own limit (4 GiB - 1).
+constexpr uint64_t kMaxExternalFileBytes = 0xFFFFFFFFull;
+/// Most bytes read from all the files a model names, together: at most this, and at most twice
+/// the size of the distinct files plus kExternalRereadSlack (one 1 MB file named by 10^4
+/// buffers would otherwise be read, and kept, 10^4 times).
+constexpr uint64_t kMaxExternalBytes = 0xFFFFFFFFull;
+constexpr uint64_t kExternalRereadSlack = uint64_t(16) << 20;
+
+/// A buffer or image URI in the JSON text.
+struct UriRef {
+    std::string path;  ///< "buffers[2].uri"
+    std::string uri;   ///< as written (JSON escapes decoded, percent escapes not)
+    int line = 0, column = 0;
+};
+
+/// What scanJson finds before tinygltf parses the text.
+struct JsonScan {
+    bool tooDeep = false;
+    int deepLine = 0, deepColumn = 0;  ///< the bracket that went past kMaxJsonDepth
+    std::vector<UriRef> uris;
+    size_t buffersWithoutUri = 0;
+};
+
+/// One pass over JSON text (valid or not; nlohmann reports syntax errors afterwards): nesting
+/// depth and the `uri` of every buffers[i] and images[i], with line and column. No recursion,
+/// no regular expressions.
+JsonScan scanJson(std::string_view text);
+
+/// Percent-decodes a URI as tinygltf does before opening it ('+' is a space).
+std::string urlDecode(const std::string &uri);
+
+/// The folder a glTF file may read from: its own, symlinks resolved.
+class ModelFolder {
+  public:
+    explicit ModelFolder(const std::string &gltfPath);
+    /// Empty when `uri` is a data: URI or names a regular file (or nothing) inside the folder,
+    /// else why not ("lies outside the model's folder ...").
+    std::string checkUri(const std::string &uri) const;
+    /// The same for a path tinygltf built (folder + decoded URI); `resolved` receives the
+    /// canonical path.
+    std::string check(const std::string &path, std::filesystem::path *resolved) const;
+    const std::filesystem::path &path() const { return folder_; }
+
+  private:
+    std::filesystem::path folder_;
+};
+
+/// tinygltf's filesystem callbacks: every path is checked by `folder` before it is opened;
+/// refusals are kept to be reported.
+struct FileAccess {
+    ModelFolder folder;
+    std::string baseDir;  ///< the base directory handed to tinygltf
+    std::vector<std::string> refused;
+    uint64_t bytesRead = 0;
+    std::map<std::string, uint64_t> sizes;  ///< distinct files read, by canonical path
+    uint64_t distinctBytes = 0;
+    tinygltf::FsCallbacks callbacks();
+};
 
 // Accessors (gltf_accessors.cpp)
 
@@ -86,6 +154,7 @@ class MaterialMapper {
     ir::Scene &scene_;
     std::vector<Mapped> mapped_;  ///< by glTF material index + 1 (slot 0: default material)
     std::map<int, std::unique_ptr<DecodedImage>> images_;  ///< by image index; null = failed
+    uint64_t decodedPixels_ = 0;  ///< declared pixels of the images decoded so far
     std::map<int, int> textures_;  ///< glTF texture index -> IR texture index (-1 = failed)
 };
 

@@ -47,7 +47,11 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <limits>
+#include <optional>
+#include <string_view>
 
+#include "core/image/image_limits.h"
 #include "importers/gltf/gltf_internal.h"
 
 namespace rt::gltf::detail {
@@ -359,7 +363,7 @@ const MaterialMapper::DecodedImage *MaterialMapper::decodedImage(int textureInde
     const tinygltf::Image &image = model.images[static_cast<size_t>(tex.source)];
     std::string label = jsonPath("images", static_cast<size_t>(tex.source));
     if (!image.uri.empty() && image.uri.rfind("data:", 0) != 0) label += " ('" + image.uri + "')";
-    const std::vector<unsigned char> *encoded = nullptr;
+    const std::span<const unsigned char> *encoded = nullptr;
     if (ctx_.encodedImages) {
         auto enc = ctx_.encodedImages->find(tex.source);
         if (enc != ctx_.encodedImages->end()) encoded = &enc->second;
@@ -368,10 +372,38 @@ const MaterialMapper::DecodedImage *MaterialMapper::decodedImage(int textureInde
         ctx_.warning(what + ": " + label + " has no data (missing or unreadable); texture ignored");
         return nullptr;
     }
+    // The header first: stb allocates what it declares before reading one pixel
+    std::optional<ImageHeader> header = readImageHeader(*encoded);
+    std::string problem;
+    if (!header)
+        problem = "is not a PNG, JPEG or BMP image";
+    else if (std::string p = imageSizeProblem(header->width, header->height,
+                                              ctx_.opts.maxTexturePixels, ctx_.opts.maxTextureSide);
+             !p.empty())
+        problem = header->format + std::string(" ") + p + " for a texture";
+    else if (std::string_view(header->format) == "PNG")
+        problem = pngPlausibilityProblem(*header, encoded->size());
+    if (problem.empty()) {
+        uint64_t total = decodedPixels_ + header->width * header->height;
+        if (total > ctx_.opts.maxTotalTexturePixels)
+            problem = "its " + std::to_string(header->width) + " x " +
+                      std::to_string(header->height) + " pixels would bring the model's decoded " +
+                      "texture pixels to " + std::to_string(total) + ", more than the limit of " +
+                      std::to_string(ctx_.opts.maxTotalTexturePixels);
+        else
+            decodedPixels_ = total;
+    }
+    std::string mime = image.mimeType.empty() ? "" : " (" + image.mimeType + ")";
+    if (!problem.empty()) {
+        ctx_.warning(what + ": cannot decode " + label + mime + ": " + problem +
+                     "; texture ignored");
+        return nullptr;
+    }
     tinygltf::Image decoded;
     decoded.name = image.name;
     std::string err, warn;
-    bool ok = tinygltf::LoadImageData(&decoded, tex.source, &err, &warn, 0, 0, encoded->data(),
+    bool ok = encoded->size() <= static_cast<size_t>(std::numeric_limits<int>::max()) &&
+              tinygltf::LoadImageData(&decoded, tex.source, &err, &warn, 0, 0, encoded->data(),
                                       static_cast<int>(encoded->size()), nullptr);
     size_t expected = static_cast<size_t>(std::max(decoded.width, 0)) *
                       static_cast<size_t>(std::max(decoded.height, 0)) *
@@ -379,7 +411,6 @@ const MaterialMapper::DecodedImage *MaterialMapper::decodedImage(int textureInde
                       (decoded.bits == 16 ? 2u : 1u);
     if (!ok || decoded.width <= 0 || decoded.height <= 0 || decoded.component <= 0 ||
         (decoded.bits != 8 && decoded.bits != 16) || decoded.image.size() != expected) {
-        std::string mime = image.mimeType.empty() ? "" : " (" + image.mimeType + ")";
         while (!err.empty() && err.back() == '\n') err.pop_back();
         ctx_.warning(what + ": cannot decode " + label + mime + (err.empty() ? "" : ": " + err) +
                      "; texture ignored");

@@ -184,43 +184,6 @@ TEST(GltfMaterial, IdenticalMaterialsAreDeduplicated) {
     EXPECT_EQ(im->scene.meshes.size(), 1u);  // same accessors: one shared mesh
 }
 
-/// A 2x2 24-bit BMP, pixels given top row first as 0xRRGGBB.
-std::vector<unsigned char> bmp2x2(uint32_t tl, uint32_t tr, uint32_t bl, uint32_t br) {
-    std::vector<unsigned char> b = {'B', 'M'};
-    auto u32 = [&](uint32_t v) {
-        for (int i = 0; i < 4; ++i) b.push_back(static_cast<unsigned char>(v >> (8 * i)));
-    };
-    auto u16 = [&](uint16_t v) {
-        b.push_back(static_cast<unsigned char>(v));
-        b.push_back(static_cast<unsigned char>(v >> 8));
-    };
-    u32(14 + 40 + 16);
-    u32(0);
-    u32(14 + 40);
-    u32(40);
-    u32(2);
-    u32(2);  // positive height: bottom row stored first
-    u16(1);
-    u16(24);
-    u32(0);
-    u32(16);
-    u32(2835);
-    u32(2835);
-    u32(0);
-    u32(0);
-    for (uint32_t row : {0u, 1u}) {
-        uint32_t left = row == 0 ? bl : tl, right = row == 0 ? br : tr;
-        for (uint32_t px : {left, right}) {
-            b.push_back(static_cast<unsigned char>(px));        // B
-            b.push_back(static_cast<unsigned char>(px >> 8));   // G
-            b.push_back(static_cast<unsigned char>(px >> 16));  // R
-        }
-        b.push_back(0);
-        b.push_back(0);  // pad the row to 4 bytes
-    }
-    return b;
-}
-
 /// A textured triangle: positions, TEXCOORD_0, one material with the given base colour
 /// texture info, one texture with the given sampler JSON and image URI.
 std::string texturedTriangle(const std::string &imageUri, const std::string &sampler,

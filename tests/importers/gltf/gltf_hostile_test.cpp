@@ -1,0 +1,290 @@
+// SPDX-License-Identifier: MIT
+// glTF files written to harm (issue 14): URIs reaching outside the model's folder, non-regular
+// files, JSON that recursion or regular expressions choke on, headers declaring huge textures,
+// GLB buffers that multiply the BIN chunk. Each is a located error or a warning, read nothing
+// it should not and allocate nothing it declares before checking it.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <cstring>
+#include <optional>
+
+#include "tests/importers/gltf/gltf_test_support.h"
+
+namespace rt::gltf::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Box.gltf's 648 bytes of geometry (an outside file holding them would import as a box).
+std::vector<unsigned char> boxBin() {
+    std::string text = readText(sample("Box.gltf"));
+    const std::string prefix = "data:application/octet-stream;base64,";
+    size_t start = text.find(prefix);
+    size_t end = text.find('"', start);
+    return base64Decode(text.substr(start + prefix.size(), end - start - prefix.size()));
+}
+
+/// Box.gltf with its buffer's uri replaced by `uri` (written as it stands into the JSON).
+std::string boxWithUri(const std::string &path, const std::string &uri) {
+    std::string text = readText(sample("Box.gltf"));
+    const std::string prefix = "data:application/octet-stream;base64,";
+    size_t start = text.find(prefix);
+    size_t end = text.find('"', start);
+    text.replace(start, end - start, uri);
+    writeText(path, text);
+    return text;
+}
+
+/// The ParseError importing `path` throws (a test failure when it imports).
+std::optional<ParseError> parseError(const std::string &path, DiagnosticSink *sink = nullptr) {
+    DiagnosticSink local;
+    try {
+        importGltf(path, sink ? *sink : local);
+    } catch (const ParseError &e) {
+        return e;
+    }
+    ADD_FAILURE() << path << " imported without an error";
+    return std::nullopt;
+}
+
+/// Line and column (from 1) of the first `needle` in `text`.
+std::pair<int, int> lineColumn(const std::string &text, const std::string &needle) {
+    size_t at = text.find(needle);
+    EXPECT_NE(at, std::string::npos);
+    int line =
+        1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+    size_t lineStart = text.rfind('\n', at);
+    return {line, static_cast<int>(lineStart == std::string::npos ? at + 1 : at - lineStart)};
+}
+
+TEST(GltfHostile, UrisOutsideTheModelFolderAreRefusedAtTheirPosition) {
+    REQUIRE_GLTF_SAMPLE("Box.gltf");
+    TempDir tmp;
+    std::vector<unsigned char> bin = boxBin();
+    writeBytes(tmp.file("secret.bin"), bin.data(), bin.size());
+    fs::create_directories(tmp.file("model/sub"));
+    fs::create_symlink(tmp.file("secret.bin"), tmp.file("model/link.bin"));
+    std::string model = tmp.file("model/box.gltf");
+    for (const std::string uri :
+         {std::string("../secret.bin"), std::string("%2e%2e/secret.bin"),
+          std::string("%2E%2E%2Fsecret.bin"), std::string("sub/../../secret.bin"),
+          std::string("..\\\\secret.bin"), std::string("link.bin"), tmp.file("secret.bin"),
+          "file://" + tmp.file("secret.bin"), std::string("file:../secret.bin")}) {
+        SCOPED_TRACE(uri);
+        std::string text = boxWithUri(model, uri);
+        if (auto e = parseError(model)) {
+            std::string msg = e->what();
+            EXPECT_NE(msg.find("buffers[0].uri"), std::string::npos) << msg;
+            EXPECT_NE(msg.find("not read"), std::string::npos) << msg;
+            EXPECT_EQ(e->loc().fileName(), model);
+            auto [line, col] = lineColumn(text, "\"" + uri + "\"");
+            EXPECT_EQ(e->loc().line, line);
+            EXPECT_EQ(e->loc().col, col);
+        }
+    }
+}
+
+TEST(GltfHostile, FilesInsideTheFolderAreRead) {
+    REQUIRE_GLTF_SAMPLE("Box.gltf");
+    TempDir tmp;
+    std::vector<unsigned char> bin = boxBin();
+    fs::create_directories(tmp.file("model/sub"));
+    writeBytes(tmp.file("model/sub/box data.bin"), bin.data(), bin.size());
+    fs::create_symlink("sub/box data.bin", tmp.file("model/inside.bin"));
+    std::string model = tmp.file("model/box.gltf");
+    for (const std::string uri :
+         {"sub/box%20data.bin", "./sub/../sub/box data.bin", "inside.bin"}) {
+        SCOPED_TRACE(uri);
+        boxWithUri(model, uri);
+        DiagnosticSink diag;
+        ir::Scene scene = importGltf(model, diag);
+        EXPECT_EQ(instancedTriangles(scene), 12u);
+    }
+}
+
+TEST(GltfHostile, ImageUriOutsideIsAnError) {
+    TempDir tmp;
+    writeText(tmp.file("secret.png"), "not an image");
+    fs::create_directories(tmp.file("model"));
+    std::string text =
+        triangleGltf("", R"(,"textures":[{"source":0}],"images":[{"uri":"../secret.png"}])");
+    writeText(tmp.file("model/tri.gltf"), text);
+    if (auto e = parseError(tmp.file("model/tri.gltf"))) {
+        EXPECT_NE(std::string(e->what()).find("images[0].uri '../secret.png'"), std::string::npos)
+            << e->what();
+        EXPECT_EQ(e->loc().line, lineColumn(text, "\"../secret.png\"").first);
+    }
+}
+
+TEST(GltfHostile, NonRegularFilesAreRefused) {
+    REQUIRE_GLTF_SAMPLE("Box.gltf");
+    TempDir tmp;
+    ASSERT_EQ(::mkfifo(tmp.file("fifo.bin").c_str(), 0600), 0);
+    fs::create_directories(tmp.file("folder.bin"));
+    for (const std::string uri : {"fifo.bin", "folder.bin"}) {
+        SCOPED_TRACE(uri);
+        boxWithUri(tmp.file("box.gltf"), uri);
+        if (auto e = parseError(tmp.file("box.gltf")))
+            EXPECT_NE(std::string(e->what()).find("is not a regular file"), std::string::npos)
+                << e->what();
+    }
+    // The model itself
+    if (auto e = parseError(tmp.file("fifo.bin")))
+        EXPECT_NE(std::string(e->what()).find("not a regular file"), std::string::npos)
+            << e->what();
+}
+
+TEST(GltfHostile, GlbBuffersWithoutUriCannotMultiplyTheBinChunk) {
+    // 2000 buffers, each a copy of a 64 KiB BIN chunk, would take 128 MiB; refused before
+    std::string json = R"({"asset":{"version":"2.0"},"buffers":[)";
+    for (int i = 0; i < 2000; ++i) json += std::string(i ? "," : "") + R"({"byteLength":65536})";
+    json += "]}";
+    while (json.size() % 4) json += ' ';
+    auto u32 = [](std::string &out, uint32_t v) {
+        out.append(reinterpret_cast<const char *>(&v), 4);
+    };
+    std::string glb = "glTF";
+    u32(glb, 2);
+    u32(glb, static_cast<uint32_t>(20 + json.size() + 8 + 65536));
+    u32(glb, static_cast<uint32_t>(json.size()));
+    u32(glb, 0x4E4F534Au);
+    glb += json;
+    u32(glb, 65536);
+    u32(glb, 0x004E4942u);
+    glb += std::string(65536, '\0');
+    TempDir tmp;
+    writeText(tmp.file("many.glb"), glb);
+    if (auto e = parseError(tmp.file("many.glb")))
+        EXPECT_NE(std::string(e->what()).find("2000 buffers have no uri"), std::string::npos)
+            << e->what();
+}
+
+TEST(GltfHostile, OneFileNamedByManyBuffersIsNotReadAgainAndAgain) {
+    // 200 buffers naming one 256 KiB file would keep 50 MiB; reading stops past twice the
+    // file's size plus 16 MiB
+    TempDir tmp;
+    writeText(tmp.file("one.bin"), std::string(256 << 10, '\0'));
+    std::string json = R"({"asset":{"version":"2.0"},"buffers":[)";
+    for (int i = 0; i < 200; ++i)
+        json += std::string(i ? "," : "") + R"({"byteLength":262144,"uri":"one.bin"})";
+    writeText(tmp.file("many.gltf"), json + "]}");
+    if (auto e = parseError(tmp.file("many.gltf")))
+        EXPECT_NE(std::string(e->what()).find("more than twice the size of the files it names"),
+                  std::string::npos)
+            << e->what();
+    // Named twice is fine
+    json = R"({"asset":{"version":"2.0"},"scenes":[{"nodes":[]}],"buffers":[)"
+           R"({"byteLength":262144,"uri":"one.bin"},{"byteLength":262144,"uri":"one.bin"}]})";
+    writeText(tmp.file("twice.gltf"), json);
+    DiagnosticSink diag;
+    EXPECT_NO_THROW(importGltf(tmp.file("twice.gltf"), diag));
+}
+
+TEST(GltfHostile, AccessorOfZerosIsBoundedByTheBuffers) {
+    // No bufferView: glTF starts the accessor as zeros; 6e7 of them took 2.4 GB from 650 bytes
+    TempDir tmp;
+    std::string text =
+        replaceOnce(triangleGltf(""), R"({"bufferView":0,"componentType":5126,"count":3,)",
+                    R"({"componentType":5126,"count":60000000,)");
+    writeText(tmp.file("zeros.gltf"), text);
+    if (auto e = parseError(tmp.file("zeros.gltf")))
+        EXPECT_NE(
+            std::string(e->what()).find("count 60000000 without a bufferView is more than 65536"),
+            std::string::npos)
+            << e->what();
+}
+
+TEST(GltfHostile, LongStringInInvalidJsonIsLocated) {
+    // The error message quotes the bad token; a std::regex over it recursed per character and
+    // overflowed the stack near 26,000 characters
+    TempDir tmp;
+    std::string text =
+        "{\"asset\": {\"version\": \"2.0\"},\n \"x\": \"" + std::string(300000, 'a') + "\x01\"}";
+    writeText(tmp.file("long.gltf"), text);
+    if (auto e = parseError(tmp.file("long.gltf"))) {
+        EXPECT_NE(std::string(e->what()).find("invalid JSON"), std::string::npos);
+        EXPECT_EQ(e->loc().line, 2);
+    }
+}
+
+TEST(GltfHostile, DeepNestingIsLocatedBeforeParsing) {
+    TempDir tmp;
+    std::string text =
+        "{\"asset\": {\"version\": \"2.0\"},\n \"extras\": " + std::string(1000000, '[');
+    writeText(tmp.file("deep.gltf"), text);
+    if (auto e = parseError(tmp.file("deep.gltf"))) {
+        EXPECT_NE(std::string(e->what()).find("nested more than 512 levels"), std::string::npos)
+            << e->what();
+        EXPECT_EQ(e->loc().line, 2);
+        EXPECT_EQ(e->loc().col, 12 + 511);  // the 513th level
+    }
+    // Just within the limit: tinygltf's recursive conversion of extras copes
+    std::string ok =
+        triangleGltf("", ",\"extras\":" + std::string(500, '[') + std::string(500, ']'));
+    writeText(tmp.file("ok.gltf"), ok);
+    DiagnosticSink diag;
+    EXPECT_EQ(instancedTriangles(importGltf(tmp.file("ok.gltf"), diag)), 1u);
+}
+
+/// A PNG that is only a header declaring `width` x `height` RGBA pixels, padded to `size`.
+std::vector<unsigned char> pngHeaderOnly(uint32_t width, uint32_t height, size_t size) {
+    std::vector<unsigned char> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n',
+                                      0,    0,   0,   13,  'I',  'H',  'D',  'R'};
+    for (uint32_t v : {width, height})
+        for (int s = 24; s >= 0; s -= 8) png.push_back(static_cast<unsigned char>(v >> s));
+    for (unsigned char c : {8, 6, 0, 0, 0}) png.push_back(c);
+    png.resize(std::max(size, png.size() + 4), 0);
+    return png;
+}
+
+/// Imports a triangle whose base colour texture is `image`; returns the warnings.
+std::string importWithTexture(const std::vector<unsigned char> &image,
+                              const ImportOptions &opts = {}) {
+    // metallicRoughnessTexture: decoded (for its mean) without texture coordinates
+    std::string text =
+        triangleGltf(R"({"pbrMetallicRoughness":{"metallicRoughnessTexture":{"index":0}}})",
+                     R"(,"textures":[{"source":0}],"images":[{"uri":"data:image/png;base64,)" +
+                         base64Encode(image) + R"("}])");
+    TempDir tmp;
+    writeText(tmp.file("tex.gltf"), text);
+    DiagnosticSink diag;
+    ir::Scene scene = importGltf(tmp.file("tex.gltf"), diag, opts);
+    EXPECT_EQ(instancedTriangles(scene), 1u);
+    EXPECT_TRUE(scene.textures.empty());
+    std::string warnings;
+    for (const auto &d : diag.all()) warnings += d.message + "\n";
+    return warnings;
+}
+
+TEST(GltfHostile, HugeTexturesAreIgnoredBeforeDecoding) {
+    // 30000 x 30000 in 68 bytes: 3.6 GB if stb believed it
+    std::string w = importWithTexture(pngHeaderOnly(30000, 30000, 68));
+    EXPECT_NE(
+        w.find(
+            "cannot decode images[0] (image/png): PNG declares 30000 x 30000 pixels, a side longer "
+            "than the limit of 16384 for a texture; texture ignored"),
+        std::string::npos)
+        << w;
+    // 16384 x 16384: within the side limit, over the pixel limit
+    w = importWithTexture(pngHeaderOnly(16384, 16384, 100));
+    EXPECT_NE(w.find("more than the limit of 67108864 pixels"), std::string::npos) << w;
+    // 8000 x 8000 RGBA (256 MB inflated) cannot come out of 100 bytes
+    w = importWithTexture(pngHeaderOnly(8000, 8000, 100));
+    EXPECT_NE(w.find("more than its 100 bytes can hold"), std::string::npos) << w;
+    // The total over a model's textures (here with a limit of 3 pixels)
+    ImportOptions opts;
+    opts.maxTotalTexturePixels = 3;
+    w = importWithTexture(bmp2x2(0, 0, 0, 0), opts);
+    EXPECT_NE(w.find("its 2 x 2 pixels would bring the model's decoded texture pixels to 4, more "
+                     "than the limit of 3"),
+              std::string::npos)
+        << w;
+    EXPECT_EQ(importWithTexture(bmp2x2(0, 0, 0, 0)), "");
+    // Neither PNG, JPEG nor BMP
+    w = importWithTexture(std::vector<unsigned char>(64, 'G'));
+    EXPECT_NE(w.find("is not a PNG, JPEG or BMP image"), std::string::npos) << w;
+}
+
+}  // namespace
+}  // namespace rt::gltf::test
