@@ -53,12 +53,13 @@ std::vector<T> quantise(const Image &img, double maxValue, bool srgb) {
 /// Writes pixels of `spec.format` through a temporary file beside `path` and a rename, so the
 /// target is either complete or untouched; an interrupt removes the temporary too.
 void writeWithSpec(const OIIO::ImageSpec &spec, const void *pixels, const std::string &path) {
-    // The temporary keeps the extension so OpenImageIO picks the same format
-    TempFile tmp(path, lowerExtension(path));
-    auto out = OIIO::ImageOutput::create(tmp.path());
+    // The writer is chosen by the target's extension, before any temporary exists
+    auto out = OIIO::ImageOutput::create(path);
     if (!out)
         throw std::runtime_error("no image writer for '" + path + "' (use .png or .exr): " +
                                  OIIO::geterror());
+    // The temporary keeps the extension too
+    TempFile tmp(path, lowerExtension(path));
     bool ok = out->open(tmp.path(), spec) && out->write_image(spec.format, pixels);
     ok = out->close() && ok;
     if (!ok) throw std::runtime_error("cannot write '" + path + "': " + out->geterror());
