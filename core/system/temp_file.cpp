@@ -50,8 +50,13 @@ void releaseSlot(int i) {
     slots[i].claimed.store(false, std::memory_order_release);
 }
 
+/// Process groups of running children; 0 = free.
+std::atomic<int> childGroups[kMaxLiveTempFiles];
+
 extern "C" void removeTempsAndDie(int sig) {
-    // Only async-signal-safe calls: unlink, signal, raise
+    // Only async-signal-safe calls: kill, unlink, signal, raise
+    for (auto &g : childGroups)
+        if (int pgid = g.load(std::memory_order_acquire); pgid > 0) ::kill(-pgid, SIGKILL);
     for (auto &s : slots)
         if (s.used.load(std::memory_order_acquire)) ::unlink(s.path);
     std::signal(sig, SIG_DFL);
@@ -109,6 +114,17 @@ void TempFile::commit() {
     // Released after the rename: an interrupt in between unlinks a name that is gone
     releaseSlot(slot_);
     slot_ = -1;
+}
+
+ChildGroupGuard::ChildGroupGuard(int pgid) {
+    for (int i = 0; i < kMaxLiveTempFiles && slot_ < 0; ++i) {
+        int expected = 0;
+        if (childGroups[i].compare_exchange_strong(expected, pgid)) slot_ = i;
+    }
+}
+
+ChildGroupGuard::~ChildGroupGuard() {
+    if (slot_ >= 0) childGroups[slot_].store(0, std::memory_order_release);
 }
 
 void installInterruptCleanup() {

@@ -31,13 +31,27 @@ class TempFile {
     bool done_ = false;
 };
 
+/// While it lives, an interrupt caught by installInterruptCleanup() also kills the process
+/// group `pgid` (an external renderer in its own group would otherwise outlive scadray, and
+/// the time limit scadray enforces on it).
+class ChildGroupGuard {
+  public:
+    explicit ChildGroupGuard(int pgid);
+    ~ChildGroupGuard();
+    ChildGroupGuard(const ChildGroupGuard &) = delete;
+    ChildGroupGuard &operator=(const ChildGroupGuard &) = delete;
+
+  private:
+    int slot_ = -1;
+};
+
 /// Installs handlers for SIGINT, SIGTERM and SIGHUP (those not ignored) that unlink every live
-/// TempFile and then end the program with the signal's default action, so the exit status
+/// TempFile, kill every guarded child process group, and then end the program with the signal's default action, so the exit status
 /// still says which signal ended it. Call once, early in main().
 void installInterruptCleanup();
 
-/// The most temporary files alive at once that an interrupt removes (more still work; only
-/// the first this many are guaranteed to be removed by an interrupt).
+/// The most temporary files (and child process groups) alive at once that an interrupt
+/// removes (more still work; only the first this many are cleaned up by an interrupt).
 constexpr int kMaxLiveTempFiles = 16;
 
 }  // namespace rt

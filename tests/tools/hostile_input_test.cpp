@@ -17,6 +17,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -25,6 +26,7 @@
 
 #include "core/image/image_io.h"
 #include "core/ir/diagnostics.h"
+#include "core/system/subprocess.h"
 #include "core/system/temp_file.h"
 #include "tools/cli_common.h"
 
@@ -413,6 +415,42 @@ TEST_F(Hostile, InterruptedRenderLeavesNothing) {
     ASSERT_EQ(::waitpid(pid, &status, 0), pid);
     EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT) << status;
     EXPECT_EQ(strayFiles({"slow.scad"}), std::vector<std::string>{});
+}
+
+TEST_F(Hostile, InterruptStopsAnExternalRenderer) {
+    // POV-Ray or OpenSCAD runs in its own process group, stopped by scadray at its time
+    // limit; an interrupt of scadray must stop it too, or it runs on unbounded
+    std::string pidFile = (dir / "child.pid").string();
+    pid_t pid = ::fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+        installInterruptCleanup();
+        ProcessOptions po;
+        po.timeoutSeconds = 60;
+        runProcess({"sh", "-c", "echo $$ > " + pidFile + ".tmp && mv " + pidFile + ".tmp " +
+                                    pidFile + " && exec sleep 60"},
+                   po);
+        ::_exit(0);
+    }
+    for (int i = 0; i < 2000 && !fs::exists(pidFile); ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    ASSERT_TRUE(fs::exists(pidFile));
+    pid_t child = std::stoi(slurp(pidFile));
+    ::kill(pid, SIGINT);
+    int status = 0;
+    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT) << status;
+    // The renderer is gone (or a zombie its new parent has yet to reap)
+    auto running = [child] {
+        std::ifstream stat("/proc/" + std::to_string(child) + "/stat");
+        std::string text((std::istreambuf_iterator<char>(stat)), std::istreambuf_iterator<char>());
+        size_t paren = text.rfind(')');
+        return paren != std::string::npos && paren + 2 < text.size() && text[paren + 2] != 'Z';
+    };
+    for (int i = 0; i < 2000 && running(); ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    EXPECT_FALSE(running());
+    if (running()) ::kill(child, SIGKILL);
 }
 
 TEST_F(Hostile, OutputNamesUpToTheFileSystemLimitWork) {
