@@ -3,11 +3,14 @@
 #include "tools/cli_common.h"
 
 #include <CLI/CLI.hpp>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <limits>
@@ -63,11 +66,10 @@ void SceneArgs::addTo(CLI::App &cmd) {
                    "gives at most " +
                        std::to_string(ir::kAutoFacetMaxFragments) + " fragments)")
         ->check(CLI::IsMember({"smooth", "openscad", "auto"}));
-    cmd.add_option("--max-steps", maxSteps,
-                   "Cap on .scad evaluation steps (calls, loop iterations, module instances) "
-                   "that stops runaway programs; 0 = no cap")
-        ->check(CLI::Range(int64_t{0}, std::numeric_limits<int64_t>::max()))
-        ->capture_default_str();
+    addNumber(cmd, "--max-steps", maxSteps,
+              "Cap on .scad evaluation steps (calls, loop iterations, module instances) "
+              "that stops runaway programs; 0 = no cap",
+              decltype(maxSteps){0}, std::numeric_limits<decltype(maxSteps)>::max());
 }
 
 LoadOptions SceneArgs::loadOptions(bool quiet) const {
@@ -82,7 +84,7 @@ LoadOptions SceneArgs::loadOptions(bool quiet) const {
     return lo;
 }
 
-void attachPrinter(DiagnosticSink &diag, bool quiet) {
+DiagnosticPrinter::DiagnosticPrinter(DiagnosticSink &diag, bool quiet) : diag_(diag) {
     diag.setListener([quiet](const Diagnostic &d) {
         if (quiet && d.severity == Severity::Note) return;
         clearProgressLine();
@@ -90,11 +92,38 @@ void attachPrinter(DiagnosticSink &diag, bool quiet) {
     });
 }
 
-ir::Scene loadScene(const std::string &path, DiagnosticSink &diag, const LoadOptions &opts) {
+DiagnosticPrinter::~DiagnosticPrinter() {
+    diag_.setListener(nullptr);
+    clearProgressLine();
+    for (const auto &line : diag_.summary()) std::cerr << "scadray: " << line << "\n";
+}
+
+void requireOutputFile(const std::string &path, const std::string &option) {
     namespace fs = std::filesystem;
     std::error_code ec;
-    if (!fs::exists(path, ec)) throw std::runtime_error(path + ": no such file");
-    if (fs::is_directory(path, ec)) throw std::runtime_error(path + ": is a folder");
+    fs::path p(path);
+    if (path.empty() || fs::is_directory(p, ec) || !p.has_filename())
+        throw std::invalid_argument(option + ": '" + path + "' is a folder, not a file name");
+    fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
+    if (!fs::is_directory(dir, ec))
+        throw std::invalid_argument(option + ": the folder of '" + path + "' does not exist");
+}
+
+void requireRegularFile(const std::string &path) {
+    if (path.empty()) throw std::invalid_argument("an empty file name was given");
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0)
+        throw std::runtime_error(path + ": " + (errno == ENOENT ? "no such file" : std::strerror(errno)));
+    if (S_ISDIR(st.st_mode)) throw std::runtime_error(path + ": is a folder, not a file");
+    if (!S_ISREG(st.st_mode))
+        throw std::runtime_error(path + ": is not a regular file (a FIFO, device or socket); "
+                                        "scadray reads only regular files");
+}
+
+ir::Scene loadScene(const std::string &path, DiagnosticSink &diag, const LoadOptions &opts) {
+    namespace fs = std::filesystem;
+    // Checked before anything opens it: a FIFO would block, /dev/zero never end
+    requireRegularFile(path);
     std::string ext = fs::path(path).extension().string();
     for (auto &ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
     ir::Scene scene;

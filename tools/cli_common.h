@@ -16,6 +16,7 @@
 
 namespace CLI {
 class App;
+class Option;
 }
 
 namespace rt::cli {
@@ -49,10 +50,51 @@ struct SceneArgs {
 };
 
 /// Prints warnings (and notes unless quiet) to stderr as they are reported, first clearing
-/// the progress line of a long evaluation if one is shown.
-void attachPrinter(DiagnosticSink &diag, bool quiet);
+/// the progress line of a long evaluation if one is shown; when it goes out of scope (also
+/// when an error ends the command) it prints one "N more warnings like: ..." line for each
+/// kind of warning whose repeats the sink only counted.
+class DiagnosticPrinter {
+  public:
+    DiagnosticPrinter(DiagnosticSink &diag, bool quiet);
+    ~DiagnosticPrinter();
+    DiagnosticPrinter(const DiagnosticPrinter &) = delete;
+    DiagnosticPrinter &operator=(const DiagnosticPrinter &) = delete;
+
+  private:
+    DiagnosticSink &diag_;
+};
+
+/// Limits of the numeric options (README, "Security and limits").
+constexpr int kMaxThreads = 1 << 16;
+constexpr int kMaxSupersample = 16;
+/// Seconds an external renderer (POV-Ray, OpenSCAD) may run: a week.
+constexpr int kMaxTimeoutSeconds = 7 * 24 * 3600;
+
+/// Registers a numeric option whose value must lie in [lo, hi]: anything else (a number out
+/// of range, text, NaN or an infinity) is a usage error naming the option and the range,
+/// raised before the value is converted, so nothing downstream sees an overflowed number.
+/// The range shows in --help. `loOpen` excludes lo itself.
+CLI::Option *addNumber(CLI::App &cmd, const std::string &names, int &value,
+                       const std::string &help, int lo, int hi);
+CLI::Option *addNumber(CLI::App &cmd, const std::string &names, long &value,
+                       const std::string &help, long lo, long hi);
+CLI::Option *addNumber(CLI::App &cmd, const std::string &names, long long &value,
+                       const std::string &help, long long lo, long long hi);
+CLI::Option *addNumber(CLI::App &cmd, const std::string &names, unsigned long &value,
+                       const std::string &help, unsigned long lo, unsigned long hi);
+CLI::Option *addNumber(CLI::App &cmd, const std::string &names, double &value,
+                       const std::string &help, double lo, double hi, bool loOpen = false);
+
+/// Throws std::invalid_argument, naming `option`, when `path` cannot be an output file: an
+/// existing folder, or a name in a folder that does not exist. Checked before any work.
+void requireOutputFile(const std::string &path, const std::string &option);
+
+/// Throws std::runtime_error naming `path` unless it is a regular file (or a link to one):
+/// a folder, a FIFO, a device such as /dev/zero or a socket could block or never end.
+void requireRegularFile(const std::string &path);
 
 /// Reads a scene by extension (.scad) and completes it (automatic camera, default lights).
+/// The path must be a regular file (requireRegularFile).
 /// Throws LocatedError for problems in the file, std::runtime_error for others. A .scad
 /// evaluation that takes over a second shows an `evaluating: N M steps` line on a terminal
 /// stderr (unless opts.quiet), cleared when it ends.

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 
 #include "core/image/image_compare.h"
 #include "core/image/image_io.h"
@@ -81,10 +82,6 @@ int runOpenScadCheck(const CheckArgs &a) {
         throw std::invalid_argument("--openscad compares OpenSCAD's own facets; --facets " +
                                     a.scene.facets + " cannot be used with it");
 
-    if (a.width < 1 || a.height < 1 || a.width > kMaxImageSide || a.height > kMaxImageSide)
-        throw std::invalid_argument("image size must be between 1 and " +
-                                    std::to_string(kMaxImageSide));
-    if (a.timeout < 1) throw std::invalid_argument("--timeout must be at least 1 second");
     if (!openscadAvailable())
         throw std::invalid_argument("OpenSCAD (openscad) is not installed; tools/setup.sh installs it");
     CheckFiles file(a);
@@ -95,7 +92,7 @@ int runOpenScadCheck(const CheckArgs &a) {
     // scadray: parse, evaluate, compile and trace the scene; its camera (given or automatic)
     // is the one both pictures use
     DiagnosticSink diag;
-    attachPrinter(diag, true);
+    DiagnosticPrinter printer(diag, true);
     auto t0 = clock::now();
     ir::Scene scene = loadScene(a.scene.input, diag, lo);
     auto rs = RenderScene::compile(scene, diag);
@@ -123,8 +120,8 @@ int runOpenScadCheck(const CheckArgs &a) {
     std::snprintf(buf, sizeof buf, "openscad: %.3f s wall (CGAL render %.3f s), %zu triangles\n",
                   run.wallSeconds, run.renderSeconds, ms->stats().triangles);
     report += buf;
-    std::snprintf(buf, sizeof buf, "scadray:  %.3f s (parse, compile and trace %d rays)\n",
-                  ourSeconds, a.width * a.height);
+    std::snprintf(buf, sizeof buf, "scadray:  %.3f s (parse, compile and trace %lld rays)\n",
+                  ourSeconds, static_cast<long long>(a.width) * a.height);
     report += buf;
     report += cr.summary(a.geometry);
     report += "files: " + file.dir.string() + "/" + file.stem +
@@ -142,8 +139,6 @@ int runOpenScadCheck(const CheckArgs &a) {
 int runCheck(const CheckArgs &a) {
     using clock = std::chrono::steady_clock;
     if (a.openscad) return runOpenScadCheck(a);
-    if (a.supersample < 1 || a.supersample > 16)
-        throw std::invalid_argument("--supersample must be between 1 and 16");
     RenderOptions ro;
     ro.width = a.width;
     ro.height = a.height;
@@ -161,7 +156,7 @@ int runCheck(const CheckArgs &a) {
     const fs::path &dir = file.dir;
 
     DiagnosticSink diag;
-    attachPrinter(diag, true);
+    DiagnosticPrinter printer(diag, true);
     ir::Scene scene = loadScene(a.scene.input, diag, a.scene.loadOptions(a.quiet));
 
     // POV-Ray: export, render k times larger without antialiasing, box-downsample
@@ -208,7 +203,7 @@ int runCheck(const CheckArgs &a) {
     report += "files: " + dir.string() + "/" + stem + "{.pov,.ini,_reference.png,_scadray.png,_diff.png,...}\n";
     std::snprintf(buf, sizeof buf, "%s,%s,%.3g,%.3g,%.1f,%d,%d,%.3g,%.3f,%.3f,%.3f,%.3f\n",
                   a.scene.input.c_str(), cr.pass ? "pass" : "different", cr.rmse, cr.maxError,
-                  100.0 * cr.maskedPixels / (a.width * a.height), cr.tilesTested, cr.tilesFailed,
+                  100.0 * cr.maskedPixels / (double(a.width) * a.height), cr.tilesTested, cr.tilesFailed,
                   cr.detectableMedian, pr.wallSeconds, pr.traceSeconds, ourWall, rr.seconds);
     return finishCheck(a, file("_report.txt"), report,
                        "scene,verdict,rmse,max_error,masked_percent,tiles_tested,tiles_failed,"
@@ -228,32 +223,32 @@ void addCheckCommand(CLI::App &app, std::function<int()> &action) {
         "different or failed, 2 bad usage)");
     args->scene.addTo(*cmd);
     cmd->add_option("-o,--output-dir", args->outDir, "Folder for all files (default <scene>_check)");
-    cmd->add_option("-W,--width", args->width, "Image width")->capture_default_str();
-    cmd->add_option("-H,--height", args->height, "Image height")->capture_default_str();
-    cmd->add_option("--supersample", args->supersample,
-                    "POV-Ray reference: k x k samples per pixel (rendered k times larger)")
-        ->capture_default_str();
-    cmd->add_option("--batches", args->batches, "scadray: independent seeded batches")
-        ->capture_default_str();
-    cmd->add_option("-s,--samples", args->samples, "scadray: samples per pixel in each batch")
-        ->capture_default_str();
-    cmd->add_option("--seed", args->seed, "scadray: seed of the first batch")->capture_default_str();
-    cmd->add_option("-t,--threads", args->threads, "Threads for both renderers (0 = all)")
-        ->capture_default_str();
-    cmd->add_option("--timeout", args->timeout, "Seconds POV-Ray or OpenSCAD may run")
-        ->capture_default_str();
+    addNumber(*cmd, "-W,--width", args->width, "Image width", 1, kMaxImageSide);
+    addNumber(*cmd, "-H,--height", args->height, "Image height", 1, kMaxImageSide);
+    addNumber(*cmd, "--supersample", args->supersample,
+              "POV-Ray reference: k x k samples per pixel (rendered k times larger)", 1,
+              kMaxSupersample);
+    addNumber(*cmd, "--batches", args->batches, "scadray: independent seeded batches", 1,
+              kMaxBatches);
+    addNumber(*cmd, "-s,--samples", args->samples, "scadray: samples per pixel in each batch", 1,
+              kMaxSamplesPerPixel);
+    addNumber(*cmd, "--seed", args->seed, "scadray: seed of the first batch", uint64_t{0},
+              std::numeric_limits<uint64_t>::max());
+    addNumber(*cmd, "-t,--threads", args->threads, "Threads for both renderers (0 = all)", 0,
+              kMaxThreads);
+    addNumber(*cmd, "--timeout", args->timeout, "Seconds POV-Ray or OpenSCAD may run", 1,
+              kMaxTimeoutSeconds);
     cmd->add_flag("--openscad", args->openscad,
                   "Referee OpenSCAD: compare hit/miss, depth and normal per pixel with the mesh "
                   "`openscad` exports (implies --facets openscad)");
-    cmd->add_option("--depth-tol", args->geometry.depthRel,
-                    "--openscad: relative depth difference allowed")
-        ->capture_default_str();
-    cmd->add_option("--normal-tol", args->geometry.normalDegrees,
-                    "--openscad: normal angle difference allowed, degrees")
-        ->capture_default_str();
-    cmd->add_option("--max-differing", args->geometry.maxDiffering,
-                    "--openscad: differing pixels outside the masks that still pass")
-        ->capture_default_str();
+    addNumber(*cmd, "--depth-tol", args->geometry.depthRel,
+              "--openscad: relative depth difference allowed", 0.0,
+              std::numeric_limits<double>::max());
+    addNumber(*cmd, "--normal-tol", args->geometry.normalDegrees,
+              "--openscad: normal angle difference allowed, degrees", 0.0, 180.0);
+    addNumber(*cmd, "--max-differing", args->geometry.maxDiffering,
+              "--openscad: differing pixels outside the masks that still pass", 0L,
+              std::numeric_limits<long>::max());
     cmd->add_flag("-q,--quiet", args->quiet, "Print the report only when the check fails");
     cmd->add_option("--csv", args->csv, "Append a row of figures to this CSV file");
     addCompareOptions(*cmd, args->compare);

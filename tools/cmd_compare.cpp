@@ -2,9 +2,11 @@
 // `scadray compare`: statistical comparison of two images; exit 0 pass, 1 different, 2 bad input.
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <limits>
 
 #include "core/image/image_compare.h"
 #include "core/image/image_io.h"
+#include "core/render/renderer.h"
 #include "tools/cli_common.h"
 #include "tools/commands.h"
 
@@ -18,8 +20,12 @@ struct CompareArgs {
 };
 
 int runCompare(const CompareArgs &a) {
+    if (!a.heatMap.empty()) requireOutputFile(a.heatMap, "--heat-map");
     ImageEstimate test, ref;
     try {
+        // Before anything opens them: a FIFO would block, /dev/zero never end
+        requireRegularFile(a.test);
+        requireRegularFile(a.reference);
         test = readEstimate(a.test);
         ref = readEstimate(a.reference);
     } catch (const std::runtime_error &e) {
@@ -35,14 +41,14 @@ int runCompare(const CompareArgs &a) {
 }  // namespace
 
 void addCompareOptions(CLI::App &cmd, CompareOptions &o) {
-    cmd.add_option("--tile", o.tileSize, "Tile size in pixels")->capture_default_str();
-    cmd.add_option("--alpha", o.alpha, "False-alarm rate, controlled across tiles and channels")
-        ->capture_default_str();
-    cmd.add_option("--margin", o.marginAbs, "Absolute equivalence margin")->capture_default_str();
-    cmd.add_option("--margin-rel", o.marginRel, "Relative equivalence margin")->capture_default_str();
-    cmd.add_option("--edge-spread", o.edgeSpread,
-                   "Sub-sample spread that masks a reference pixel as an edge")
-        ->capture_default_str();
+    constexpr double kAny = std::numeric_limits<double>::max();
+    addNumber(cmd, "--tile", o.tileSize, "Tile size in pixels", 1, kMaxImageSide);
+    addNumber(cmd, "--alpha", o.alpha, "False-alarm rate, controlled across tiles and channels",
+              0.0, 1.0, true);
+    addNumber(cmd, "--margin", o.marginAbs, "Absolute equivalence margin", 0.0, kAny);
+    addNumber(cmd, "--margin-rel", o.marginRel, "Relative equivalence margin", 0.0, kAny);
+    addNumber(cmd, "--edge-spread", o.edgeSpread,
+              "Sub-sample spread that masks a reference pixel as an edge", 0.0, kAny);
 }
 
 void addCompareCommand(CLI::App &app, std::function<int()> &action) {

@@ -133,7 +133,7 @@ int runConverge(const ConvergeArgs &a) {
     auto file = [&](const std::string &suffix) { return (dir / (stem + suffix)).string(); };
 
     DiagnosticSink diag;
-    attachPrinter(diag, a.quiet);
+    DiagnosticPrinter printer(diag, a.quiet);
     ir::Scene scene = loadScene(a.scene.input, diag, lo);
     auto rs = RenderScene::compile(scene, diag);
     auto say = [&](const std::string &line) {
@@ -347,21 +347,6 @@ int runConverge(const ConvergeArgs &a) {
     return kExitOk;
 }
 
-/// A number above (or, with `orEqual`, not below) `bound`, with a short message; CLI11's own
-/// PositiveNumber prints the largest double as the range's end.
-CLI::Validator numberAbove(double bound, bool orEqual) {
-    std::string desc = std::string(orEqual ? ">= " : "> ") + fmt("%g", bound);
-    return CLI::Validator(
-        [bound, orEqual, desc](std::string &text) -> std::string {
-            double v = 0;
-            if (!CLI::detail::lexical_cast(text, v) || !std::isfinite(v))
-                return "'" + text + "' is not a number";
-            if (orEqual ? v >= bound : v > bound) return {};
-            return "must be " + desc + ", not " + text;
-        },
-        "NUMBER " + desc);
-}
-
 }  // namespace
 
 void addConvergeCommand(CLI::App &app, std::function<int()> &action) {
@@ -373,43 +358,30 @@ void addConvergeCommand(CLI::App &app, std::function<int()> &action) {
     args->scene.addTo(*cmd);
     cmd->add_option("-o,--output-dir", args->outDir,
                     "Folder for the CSV and the plot (default <scene>_converge)");
-    cmd->add_option("-W,--width", args->width, "Image width")
-        ->check(CLI::Range(1, kMaxImageSide))
-        ->capture_default_str();
-    cmd->add_option("-H,--height", args->height, "Image height")
-        ->check(CLI::Range(1, kMaxImageSide))
-        ->capture_default_str();
-    cmd->add_option("--max-samples", args->maxSamples,
-                    "Highest samples per pixel; levels 1, 2, 4, ... up to it")
-        ->check(CLI::Range(1, kMaxSamplesPerPixel))
-        ->capture_default_str();
-    cmd->add_option("--budget", args->budget,
-                    "Seconds: stop doubling once a level took more than half of this")
-        ->check(numberAbove(0, false));
-    cmd->add_option("--reference-samples", args->referenceSamples,
-                    "Samples per pixel of the reference, in 16 batches (default 8 x the highest "
-                    "level)")
-        ->check(CLI::Range(1, kMaxSamplesPerPixel * kReferenceBatches));
-    cmd->add_option("--clamp", args->clamp,
-                    "Clamp each sample's radiance to [0, this] in every render (default 0: off, "
-                    "compare linear radiance)")
-        ->check(numberAbove(0, true))
-        ->capture_default_str();
-    cmd->add_option("--seed", args->seed, "Seed of the reference; level i uses seed + 1 + i")
-        ->capture_default_str();
-    cmd->add_option("-t,--threads", args->threads, "Render threads (0 = all cores)")
-        ->check(CLI::Range(0, 1 << 16))
-        ->capture_default_str();
+    constexpr double kAny = std::numeric_limits<double>::max();
+    addNumber(*cmd, "-W,--width", args->width, "Image width", 1, kMaxImageSide);
+    addNumber(*cmd, "-H,--height", args->height, "Image height", 1, kMaxImageSide);
+    addNumber(*cmd, "--max-samples", args->maxSamples,
+              "Highest samples per pixel; levels 1, 2, 4, ... up to it", 1, kMaxSamplesPerPixel);
+    addNumber(*cmd, "--budget", args->budget,
+              "Seconds: stop doubling once a level took more than half of this", 0.0, kAny, true);
+    addNumber(*cmd, "--reference-samples", args->referenceSamples,
+              "Samples per pixel of the reference, in 16 batches (default 8 x the highest "
+              "level)",
+              1, kMaxSamplesPerPixel * kReferenceBatches);
+    addNumber(*cmd, "--clamp", args->clamp,
+              "Clamp each sample's radiance to [0, this] in every render (default 0: off, "
+              "compare linear radiance)",
+              0.0, kAny);
+    addNumber(*cmd, "--seed", args->seed, "Seed of the reference; level i uses seed + 1 + i",
+              uint64_t{0}, std::numeric_limits<uint64_t>::max());
+    addNumber(*cmd, "-t,--threads", args->threads, "Render threads (0 = all cores)", 0, kMaxThreads);
     cmd->add_flag(
         "--povray", args->povray,
         "Also measure each level against POV-Ray's supersampled picture (when installed)");
-    cmd->add_option("--supersample", args->supersample,
-                    "POV-Ray: k x k samples per pixel (rendered k times larger)")
-        ->check(CLI::Range(1, 16))
-        ->capture_default_str();
-    cmd->add_option("--timeout", args->timeout, "Seconds POV-Ray may run")
-        ->check(CLI::Range(1, 1 << 30))
-        ->capture_default_str();
+    addNumber(*cmd, "--supersample", args->supersample,
+              "POV-Ray: k x k samples per pixel (rendered k times larger)", 1, kMaxSupersample);
+    addNumber(*cmd, "--timeout", args->timeout, "Seconds POV-Ray may run", 1, kMaxTimeoutSeconds);
     cmd->add_flag("-q,--quiet", args->quiet, "Only warnings and errors (files are still written)");
     cmd->callback([args, &action]() { action = [args]() { return runConverge(*args); }; });
 }

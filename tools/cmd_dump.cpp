@@ -13,7 +13,7 @@ namespace {
 
 int runDump(const SceneArgs &a) {
     DiagnosticSink diag;
-    attachPrinter(diag, true);
+    DiagnosticPrinter printer(diag, true);
     ir::Scene scene = loadScene(a.input, diag, a.loadOptions(false));
     std::cout << ir::dump(scene);
     return kExitOk;

@@ -3,7 +3,9 @@
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 
+#include "core/render/renderer.h"
 #include "exporters/povray/pov_writer.h"
 #include "tools/cli_common.h"
 #include "tools/commands.h"
@@ -22,13 +24,14 @@ struct ExportArgs {
 };
 
 int runExport(const ExportArgs &a) {
-    if (a.width < 1 || a.height < 1 || a.supersample < 1)
-        throw std::invalid_argument("image size and supersampling must be positive");
+    // The options' ranges keep the .ini's size (width x supersample) within an int
+    static_assert(int64_t{kMaxImageSide} * kMaxSupersample <= std::numeric_limits<int>::max());
     fs::path pov = a.output.empty() ? fs::path(a.scene.input).stem().concat(".pov") : fs::path(a.output);
     if (pov.extension() != ".pov")
         throw std::invalid_argument("the output of export must end in .pov");
+    requireOutputFile(pov.string(), "-o");
     DiagnosticSink diag;
-    attachPrinter(diag, a.quiet);
+    DiagnosticPrinter printer(diag, a.quiet);
     ir::Scene scene = loadScene(a.scene.input, diag, a.scene.loadOptions(a.quiet));
     pov::IniOptions ini;
     ini.outputFile = pov.stem().string() + "_povray.png";
@@ -52,12 +55,12 @@ void addExportCommand(CLI::App &app, std::function<int()> &action) {
     args->scene.addTo(*cmd);
     cmd->add_option("-o,--output", args->output, "Output .pov file; the .ini goes beside it")
         ->capture_default_str();
-    cmd->add_option("-W,--width", args->width, "Image width written to the .ini")->capture_default_str();
-    cmd->add_option("-H,--height", args->height, "Image height written to the .ini")
-        ->capture_default_str();
-    cmd->add_option("--supersample", args->supersample,
-                    "Render k times larger in the .ini, for k x k box-filtered supersampling")
-        ->capture_default_str();
+    addNumber(*cmd, "-W,--width", args->width, "Image width written to the .ini", 1, kMaxImageSide);
+    addNumber(*cmd, "-H,--height", args->height, "Image height written to the .ini", 1,
+              kMaxImageSide);
+    addNumber(*cmd, "--supersample", args->supersample,
+              "Render k times larger in the .ini, for k x k box-filtered supersampling", 1,
+              kMaxSupersample);
     cmd->add_flag("-q,--quiet", args->quiet, "Only warnings and errors");
     cmd->callback([args, &action]() { action = [args]() { return runExport(*args); }; });
 }

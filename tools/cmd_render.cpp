@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 
 #include "core/image/image_io.h"
 #include "core/render/render_plan.h"
@@ -49,9 +50,10 @@ int runRender(const RenderArgs &a) {
     validateRenderOptions(ro);  // fail on bad options before reading the scene
     std::string output = a.output;
     if (output.empty()) output = std::filesystem::path(a.scene.input).stem().string() + ".png";
+    requireOutputFile(output, "-o");
 
     DiagnosticSink diag;
-    attachPrinter(diag, a.quiet);
+    DiagnosticPrinter printer(diag, a.quiet);
     ir::Scene scene = loadScene(a.scene.input, diag, lo);
     CompileOptions co;
     co.plan = !a.noPlan;
@@ -111,19 +113,20 @@ void addRenderCommand(CLI::App &app, std::function<int()> &action) {
     args->scene.addTo(*cmd);
     cmd->add_option("-o,--output", args->output,
                     "Output image; .png (sRGB) or .exr (linear float). Default: <scene>.png");
-    cmd->add_option("-W,--width", args->width, "Image width in pixels")->capture_default_str();
-    cmd->add_option("-H,--height", args->height, "Image height in pixels")->capture_default_str();
-    cmd->add_option("-s,--samples", args->samples,
-                    "Samples per pixel, stratified; 1 = pixel centres. Default: 1, or 4 where "
-                    "Monte Carlo effects need them (see --plan)");
+    addNumber(*cmd, "-W,--width", args->width, "Image width in pixels", 1, kMaxImageSide);
+    addNumber(*cmd, "-H,--height", args->height, "Image height in pixels", 1, kMaxImageSide);
+    addNumber(*cmd, "-s,--samples", args->samples,
+              "Samples per pixel, stratified; 1 = pixel centres. Default: 1, or 4 where "
+              "Monte Carlo effects need them (see --plan)",
+              1, kMaxSamplesPerPixel);
     cmd->add_flag("--plan", args->plan,
                   "Print the render plan first: features in use and why, objects kept and "
                   "dropped, the samples per pixel chosen");
     cmd->add_flag("--no-plan", args->noPlan,
                   "Leave nothing out, prune no CSG subtree and cast shadow rays to every light (to measure what the plan saves)");
-    cmd->add_option("--seed", args->seed, "Seed of the sample pattern")->capture_default_str();
-    cmd->add_option("-t,--threads", args->threads, "Render threads (0 = all cores)")
-        ->capture_default_str();
+    addNumber(*cmd, "--seed", args->seed, "Seed of the sample pattern", uint64_t{0},
+              std::numeric_limits<uint64_t>::max());
+    addNumber(*cmd, "-t,--threads", args->threads, "Render threads (0 = all cores)", 0, kMaxThreads);
     cmd->add_option("--bits", args->bits, "PNG bits per channel")
         ->check(CLI::IsMember({8, 16}))
         ->capture_default_str();

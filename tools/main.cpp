@@ -5,11 +5,14 @@
 
 #include "core/ir/diagnostics.h"
 #include "core/system/large_stack.h"
+#include "core/system/temp_file.h"
 #include "tools/cli_common.h"
 #include "tools/commands.h"
 
 int main(int argc, char **argv) {
     using namespace rt;
+    // An interrupt removes the temporary of a write in progress (and still ends the program)
+    installInterruptCleanup();
     CLI::App app{"scadray: ray-trace OpenSCAD scenes and convert them for POV-Ray"};
     app.require_subcommand(1);
     app.set_version_flag("--version", "scadray 0.1.0");

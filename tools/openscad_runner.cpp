@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "core/system/subprocess.h"
+#include "core/system/temp_file.h"
 #include "importers/scad/parser.h"
 
 namespace rt::cli {
@@ -27,8 +28,10 @@ OpenScadRun exportWithOpenScad(const std::string &scene, const std::string &mesh
     namespace fs = std::filesystem;
     if (!openscadAvailable())
         throw std::invalid_argument("OpenSCAD (openscad) is not installed; tools/setup.sh installs it");
-    // Written under a temporary name and renamed on success: never a half-written mesh
-    std::string partial = meshFile + ".part.stl";
+    // Written under a short temporary name beside it and renamed on success: never a
+    // half-written mesh, and removed on an interrupt
+    TempFile partialFile(meshFile, ".stl");
+    const std::string &partial = partialFile.path();
     std::vector<std::string> args = {"openscad", "-o", partial, "--export-format", "binstl"};
     for (const auto &[name, value] : defines) {
         args.push_back("-D");
@@ -45,14 +48,12 @@ OpenScadRun exportWithOpenScad(const std::string &scene, const std::string &mesh
     po.timeoutSeconds = timeoutSeconds;
     po.environment = {{"OPENSCADPATH", searchPath}};
     std::error_code ec;
-    fs::remove(partial, ec);
     ProcessResult pr = runProcess(args, po);
     OpenScadRun run;
     run.wallSeconds = pr.wallSeconds;
     run.log = pr.log;
     run.renderSeconds = parseOpenScadRenderSeconds(pr.log);
     auto fail = [&](const std::string &why) {
-        fs::remove(partial, ec);
         throw std::runtime_error("OpenSCAD " + why + " for " + scene + "; its last lines:\n" +
                                  lastLines(pr.log, 12));
     };
@@ -65,8 +66,7 @@ OpenScadRun exportWithOpenScad(const std::string &scene, const std::string &mesh
     if (pr.exitCode != 0) fail("failed (exit " + std::to_string(pr.exitCode) + ")");
     if (!fs::exists(partial, ec) || fs::file_size(partial, ec) == 0)
         fail("wrote no mesh");
-    fs::rename(partial, meshFile, ec);
-    if (ec) fail("left a mesh that could not be renamed to " + meshFile);
+    partialFile.commit();
     return run;
 }
 

@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "core/image/image_limits.h"
+#include "core/system/temp_file.h"
 
 namespace rt {
 
@@ -54,32 +55,19 @@ std::vector<T> quantise(const Image &img, double maxValue, bool srgb) {
 }
 
 /// Writes pixels of `spec.format` through a temporary file beside `path` and a rename, so the
-/// target is either complete or untouched.
+/// target is either complete or untouched; an interrupt removes the temporary too.
 void writeWithSpec(const OIIO::ImageSpec &spec, const void *pixels, const std::string &path) {
-    fs::path target(path);
-    fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-    if (!fs::is_directory(dir))
-        throw std::runtime_error("output folder '" + dir.string() + "' does not exist");
-    // The temporary keeps the extension so OpenImageIO picks the same format
-    fs::path tmp = dir / ("." + target.filename().string() + ".partial-" +
-                          std::to_string(::getpid()) + lowerExtension(path));
-    auto out = OIIO::ImageOutput::create(tmp.string());
+    // The writer is chosen by the target's extension, before any temporary exists
+    auto out = OIIO::ImageOutput::create(path);
     if (!out)
         throw std::runtime_error("no image writer for '" + path + "' (use .png or .exr): " +
                                  OIIO::geterror());
-    bool ok = out->open(tmp.string(), spec) && out->write_image(spec.format, pixels);
+    // The temporary keeps the extension too
+    TempFile tmp(path, lowerExtension(path));
+    bool ok = out->open(tmp.path(), spec) && out->write_image(spec.format, pixels);
     ok = out->close() && ok;
-    std::error_code ec;
-    if (!ok) {
-        std::string err = out->geterror();
-        fs::remove(tmp, ec);
-        throw std::runtime_error("cannot write '" + path + "': " + err);
-    }
-    fs::rename(tmp, target, ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        throw std::runtime_error("cannot write '" + path + "': " + ec.message());
-    }
+    if (!ok) throw std::runtime_error("cannot write '" + path + "': " + out->geterror());
+    tmp.commit();
 }
 
 /// Opens an image file for reading after checking what its header declares against the limits

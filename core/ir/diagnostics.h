@@ -2,9 +2,11 @@
 // Located diagnostics: the sink collecting warnings, and the exceptions importers throw for fatal errors.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "core/ir/source_loc.h"
@@ -20,11 +22,24 @@ struct Diagnostic {
 };
 
 /// "file:line:col: warning: message", followed by the source line and a caret under the column
-/// when the file can be read.
+/// when the file is a readable regular file. The excerpt costs O(1) per call however long the
+/// line: the line starts of the last file excerpted are indexed once and only a window around
+/// the column is read.
 std::string formatDiagnostic(const Diagnostic &d, bool withExcerpt = true);
 
+/// Warnings of one kind (the same message once its digits are ignored) beyond this many are
+/// only counted: neither kept nor passed to the listener. DiagnosticSink::summary() names them.
+constexpr int kWarningsShownPerKind = 5;
+/// At most this many diagnostics are kept (all()); later ones are only counted.
+constexpr size_t kMaxKeptDiagnostics = 1000;
+/// At most this many kinds of warning are told apart; further kinds share one count.
+constexpr size_t kMaxWarningKinds = 1000;
+
 /// Collects non-fatal diagnostics; an optional listener sees each one as it is reported
-/// (the CLI prints them immediately).
+/// (the CLI prints them immediately). Memory is bounded whatever a hostile input reports:
+/// repeated warnings of one kind are counted after the first kWarningsShownPerKind. Notes
+/// (echo() output) all reach the listener; like every diagnostic, only the first
+/// kMaxKeptDiagnostics are kept.
 class DiagnosticSink {
   public:
     using Listener = std::function<void(const Diagnostic &)>;
@@ -37,13 +52,36 @@ class DiagnosticSink {
     void note(const SourceLoc &loc, std::string message) {
         report(Severity::Note, loc, std::move(message));
     }
+    /// The diagnostics kept: those the listener saw, up to kMaxKeptDiagnostics.
     const std::vector<Diagnostic> &all() const { return diags_; }
+    /// Every diagnostic of this severity reported, kept or only counted.
     int count(Severity s) const;
-    /// Number of diagnostics whose message contains the given text (tests).
+    /// Number of diagnostics whose message contains the given text (tests): the kept ones,
+    /// plus the warnings not kept of each kind whose first message contains it.
     int countContaining(const std::string &text) const;
+    /// Warnings reported but not passed to the listener.
+    int64_t suppressed() const { return suppressed_; }
+    /// One line per kind with counted repeats, in order of first appearance:
+    /// "N more warnings like: file:line:col: message" (empty when nothing was held back).
+    std::vector<std::string> summary() const;
+    /// The kind of a warning: its message with every run of digits read as one '#'.
+    static std::string kindOf(const std::string &message);
 
   private:
+    struct Kind {
+        std::string key;
+        Diagnostic first;
+        int64_t count = 0;
+        int64_t kept = 0;  ///< of them in diags_
+    };
+    Kind &kindFor(const std::string &message);
+
     std::vector<Diagnostic> diags_;
+    std::vector<Kind> kinds_;  ///< in order of first appearance
+    std::unordered_map<std::string, size_t> kindIndex_;
+    Kind overflowKind_;  ///< every kind past kMaxWarningKinds
+    int64_t counts_[3] = {0, 0, 0};
+    int64_t suppressed_ = 0;
     Listener listener_;
 };
 

@@ -15,6 +15,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "core/system/temp_file.h"
+
 extern char **environ;
 
 namespace rt {
@@ -73,6 +75,10 @@ ProcessResult runProcess(const std::vector<std::string> &args, const ProcessOpti
         ::execvpe(argv[0], argv.data(), envp.data());
         ::_exit(127);
     }
+    // Its own group from here on whichever of the two runs first, so that an interrupt of
+    // scadray can stop all of it
+    ::setpgid(pid, pid);
+    ChildGroupGuard guard(pid);
     int status = 0;
     ProcessResult res;
     while (true) {

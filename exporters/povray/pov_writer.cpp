@@ -14,6 +14,7 @@
 #include "core/image/image_io.h"
 #include "core/ir/revolved_mesh.h"
 #include "core/math/degree_trig.h"
+#include "core/system/temp_file.h"
 #include "exporters/povray/pov_format.h"
 
 namespace rt::pov {
@@ -544,27 +545,15 @@ std::string writeIni(const IniOptions &o) {
 }
 
 void writeTextFile(const std::string &path, const std::string &text) {
-    fs::path target(path);
-    fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-    if (!fs::is_directory(dir))
-        throw std::runtime_error("output folder '" + dir.string() + "' does not exist");
-    fs::path tmp = dir / ("." + target.filename().string() + ".partial-" + std::to_string(::getpid()));
+    // Beside the target under a short name, renamed on success, removed on an interrupt
+    TempFile tmp(path);
     {
-        std::ofstream out(tmp, std::ios::binary);
+        std::ofstream out(tmp.path(), std::ios::binary);
         out << text;
         out.flush();
-        if (!out) {
-            std::error_code ec;
-            fs::remove(tmp, ec);
-            throw std::runtime_error("cannot write '" + path + "'");
-        }
+        if (!out) throw std::runtime_error("cannot write '" + path + "'");
     }
-    std::error_code ec;
-    fs::rename(tmp, target, ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        throw std::runtime_error("cannot write '" + path + "': " + ec.message());
-    }
+    tmp.commit();
 }
 
 }  // namespace rt::pov
