@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <fstream>
+#include <mutex>
+#include <set>
 
 namespace rt {
 
@@ -46,13 +48,29 @@ std::string readSourceLine(const std::string &path, int line) {
     return {};
 }
 
+std::mutex unquotableMutex;
+std::set<std::string> &unquotable() {
+    static std::set<std::string> paths;
+    return paths;
+}
+
+bool isUnquotable(const std::string &path) {
+    std::lock_guard<std::mutex> lock(unquotableMutex);
+    return unquotable().count(path) > 0;
+}
+
 }  // namespace
+
+void markUnquotable(const std::string &path) {
+    std::lock_guard<std::mutex> lock(unquotableMutex);
+    unquotable().insert(path);
+}
 
 std::string formatDiagnostic(const Diagnostic &d, bool withExcerpt) {
     // A diagnostic about the scene as a whole has no location to print
     std::string out = (d.loc.file ? d.loc.toString() + ": " : std::string()) +
                       severityName(d.severity) + ": " + d.message;
-    if (!withExcerpt || !d.loc.isValid()) return out;
+    if (!withExcerpt || !d.loc.isValid() || isUnquotable(*d.loc.file)) return out;
     std::string src = readSourceLine(*d.loc.file, d.loc.line);
     if (src.empty()) return out;
     // Long lines (minified JSON) are shown as a window around the column

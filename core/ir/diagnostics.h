@@ -23,6 +23,11 @@ struct Diagnostic {
 /// when the file can be read.
 std::string formatDiagnostic(const Diagnostic &d, bool withExcerpt = true);
 
+/// Marks a file whose lines formatDiagnostic never quotes: one a program only named (an
+/// include<> target that is not a .scad file), which may hold anything. Its locations are
+/// still printed. Thread-safe.
+void markUnquotable(const std::string &path);
+
 /// Collects non-fatal diagnostics; an optional listener sees each one as it is reported
 /// (the CLI prints them immediately).
 class DiagnosticSink {
