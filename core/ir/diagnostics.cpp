@@ -9,6 +9,7 @@
 #include <fstream>
 #include <limits>
 #include <mutex>
+#include <set>
 
 namespace rt {
 
@@ -138,13 +139,29 @@ LineIndex &lineIndex() {
     return index;
 }
 
+std::mutex unquotableMutex;
+std::set<std::string> &unquotable() {
+    static std::set<std::string> paths;
+    return paths;
+}
+
+bool isUnquotable(const std::string &path) {
+    std::lock_guard<std::mutex> lock(unquotableMutex);
+    return unquotable().count(path) > 0;
+}
+
 }  // namespace
+
+void markUnquotable(const std::string &path) {
+    std::lock_guard<std::mutex> lock(unquotableMutex);
+    unquotable().insert(path);
+}
 
 std::string formatDiagnostic(const Diagnostic &d, bool withExcerpt) {
     // A diagnostic about the scene as a whole has no location to print
     std::string out = (d.loc.file ? d.loc.toString() + ": " : std::string()) +
                       severityName(d.severity) + ": " + d.message;
-    if (!withExcerpt || !d.loc.isValid()) return out;
+    if (!withExcerpt || !d.loc.isValid() || isUnquotable(*d.loc.file)) return out;
     int col = std::max(d.loc.col, 1);
     // Long lines (minified JSON) are shown as a window around the column
     int first = std::max(1, col - kExcerptContext);

@@ -34,6 +34,10 @@ constexpr int kWarningsShownPerKind = 5;
 constexpr size_t kMaxKeptDiagnostics = 1000;
 /// At most this many kinds of warning are told apart; further kinds share one count.
 constexpr size_t kMaxWarningKinds = 1000;
+/// Marks a file whose lines formatDiagnostic never quotes: one a program only named (an
+/// include<> target that is not a .scad file), which may hold anything. Its locations are
+/// still printed. Thread-safe.
+void markUnquotable(const std::string &path);
 
 /// Collects non-fatal diagnostics; an optional listener sees each one as it is reported
 /// (the CLI prints them immediately). Memory is bounded whatever a hostile input reports:

@@ -15,6 +15,8 @@ using detail::Token;
 
 /// At most this many skipped-face warnings per file; the rest are counted in one summary.
 constexpr int kMaxFaceWarnings = 10;
+/// Larger vertex or face counts are refused outright (the products below must not overflow).
+constexpr uint64_t kMaxCount = uint64_t{1} << 40;
 
 /// What the header keyword says about each vertex line.
 struct OffHeader {
@@ -43,7 +45,7 @@ class OffParser {
   public:
     OffParser(const std::string &path, const std::string &text,
               std::shared_ptr<const std::string> file, DiagnosticSink &diag)
-        : path_(path), scan_(text, std::move(file), '#'), diag_(diag) {}
+        : path_(path), scan_(text, std::move(file), '#'), diag_(diag), textBytes_(text.size()) {}
 
     ir::Mesh parse() {
         ir::Mesh mesh;
@@ -77,8 +79,18 @@ class OffParser {
                 throw ParseError(scan_.loc(d), "dimension '" + std::string(d.text) +
                                                    "': only 3-dimensional nOFF is supported");
         }
-        uint64_t vertexCount = count(required(nextWord, "the vertex count"), "vertex count");
+        Token vertexTok = required(nextWord, "the vertex count");
+        uint64_t vertexCount = count(vertexTok, "vertex count");
         uint64_t faceCount = count(required(nextWord, "the face count"), "face count");
+        // Each vertex takes at least 6 bytes ("0 0 0\n") and each face 8 ("3 0 1 2\n"), the
+        // last line one less: counts the file cannot hold are refused before allocating
+        if (vertexCount > kMaxCount || faceCount > kMaxCount ||
+            vertexCount * 6 + faceCount * 8 > textBytes_ + 1)
+            throw ParseError(scan_.loc(vertexTok),
+                             "the header promises " + std::to_string(vertexCount) +
+                                 " vertices and " + std::to_string(faceCount) +
+                                 " faces, more than a file of " + std::to_string(textBytes_) +
+                                 " bytes can hold");
         Token edges;
         if (!pendingExtra && scan_.nextOnLine(edges)) count(edges, "edge count");
         scan_.skipLine();
@@ -216,6 +228,7 @@ class OffParser {
     const std::string &path_;
     detail::TextScanner scan_;
     DiagnosticSink &diag_;
+    uint64_t textBytes_;
 };
 
 }  // namespace

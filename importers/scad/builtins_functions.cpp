@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Builtin functions of OpenSCAD 2021.01 (func.cc): math in degrees, strings, lists, search.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -94,24 +95,68 @@ Value fnLog(Evaluator &ev, const Args &a, const SourceLoc &l) {
     return Value::number(std::log(a[1].toNumber()) / std::log(a[0].toNumber()));
 }
 
+/// OpenSCAD 2021.01's seed hash (linalg.cc hash_floating_point, after Python's hash of a
+/// float): the value modulo 2^31 - 1 computed exactly from its binary digits, so whole seeds
+/// map to themselves and every double, infinities and NaN included, has a defined seed.
+int32_t hashSeed(double v) {
+    constexpr int kBits = 31;
+    constexpr uint32_t kModulus = (uint32_t{1} << kBits) - 1;
+    if (std::isnan(v)) return 0;
+    if (std::isinf(v)) return v > 0 ? 314159 : -314159;
+    int e = 0;
+    double m = std::frexp(v, &e);
+    uint32_t sign = 1;
+    if (m < 0) {
+        sign = UINT32_MAX;  // -1: the product below negates modulo 2^32
+        m = -m;
+    }
+    uint32_t x = 0;
+    while (m != 0) {
+        // 28 bits at a time: x = x * 2^28 + the next digits, modulo kModulus
+        x = ((x << 28) & kModulus) | x >> (kBits - 28);
+        m *= 268435456.0;
+        e -= 28;
+        auto y = static_cast<uint32_t>(m);  // m < 2^28
+        m -= y;
+        x += y;
+        if (x >= kModulus) x -= kModulus;
+    }
+    e = e >= 0 ? e % kBits : kBits - 1 - ((-1 - e) % kBits);
+    x = ((x << e) & kModulus) | x >> (kBits - e);
+    x *= sign;
+    if (x == UINT32_MAX) x = UINT32_MAX - 1;
+    return static_cast<int32_t>(x);
+}
+
 Value fnRands(Evaluator &ev, const Args &a, const SourceLoc &l) {
-    // Same engine and distribution as OpenSCAD (std::mt19937 seeded with the truncated seed,
-    // std::uniform_real_distribution), so seeded sequences match. Unseeded calls use a
-    // per-import counter so imports are reproducible.
+    // Same engine, seeding and distribution as OpenSCAD 2021.01 (std::mt19937 seeded with
+    // hashSeed, uniform reals), so seeded sequences match. Unseeded calls use a per-import
+    // counter so imports are reproducible.
     if (a.size() != 3 && a.size() != 4) return undefWarn(ev, l, "rands", true);
     for (const auto &v : a)
         if (!v.isNumber()) return undefWarn(ev, l, "rands", false);
-    double lo = std::min(a[0].toNumber(), a[1].toNumber());
-    double hi = std::max(a[0].toNumber(), a[1].toNumber());
+    // An infinite or NaN bound becomes half the largest double, with OpenSCAD's warnings
+    auto bound = [&](double d, const char *which, double reset) {
+        if (std::isfinite(d)) return d;
+        ev.warn(l, std::string("rands() range ") + which + " cannot be infinite");
+        ev.warn(l, "resetting to " + formatNumber(reset));
+        return reset;
+    };
+    constexpr double kHalfMax = std::numeric_limits<double>::max() / 2;
+    double lo = bound(a[0].toNumber(), "min", -kHalfMax);
+    double hi = bound(a[1].toNumber(), "max", kHalfMax);
+    if (hi < lo) std::swap(lo, hi);
     double count = std::fabs(a[2].toNumber());
-    if (std::isinf(count)) {
+    if (!std::isfinite(count)) {
         ev.warn(l, "rands() cannot create an infinite number of results");
+        ev.warn(l, "resetting number of results to 1");
         count = 1;
     }
-    if (std::isnan(count)) count = 0;
-    ev.checkElementBudget(static_cast<size_t>(std::min(count, 1e15)), l);
-    std::mt19937 rng(a.size() == 4 ? static_cast<unsigned>(static_cast<int64_t>(a[3].toNumber()))
-                                   : static_cast<unsigned>(ev.randomSeed()));
+    // Checked before the conversion: a count beyond size_t would be undefined behaviour
+    double budget = static_cast<double>(ev.limits().maxLiveElements);
+    ev.checkElementBudget(count > budget ? static_cast<size_t>(budget) + 1 : static_cast<size_t>(count), l);
+    std::mt19937 rng(a.size() == 4 ? static_cast<uint32_t>(hashSeed(a[3].toNumber()))
+                                   : static_cast<uint32_t>(ev.randomSeed()));
     std::uniform_real_distribution<> dist(lo, hi);
     std::vector<Value> out;
     auto n = static_cast<size_t>(count);
@@ -155,8 +200,18 @@ Value fnLen(Evaluator &ev, const Args &a, const SourceLoc &l) {
 }
 
 Value fnStr(Evaluator &ev, const Args &a, const SourceLoc &l) {
+    // Formatted only up to one byte past the longest string: makeString then refuses it
+    const size_t limit = ev.limits().maxStringLength + 1;
     std::string s;
-    for (const auto &v : a) s += v.toString(false);
+    for (const auto &v : a) {
+        if (v.isString())
+            s.append(v.toStr(), 0, std::min(v.toStr().size(), limit - std::min(limit, s.size())));
+        else if (v.isVector())
+            v.appendEchoString(s, limit);
+        else
+            s += v.toString(false);
+        if (s.size() >= limit) break;
+    }
     return ev.makeString(std::move(s), l);
 }
 
@@ -273,6 +328,8 @@ Value fnSearch(Evaluator &ev, const Args &a, const SourceLoc &l) {
         if (!table.isVector()) return hits;
         const auto &t = table.toVector();
         for (size_t j = 0; j < t.size(); ++j) {
+            // Each comparison is a step: searching n needles in m entries takes n * m
+            ev.step(l);
             if (!matchesEntry(needle, t[j])) continue;
             hits.push_back(Value::number(static_cast<double>(j)));
             if (perMatch != 0 && hits.size() >= perMatch) break;
@@ -305,6 +362,7 @@ Value fnSearch(Evaluator &ev, const Args &a, const SourceLoc &l) {
         for (const auto &ch : utf8Chars(find.toStr())) {
             std::vector<Value> hits;
             for (size_t j = 0; j < tableChars.size(); ++j) {
+                ev.step(l);
                 if (tableChars[j] != ch) continue;
                 hits.push_back(Value::number(static_cast<double>(j)));
                 if (perMatch != 0 && hits.size() >= perMatch) break;

@@ -5,6 +5,7 @@
 
 #include <pthread.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -118,6 +119,20 @@ ir::NodePtr Evaluator::newNode(ir::NodeKind kind, const SourceLoc &loc) {
     return ir::Node::makeGroup(kind, loc);
 }
 
+void Evaluator::checkNodeDepth(const ir::Node &root) const {
+    // Iterative: the tree may be as deep as the evaluation recursed
+    std::vector<std::pair<const ir::Node *, int>> todo{{&root, 1}};
+    while (!todo.empty()) {
+        auto [n, depth] = todo.back();
+        todo.pop_back();
+        if (depth > limits_.maxNodeDepth)
+            throw EvalError(n->loc, "geometry nested too deep: more than " +
+                                        std::to_string(limits_.maxNodeDepth) +
+                                        " levels of module instances, transforms and operations");
+        for (const auto &c : n->children) todo.emplace_back(c.get(), depth + 1);
+    }
+}
+
 ir::NodePtr Evaluator::groupOf(ir::NodeKind kind, const SourceLoc &loc,
                                std::vector<ir::NodePtr> children) {
     ir::NodePtr n = newNode(kind, loc);
@@ -129,15 +144,24 @@ ir::NodePtr Evaluator::groupOf(ir::NodeKind kind, const SourceLoc &loc,
 // Top level
 
 ir::Scene Evaluator::evaluate(const SourceFile &main, SourceLoader &loader) {
-    // The lowest stack address evaluation may reach before failing with a located error
+    // The lowest stack address evaluation may reach before failing with a located error. What
+    // is left below serves the recursions that do not check (freeing, printing and comparing
+    // values up to limits_.maxValueDepth deep): at least stackReserveBytes, a quarter of a
+    // large stack.
     pthread_attr_t attr;
     if (pthread_getattr_np(pthread_self(), &attr) == 0) {
         void *addr = nullptr;
         size_t size = 0;
         if (pthread_attr_getstack(&attr, &addr, &size) == 0 && size > 2 * limits_.stackReserveBytes)
-            stackLow_ = static_cast<const char *>(addr) + limits_.stackReserveBytes;
+            stackLow_ = static_cast<const char *>(addr) + std::max(limits_.stackReserveBytes, size / 4);
         pthread_attr_destroy(&attr);
     }
+    // Value operations (vector arithmetic, comparisons) stop at the same element budget
+    struct RestoreValueLimits {
+        ValueLimits saved;
+        ~RestoreValueLimits() { setValueLimits(saved); }
+    } restoreValueLimits{setValueLimits(
+        ValueLimits{limits_.maxLiveElements, limits_.maxLiveElements, limits_.maxValueDepth})};
 
     // Builtin constants and special variables (builtin.cc); $preview is false when rendering
     builtinFrame_ = makeFrame(nullptr);
@@ -186,6 +210,7 @@ ir::Scene Evaluator::evaluate(const SourceFile &main, SourceLoader &loader) {
         scene_.root->children = std::move(nodes);
     if (!shapes2d_.empty()) finish2d(*scene_.root, true);
 
+    checkNodeDepth(*scene_.root);
     if (!scene_.camera) cameraFromViewportVariables(main);
     scene_.fontFiles = loader.fontFiles();
     return std::move(scene_);
@@ -218,6 +243,16 @@ Value Evaluator::lookupVariable(Symbol name, const Frame *f, const SourceLoc &lo
 }
 
 Value Evaluator::eval(const Expr &e, const FramePtr &f) {
+    checkStack(e.loc);
+    try {
+        return evalUnchecked(e, f);
+    } catch (const ValueLimitError &err) {
+        // The innermost expression names the place; outer ones see an EvalError
+        throw EvalError(e.loc, err.what());
+    }
+}
+
+Value Evaluator::evalUnchecked(const Expr &e, const FramePtr &f) {
     switch (e.kind) {
         case ExprKind::Literal: return static_cast<const LiteralExpr &>(e).value;
         case ExprKind::Identifier:
@@ -316,6 +351,7 @@ Value Evaluator::evalVector(const VectorExpr &v, const FramePtr &f) {
 }
 
 void Evaluator::evalElement(const Expr &e, const FramePtr &f, std::vector<Value> &out) {
+    checkStack(e.loc);
     auto push = [&](Value v) {
         if ((out.size() & 1023) == 1023) checkElementBudget(out.size(), e.loc);
         out.push_back(std::move(v));
@@ -801,6 +837,14 @@ std::optional<Evaluator::ModuleLookup> Evaluator::findModule(Symbol name, const 
 }
 
 ir::NodePtr Evaluator::instantiateUnmodified(const ModuleInstantiation &inst, const FramePtr &f) {
+    try {
+        return instantiateUnchecked(inst, f);
+    } catch (const ValueLimitError &err) {
+        throw EvalError(inst.loc, err.what());
+    }
+}
+
+ir::NodePtr Evaluator::instantiateUnchecked(const ModuleInstantiation &inst, const FramePtr &f) {
     checkStack(inst.loc);
     step(inst.loc);
     if (inst.isIf) return moduleIf(inst, f);

@@ -34,6 +34,12 @@ struct EvalLimits {
     int64_t maxLiveElements = 8'000'000;     ///< vector elements alive at once (~24 bytes each)
     int64_t maxLiveStringBytes = 256 << 20;  ///< bytes of string values alive at once
     int64_t maxNodes = 1'500'000;            ///< IR nodes produced (~300 bytes each)
+    /// Deepest node of the scene tree: the root is at depth 1. Later stages may walk the tree
+    /// recursively on an ordinary thread stack, so a deeper tree is a located error.
+    int maxNodeDepth = 10000;
+    /// Nesting of vector values (`[[[...]]]` built by a loop or tail recursion): freeing,
+    /// printing or comparing them recurses that deep.
+    int maxValueDepth = 100000;
     size_t maxStringLength = 64u << 20;      ///< bytes in one string value
     size_t stackReserveBytes = 1u << 20;     ///< stack kept free below the deepest frame
 };
@@ -116,6 +122,7 @@ class Evaluator {
 
     // Services used by the builtin function and module implementations
     DiagnosticSink &diag() { return diag_; }
+    const EvalLimits &limits() const { return limits_; }
     void warn(const SourceLoc &loc, const std::string &msg) {
         if (quiet_ == 0) diag_.warning(loc, msg);
     }
@@ -153,6 +160,7 @@ class Evaluator {
 
     // Expressions (evaluator.cpp)
     Value eval(const Expr &e, const FramePtr &f);
+    Value evalUnchecked(const Expr &e, const FramePtr &f);
     Value lookupVariable(Symbol name, const Frame *f, const SourceLoc &loc, bool silent = false);
     Value evalVector(const VectorExpr &v, const FramePtr &f);
     void evalElement(const Expr &e, const FramePtr &f, std::vector<Value> &out);
@@ -174,6 +182,8 @@ class Evaluator {
                         const FramePtr &argFrame, Frame &into, const FramePtr &defaultsFrame,
                         const SourceLoc &callLoc);
     void checkStack(const SourceLoc &loc);
+    /// Throws at the first node deeper than limits_.maxNodeDepth.
+    void checkNodeDepth(const ir::Node &root) const;
     void stepSlow(const SourceLoc &loc);
     static constexpr int64_t kProgressStepMask = (1 << 16) - 1;
 
@@ -182,6 +192,7 @@ class Evaluator {
     void instantiateScope(const Scope &s, const FramePtr &f, std::vector<ir::NodePtr> &out);
     ir::NodePtr instantiate(const ModuleInstantiation &inst, const FramePtr &f);
     ir::NodePtr instantiateUnmodified(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr instantiateUnchecked(const ModuleInstantiation &inst, const FramePtr &f);
     std::optional<ModuleLookup> findModule(Symbol name, const Frame *f);
     FramePtr libraryFrame(LoadedFile &lib);
     ir::NodePtr instantiateUser(const ModuleLookup &m, const ModuleInstantiation &inst,

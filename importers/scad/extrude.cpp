@@ -3,6 +3,7 @@
 #include "importers/scad/extrude.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 
 #include "core/ir/facets.h"
@@ -30,15 +31,22 @@ Vec2 place(Vec2 p, Vec2 k, double rot) {
     return {k.x * (c * p.x - s * p.y), k.y * (s * p.x + c * p.y)};
 }
 
+/// ceil(x) as an int, saturated (NaN counts as 1): slice counts beyond the cap are clamped by
+/// the caller, and a huge twist or $fn must not make the conversion undefined.
+int ceilCount(double x) {
+    if (!(x >= 1)) return 1;
+    return x >= static_cast<double>(INT_MAX) ? INT_MAX : static_cast<int>(std::ceil(x));
+}
+
 int helixSlices(double rSqr, double height, double twist, const ir::Fragments &f) {
     twist = std::abs(twist);
-    int minSlices = std::max(static_cast<int>(std::ceil(twist / 120.0)), 1);
+    int minSlices = std::max(ceilCount(twist / 120.0), 1);
     if (std::sqrt(rSqr) < ir::kGridFine) return minSlices;
-    if (f.fn > 0) return std::max(static_cast<int>(std::ceil(twist / 360.0 * f.fn)), minSlices);
+    if (f.fn > 0) return std::max(ceilCount(twist / 360.0 * f.fn), minSlices);
     // Helix length T sqrt(r^2 + c^2) with pitch c = height / T
     double t = twist * M_PI / 180, c = height / t;
-    int faSlices = static_cast<int>(std::ceil(twist / f.fa));
-    int fsSlices = static_cast<int>(std::ceil(t * std::sqrt(rSqr + c * c) / f.fs));
+    int faSlices = ceilCount(twist / f.fa);
+    int fsSlices = ceilCount(t * std::sqrt(rSqr + c * c) / f.fs);
     return std::max(std::min(faSlices, fsSlices), minSlices);
 }
 
@@ -50,9 +58,9 @@ int conicalHelixSlices(double rSqr, double height, double twist, double scale,
                        const ir::Fragments &f) {
     twist = std::abs(twist);
     double r = std::sqrt(rSqr);
-    int minSlices = std::max(static_cast<int>(std::ceil(twist / 120.0)), 1);
+    int minSlices = std::max(ceilCount(twist / 120.0), 1);
     if (r < ir::kGridFine) return minSlices;
-    if (f.fn > 0) return std::max(static_cast<int>(std::ceil(twist * f.fn / 360)), minSlices);
+    if (f.fn > 0) return std::max(ceilCount(twist * f.fn / 360), minSlices);
     // The path of the farthest point projects to a piece of an Archimedes spiral that would
     // reach the origin where the scale reaches 0
     double rads = twist * M_PI / 180;
@@ -61,15 +69,15 @@ int conicalHelixSlices(double rSqr, double height, double twist, double scale,
     double a = r / angleEnd;
     double spiral = archimedesLength(a, angleEnd) - archimedesLength(a, angleStart);
     double total = std::sqrt(spiral * spiral + height * height);
-    int fsSlices = static_cast<int>(std::ceil(total / f.fs));
-    int faSlices = static_cast<int>(std::ceil(twist / f.fa));
+    int fsSlices = ceilCount(total / f.fs);
+    int faSlices = ceilCount(twist / f.fa);
     return std::max(std::min(faSlices, fsSlices), minSlices);
 }
 
 int diagonalSlices(double deltaSqr, double height, const ir::Fragments &f) {
     if (std::sqrt(deltaSqr) < ir::kGridFine) return 1;
-    if (f.fn > 0) return std::max(static_cast<int>(f.fn), 1);
-    return std::max(static_cast<int>(std::ceil(std::sqrt(deltaSqr + height * height) / f.fs)), 1);
+    if (f.fn > 0) return f.fn >= static_cast<double>(INT_MAX) ? INT_MAX : std::max(static_cast<int>(f.fn), 1);
+    return std::max(ceilCount(std::sqrt(deltaSqr + height * height) / f.fs), 1);
 }
 
 }  // namespace

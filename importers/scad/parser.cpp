@@ -7,8 +7,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
+#include "importers/mesh/reader_support.h"
 #include "importers/scad/lexer.h"
 
 #ifndef SCADRAY_LIBRARY_DIR
@@ -22,11 +22,11 @@ namespace fs = std::filesystem;
 namespace {
 
 /// Deepest nesting of expressions/statements accepted; beyond it the input is rejected
-/// instead of exhausting the parser's stack.
+/// instead of exhausting the parser's stack. The links of a left-associative or postfix chain
+/// (`1+1+...`, `f(1)(1)...`, `a[0][0]...`, `a.x.x...`) count as nesting too: the tree such a
+/// chain builds is as deep as the chain, and evaluating or freeing it recurses that deep. So
+/// no syntax tree is deeper than a small multiple of this.
 constexpr int kMaxNesting = 10000;
-/// Longest chain of one left-associative operator (`1+1+...`): the tree it builds is as deep
-/// as the chain, and evaluating or freeing it recurses that deep.
-constexpr int kMaxOperatorChain = 100000;
 /// include<> chains deeper than this are taken to be recursive.
 constexpr int kMaxIncludeDepth = 64;
 constexpr const char *kOpenScadLibraryDir = "/usr/share/openscad/libraries";
@@ -54,6 +54,18 @@ bool hasFontSignature(const std::string &path) {
     return m == std::string("\0\1\0\0", 4) || m == "true" || m == "OTTO" || m == "ttcf";
 }
 
+/// Runs `parse` on the text of `path`. A syntax error in a file that is not named .scad says
+/// only "syntax error", as OpenSCAD does: the usual message would quote the file's text.
+template <typename F>
+void parseQuietly(const std::string &path, F &&parse) {
+    try {
+        parse();
+    } catch (const ParseError &e) {
+        if (isScadFile(path) || e.loc().fileName() != path) throw;
+        throw ParseError(e.loc(), "syntax error (in a file not named .scad, not quoted)");
+    }
+}
+
 class Parser {
   public:
     Parser(std::vector<Token> tokens, SourceLoader &loader, SourceFile &root, int includeDepth)
@@ -63,13 +75,27 @@ class Parser {
     ExprPtr parseWholeExpression();
 
   private:
+    [[noreturn]] static void tooDeep(const SourceLoc &loc) {
+        throw ParseError(loc, "expression or statement nesting too deep (more than " +
+                                  std::to_string(kMaxNesting) +
+                                  " nested or chained brackets, operators, calls or statements)");
+    }
     struct NestingGuard {
         explicit NestingGuard(Parser &p) : p_(p) {
-            if (++p_.nesting_ > kMaxNesting)
-                throw ParseError(p_.cur().loc, "expression or statement nesting too deep");
+            if (++p_.nesting_ > kMaxNesting) tooDeep(p_.cur().loc);
         }
         ~NestingGuard() { --p_.nesting_; }
         Parser &p_;
+    };
+    /// Counts each link of a chain as one level of nesting until the chain ends.
+    struct ChainGuard {
+        explicit ChainGuard(Parser &p) : p_(p), base_(p.nesting_) {}
+        void link(const SourceLoc &loc) {
+            if (++p_.nesting_ > kMaxNesting) tooDeep(loc);
+        }
+        ~ChainGuard() { p_.nesting_ = base_; }
+        Parser &p_;
+        int base_;
     };
 
     const Token &cur() const { return toks_[pos_]; }
@@ -88,11 +114,6 @@ class Parser {
         return any;
     }
     [[noreturn]] void unexpected(const char *context) const;
-    static void checkChain(int length, const SourceLoc &loc) {
-        if (length > kMaxOperatorChain)
-            throw ParseError(loc, "expression too long: more than " +
-                                      std::to_string(kMaxOperatorChain) + " chained operators");
-    }
 
     void parseStatement(Scope &scope);
     void parseInclude(Scope &scope);
@@ -184,10 +205,12 @@ void Parser::parseInclude(Scope &scope) {
                                       " deep (recursive include?)");
     std::string text = loader_.read(path, tok.loc);
     auto file = std::make_shared<const std::string>(path);
-    Lexer lexer(std::move(text), file, &loader_.diag());
-    // Textual inclusion: the included statements join the current scope
-    Parser sub(lexer.tokenize(), loader_, root_, includeDepth_ + 1);
-    sub.parseStatements(scope);
+    parseQuietly(path, [&] {
+        Lexer lexer(std::move(text), file, &loader_.diag());
+        // Textual inclusion: the included statements join the current scope
+        Parser sub(lexer.tokenize(), loader_, root_, includeDepth_ + 1);
+        sub.parseStatements(scope);
+    });
 }
 
 void Parser::parseUse() {
@@ -423,12 +446,12 @@ ExprPtr Parser::parseTernary() {
 }
 
 ExprPtr Parser::parseOr() {
-    int chain = 0;
+    ChainGuard chain(*this);
     ExprPtr e = parseAnd();
     while (at(TokenKind::OrOr)) {
         SourceLoc loc = cur().loc;
         ++pos_;
-        checkChain(++chain, loc);
+        chain.link(loc);
         e = std::make_unique<BinaryExpr>(ExprKind::Or, BinaryOp::Add, std::move(e), parseAnd(),
                                          loc);
     }
@@ -436,12 +459,12 @@ ExprPtr Parser::parseOr() {
 }
 
 ExprPtr Parser::parseAnd() {
-    int chain = 0;
+    ChainGuard chain(*this);
     ExprPtr e = parseEquality();
     while (at(TokenKind::AndAnd)) {
         SourceLoc loc = cur().loc;
         ++pos_;
-        checkChain(++chain, loc);
+        chain.link(loc);
         e = std::make_unique<BinaryExpr>(ExprKind::And, BinaryOp::Add, std::move(e),
                                          parseEquality(), loc);
     }
@@ -449,20 +472,20 @@ ExprPtr Parser::parseAnd() {
 }
 
 ExprPtr Parser::parseEquality() {
-    int chain = 0;
+    ChainGuard chain(*this);
     ExprPtr e = parseComparison();
     while (at(TokenKind::EqualEqual) || at(TokenKind::NotEqual)) {
         ExprKind k = at(TokenKind::EqualEqual) ? ExprKind::Equal : ExprKind::NotEqual;
         SourceLoc loc = cur().loc;
         ++pos_;
-        checkChain(++chain, loc);
+        chain.link(loc);
         e = std::make_unique<BinaryExpr>(k, BinaryOp::Add, std::move(e), parseComparison(), loc);
     }
     return e;
 }
 
 ExprPtr Parser::parseComparison() {
-    int chain = 0;
+    ChainGuard chain(*this);
     ExprPtr e = parseAddition();
     for (;;) {
         BinaryOp op;
@@ -475,19 +498,19 @@ ExprPtr Parser::parseComparison() {
         }
         SourceLoc loc = cur().loc;
         ++pos_;
-        checkChain(++chain, loc);
+        chain.link(loc);
         e = std::make_unique<BinaryExpr>(ExprKind::Binary, op, std::move(e), parseAddition(), loc);
     }
 }
 
 ExprPtr Parser::parseAddition() {
-    int chain = 0;
+    ChainGuard chain(*this);
     ExprPtr e = parseMultiplication();
     while (at(TokenKind::Plus) || at(TokenKind::Minus)) {
         BinaryOp op = at(TokenKind::Plus) ? BinaryOp::Add : BinaryOp::Sub;
         SourceLoc loc = cur().loc;
         ++pos_;
-        checkChain(++chain, loc);
+        chain.link(loc);
         e = std::make_unique<BinaryExpr>(ExprKind::Binary, op, std::move(e), parseMultiplication(),
                                          loc);
     }
@@ -495,7 +518,7 @@ ExprPtr Parser::parseAddition() {
 }
 
 ExprPtr Parser::parseMultiplication() {
-    int chain = 0;
+    ChainGuard chain(*this);
     ExprPtr e = parseUnary();
     for (;;) {
         BinaryOp op;
@@ -507,7 +530,7 @@ ExprPtr Parser::parseMultiplication() {
         }
         SourceLoc loc = cur().loc;
         ++pos_;
-        checkChain(++chain, loc);
+        chain.link(loc);
         e = std::make_unique<BinaryExpr>(ExprKind::Binary, op, std::move(e), parseUnary(), loc);
     }
 }
@@ -545,9 +568,11 @@ ExprPtr Parser::parseExponent() {
 }
 
 ExprPtr Parser::parsePostfix() {
+    ChainGuard chain(*this);
     ExprPtr e = parsePrimary();
     for (;;) {
         SourceLoc loc = cur().loc;
+        if (at(TokenKind::LParen) || at(TokenKind::LBracket) || at(TokenKind::Dot)) chain.link(loc);
         if (accept(TokenKind::LParen)) {
             auto c = std::make_unique<CallExpr>(e->loc);
             c->callee = std::move(e);
@@ -775,11 +800,16 @@ void SourceLoader::registerFont(const std::string &name, const std::string &from
 }
 
 std::string SourceLoader::read(const std::string &path, const SourceLoc &loc) const {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw ParseError(loc, "can't open file '" + path + "'");
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
+    // A file that is not named .scad may be anything (include </etc/shadow>): diagnostics
+    // located in it never quote its lines
+    if (!isScadFile(path)) markUnquotable(path);
+    return meshio::detail::readRegularFile(path, loc, kMaxSourceBytes);
+}
+
+bool isScadFile(const std::string &path) {
+    std::string ext = fs::path(path).extension().string();
+    for (auto &c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext == ".scad";
 }
 
 std::shared_ptr<SourceFile> SourceLoader::loadUsed(const std::string &path, const SourceLoc &loc) {
@@ -790,9 +820,11 @@ std::shared_ptr<SourceFile> SourceLoader::loadUsed(const std::string &path, cons
     used_[path] = file;
     std::string text = read(path, loc);
     auto name = std::make_shared<const std::string>(path);
-    Lexer lexer(std::move(text), name, &diag_);
-    Parser parser(lexer.tokenize(), *this, *file, 0);
-    parser.parseStatements(file->top);
+    parseQuietly(path, [&] {
+        Lexer lexer(std::move(text), name, &diag_);
+        Parser parser(lexer.tokenize(), *this, *file, 0);
+        parser.parseStatements(file->top);
+    });
     return file;
 }
 

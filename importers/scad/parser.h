@@ -2,6 +2,7 @@
 // Recursive-descent parser for OpenSCAD 2021.01 with include<> splicing and use<> loading.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
@@ -13,6 +14,12 @@
 
 namespace rt::scad {
 
+/// Largest source file read (main file, include<> or use<>): 256 MiB.
+constexpr uint64_t kMaxSourceBytes = uint64_t{256} << 20;
+
+/// True when `path` ends in .scad (any case); other files are not quoted in diagnostics.
+bool isScadFile(const std::string &path);
+
 /// Finds, reads and caches source files for include<> and use<>.
 class SourceLoader {
   public:
@@ -22,7 +29,8 @@ class SourceLoader {
     /// Resolves `name` as written in include<>/use<> against `fromDir`, then the library
     /// paths; empty when no readable file exists.
     std::string resolve(const std::string &name, const std::string &fromDir) const;
-    /// Reads a whole file; throws ParseError at `loc` when it cannot be read.
+    /// Reads a whole regular file of at most kMaxSourceBytes; throws ParseError at `loc` when it
+    /// cannot be read. A file not named .scad is marked unquotable (markUnquotable).
     std::string read(const std::string &path, const SourceLoc &loc) const;
 
     /// Parses a used library once (by path) and returns it; cycles return the file being parsed.

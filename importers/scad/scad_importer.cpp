@@ -6,10 +6,9 @@
 #include <pthread.h>
 
 #include <exception>
-#include <fstream>
 #include <functional>
-#include <sstream>
 
+#include "importers/mesh/reader_support.h"
 #include "importers/scad/evaluator.h"
 #include "importers/scad/lexer.h"
 #include "importers/scad/parser.h"
@@ -88,13 +87,9 @@ ir::Scene importScadSource(const std::string &source, const std::string &virtual
 }
 
 ir::Scene importScad(const std::string &path, DiagnosticSink &diag, const ImportOptions &opts) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw ParseError(SourceLoc(std::make_shared<const std::string>(path), 0, 0),
-                         "can't open file '" + path + "'");
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return importScadSource(ss.str(), path, diag, opts);
+    SourceLoc loc(std::make_shared<const std::string>(path), 0, 0);
+    return importScadSource(meshio::detail::readRegularFile(path, loc, kMaxSourceBytes), path,
+                            diag, opts);
 }
 
 }  // namespace rt::scad

@@ -2,6 +2,7 @@
 // Value construction, OpenSCAD number/echo formatting and the arithmetic of value.cc (2021.01).
 #include "importers/scad/value.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -16,8 +17,15 @@ namespace {
 
 thread_local int64_t tlLiveElements = 0;
 thread_local int64_t tlLiveStringBytes = 0;
+thread_local ValueLimits tlLimits;
 
 }  // namespace
+
+ValueLimits setValueLimits(const ValueLimits &limits) {
+    ValueLimits old = tlLimits;
+    tlLimits = limits;
+    return old;
+}
 
 int64_t liveVectorElements() { return tlLiveElements; }
 int64_t liveStringBytes() { return tlLiveStringBytes; }
@@ -29,6 +37,13 @@ StringData::StringData(std::string s) : text(std::move(s)) {
 StringData::~StringData() { tlLiveStringBytes -= static_cast<int64_t>(text.size()); }
 
 VectorData::VectorData(std::vector<Value> v) : items(std::move(v)) {
+    if (tlLiveElements + static_cast<int64_t>(items.size()) > tlLimits.maxLiveElements)
+        throw ValueLimitError("too many elements: vectors would hold more than " +
+                              std::to_string(tlLimits.maxLiveElements) + " values");
+    for (const auto &e : items) depth = std::max(depth, e.depth() + 1);
+    if (depth > tlLimits.maxDepth)
+        throw ValueLimitError("vectors nested too deep: more than " +
+                              std::to_string(tlLimits.maxDepth) + " levels");
     tlLiveElements += static_cast<int64_t>(items.size());
 }
 
@@ -111,6 +126,28 @@ bool Value::getVec3(double &x, double &y, double &z, bool allow2, double default
     return false;
 }
 
+namespace {
+
+/// Deep equality counting the vector elements it visits against ValueLimits::maxVisits: shared
+/// sub-vectors are compared once per reference, which may be exponentially many.
+bool equalValues(const Value &a, const Value &b, int64_t &visits) {
+    if (a.type() != b.type()) return false;
+    if (!a.isVector()) return a == b;
+    if (a.vectorPtr() == b.vectorPtr()) return true;
+    const auto &x = a.toVector(), &y = b.toVector();
+    if (x.size() != y.size()) return false;
+    visits += static_cast<int64_t>(x.size());
+    if (visits > tlLimits.maxVisits)
+        throw ValueLimitError("comparison too large: more than " +
+                              std::to_string(tlLimits.maxVisits) +
+                              " elements compared (vectors sharing sub-vectors?)");
+    for (size_t i = 0; i < x.size(); ++i)
+        if (!equalValues(x[i], y[i], visits)) return false;
+    return true;
+}
+
+}  // namespace
+
 bool Value::operator==(const Value &o) const {
     if (type() != o.type()) return false;
     switch (type()) {
@@ -119,12 +156,8 @@ bool Value::operator==(const Value &o) const {
         case Type::Number: return toNumber() == o.toNumber();
         case Type::String: return toStr() == o.toStr();
         case Type::Vector: {
-            if (vectorPtr() == o.vectorPtr()) return true;
-            const auto &a = toVector(), &b = o.toVector();
-            if (a.size() != b.size()) return false;
-            for (size_t i = 0; i < a.size(); ++i)
-                if (a[i] != b[i]) return false;
-            return true;
+            int64_t visits = 0;
+            return equalValues(*this, o, visits);
         }
         case Type::Range: {
             const auto &a = toRange(), &b = o.toRange();
@@ -192,7 +225,7 @@ std::string formatNumber(double d) {
     return out;
 }
 
-std::string Value::toString(bool quoteStrings) const {
+std::string Value::toString(bool quoteStrings, size_t limit) const {
     switch (type()) {
         case Type::Undef: return "undef";
         case Type::Bool: return boolValue() ? "true" : "false";
@@ -200,7 +233,11 @@ std::string Value::toString(bool quoteStrings) const {
         case Type::String: return quoteStrings ? "\"" + toStr() + "\"" : toStr();
         case Type::Vector: {
             std::string s;
-            appendEchoString(s, SIZE_MAX);
+            appendEchoString(s, limit);
+            if (s.size() > limit) {
+                s.resize(limit);
+                s += " ...";
+            }
             return s;
         }
         case Type::Range: {
@@ -215,7 +252,15 @@ std::string Value::toString(bool quoteStrings) const {
 
 void Value::appendEchoString(std::string &out, size_t limit) const {
     if (!isVector()) {
-        out += toString(true);
+        if (!isString()) {
+            out += toString(true);
+        } else if (out.size() < limit) {
+            // Only what fits (and one byte more, so the caller sees the cut)
+            const std::string &t = toStr();
+            out += '"';
+            out.append(t, 0, std::min(t.size(), limit - out.size() + 1));
+            if (out.size() <= limit) out += '"';
+        }
         return;
     }
     out += '[';

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <variant>
 #include <vector>
@@ -25,10 +26,30 @@ struct RangeValue {
     double at(uint64_t i) const { return begin + static_cast<double>(i) * step; }
 };
 
+/// Thrown by value operations that run into the calling thread's ValueLimits; the evaluator
+/// turns it into a located EvalError.
+struct ValueLimitError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+/// Bounds of value operations on the calling thread (see setValueLimits). Values shared by
+/// reference make a small program able to describe a huge value (`v = [v, v]` sixty times
+/// over): operations that expand or visit it stop at these bounds instead of running out of
+/// memory or time.
+struct ValueLimits {
+    int64_t maxLiveElements = INT64_MAX;  ///< vector elements alive at once
+    int64_t maxVisits = INT64_MAX;        ///< elements one comparison may visit
+    int maxDepth = INT32_MAX;             ///< nesting of vectors
+};
+/// Sets the bounds for the calling thread; returns the previous ones.
+ValueLimits setValueLimits(const ValueLimits &limits);
+
 /// Storage of a vector value. The live element count of the evaluating thread is tracked so the
-/// evaluator can stop a memory blow-up with a located error instead of exhausting memory.
+/// evaluator can stop a memory blow-up with a located error instead of exhausting memory;
+/// constructing one past ValueLimits::maxLiveElements or maxDepth throws ValueLimitError.
 struct VectorData {
     std::vector<Value> items;
+    int depth = 1;  ///< 1 + the deepest nesting of the vectors among items
 
     explicit VectorData(std::vector<Value> v);
     ~VectorData();
@@ -105,9 +126,14 @@ class Value {
     bool operator==(const Value &o) const;
     bool operator!=(const Value &o) const { return !(*this == o); }
 
-    /// OpenSCAD's echo/str formatting: strings quoted when `quoteStrings`.
-    std::string toString(bool quoteStrings) const;
-    std::string toEchoString() const { return toString(true); }
+    /// OpenSCAD's echo/str formatting: strings quoted when `quoteStrings`. Text past `limit`
+    /// bytes is cut, ending in " ..." (so a huge shared vector is never formatted whole).
+    std::string toString(bool quoteStrings, size_t limit = kMaxTextBytes) const;
+    std::string toEchoString(size_t limit = kMaxTextBytes) const { return toString(true, limit); }
+    /// Default cut of toString: values quoted in messages.
+    static constexpr size_t kMaxTextBytes = 64 << 10;
+    /// Nesting of vectors: 0 for other values.
+    int depth() const { return isVector() ? vectorPtr()->depth : 0; }
     /// Appends the echo form to `out`, stopping soon after `out` reaches `limit` bytes (the
     /// text is then cut short, mid-element), so a huge value is never formatted whole.
     void appendEchoString(std::string &out, size_t limit) const;

@@ -2,7 +2,10 @@
 // OFF reader tests: header variants, polygons (quads, a concave pentagon), located errors.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include "importers/mesh/mesh_reader.h"
+#include "importers/mesh/reader_support.h"
 #include "importers/mesh/mesh_test_support.h"
 
 namespace rt::meshio::test {
@@ -151,6 +154,41 @@ TEST(OffReader, MalformedFilesAreLocatedErrors) {
 
     e = errorOf("");
     EXPECT_EQ(std::string(e.what()), "empty file: expected 'OFF'");
+}
+
+TEST(OffReader, CountsTheFileCannotHoldAreRefusedBeforeAllocating) {
+    // Issue 14: 4e9 vertices used to be reserved at once ("out of memory", unlocated)
+    DiagnosticSink diag;
+    std::string path = testDir() + "/huge.off";
+    writeFile(path, "OFF\n4000000000 1 0\n0 0 0\n");
+    ParseError e = parseErrorOf([&] { readOff(path, diag); });
+    EXPECT_EQ(e.loc().toString(), path + ":2:1");
+    EXPECT_EQ(std::string(e.what()),
+              "the header promises 4000000000 vertices and 1 faces, more than a file of 25 bytes "
+              "can hold");
+    writeFile(path, "OFF 3 99999999999999 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    e = parseErrorOf([&] { readOff(path, diag); });
+    EXPECT_EQ(e.loc().toString(), path + ":1:5");
+    // The smallest file holding its counts is still read
+    writeFile(path, "OFF 3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2");
+    EXPECT_EQ(readOff(path, diag).triangles.size(), 1u);
+}
+
+TEST(OffReader, FifosFoldersAndHugeFilesAreRefusedWithoutReading) {
+    DiagnosticSink diag;
+    std::string dir = testDir();
+    std::string fifo = dir + "/pipe.off";
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    EXPECT_NE(std::string(parseErrorOf([&] { readOff(fifo, diag); }).what()).find("not a regular file"),
+              std::string::npos);
+    fs::create_directories(dir + "/folder.stl");
+    EXPECT_NE(std::string(parseErrorOf([&] { readStl(dir + "/folder.stl", diag); }).what())
+                  .find("not a regular file (a directory)"),
+              std::string::npos);
+    std::string big = writeFile(dir + "/big.stl", "");
+    ASSERT_EQ(truncate(big.c_str(), static_cast<off_t>(detail::kMaxMeshFileBytes + 1)), 0);
+    EXPECT_NE(std::string(parseErrorOf([&] { readStl(big, diag); }).what()).find("is too large"),
+              std::string::npos);
 }
 
 TEST(OffReader, DegenerateFacesAndTrailingTextWarn) {
