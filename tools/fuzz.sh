@@ -1,0 +1,101 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# Builds the libFuzzer targets of tests/fuzz (clang, ASan + UBSan, -O1 -g, in build-asan/ with
+# the sanitized unit tests) and runs each for a fixed time, two at a time. Fails when any target
+# finds a crash, a leak, a UBSan report, a timeout (-timeout=10 s per input) or an input using
+# more than 2 GiB; the input is saved under build-asan/fuzz/artifacts/<target>/ and named in the
+# summary. Minimize it with
+#   build-asan/tests/fuzz/<target>_fuzz -minimize_crash=1 -runs=10000 <input>
+# and keep it under tests/fuzz/regressions/<target>/, which every later run replays first.
+#
+#   ./tools/fuzz.sh [seconds] [target...]    seconds per target (default 60); targets:
+#                                            scad gltf glb stl off image pov (default: all)
+# The corpus grows in build-asan/fuzz/corpus/<target>/ between runs on one machine.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$(pwd)
+seconds=60
+if [[ $# -gt 0 && "$1" =~ ^[0-9]+$ ]]; then seconds=$1; shift; fi
+all=(scad gltf glb stl off image pov)
+targets=("$@")
+if [[ ${#targets[@]} -eq 0 ]]; then targets=("${all[@]}"); fi
+for t in "${targets[@]}"; do
+    if [[ ! " ${all[*]} " =~ " $t " ]]; then echo "fuzz: unknown target '$t' (${all[*]})" >&2; exit 2; fi
+done
+
+./tools/sanitize.sh --build "${targets[@]/%/_fuzz}"
+
+shared=${SCADRAY_SHARED_DIR:-$root/../shared}
+work=$root/build-asan/fuzz
+mkdir -p "$work"
+
+# Seed files for a target: committed seeds, its regressions, and project files by pattern
+# (copied into one folder, so libFuzzer does not read unrelated files in those trees)
+seed() {  # seed TARGET PATTERN DIR...
+    local t=$1 pattern=$2; shift 2
+    local d
+    for d in "$@"; do
+        [[ -d "$d" ]] || continue
+        find "$d" -type f -name "$pattern" -size -512k -print0 |
+            while IFS= read -r -d '' f; do
+                cp "$f" "$work/seeds/$t/$(echo "${f#"$root"/}" | tr '/' '_')"
+            done
+    done
+}
+run_one() {  # run_one TARGET
+    local t=$1 max_len dict=()
+    rm -rf "$work/seeds/$t" "$work/artifacts/$t"
+    mkdir -p "$work/seeds/$t" "$work/corpus/$t" "$work/artifacts/$t" "$work/logs"
+    case $t in
+        scad) max_len=8192; dict=(-dict=tests/fuzz/scad.dict)
+              # OpenSCAD's examples are GPL: read in place when installed, never copied into the repo
+              seed scad '*.scad' scenes tests/importers tests/integration tests/bench /usr/share/openscad/examples ;;
+        gltf) max_len=65536; dict=(-dict=tests/fuzz/gltf.dict)
+              seed gltf '*.gltf' scenes "$shared/gltf" ;;
+        glb)  max_len=131072; dict=(-dict=tests/fuzz/gltf.dict)
+              seed glb '*.glb' scenes "$shared/gltf" ;;
+        stl)  max_len=65536; seed stl '*.stl' scenes ;;
+        off)  max_len=16384; seed off '*.off' scenes ;;
+        image) max_len=16384 ;;
+        pov)  max_len=2048 ;;
+    esac
+    local dirs=("$work/corpus/$t" "$work/seeds/$t")
+    [[ -d tests/fuzz/seeds/$t ]] && dirs+=("tests/fuzz/seeds/$t")
+    [[ -d tests/fuzz/regressions/$t ]] && dirs+=("tests/fuzz/regressions/$t")
+    local rc=0
+    ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=0" \
+    UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
+        "$root/build-asan/tests/fuzz/${t}_fuzz" -max_total_time="$seconds" -timeout=10 \
+        -rss_limit_mb=2048 -max_len="$max_len" "${dict[@]}" -print_final_stats=1 \
+        -artifact_prefix="$work/artifacts/$t/" "${dirs[@]}" >"$work/logs/$t.log" 2>&1 || rc=$?
+    local execs speed cov ft
+    execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$work/logs/$t.log" | tail -1)
+    speed=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$work/logs/$t.log" | tail -1)
+    cov=$(grep -o 'cov: [0-9]*' "$work/logs/$t.log" | tail -1 | cut -d' ' -f2)
+    ft=$(grep -o 'ft: [0-9]*' "$work/logs/$t.log" | tail -1 | cut -d' ' -f2)
+    if [[ $rc -eq 0 ]]; then
+        printf 'fuzz: %-6s ok      %8s runs %6s/s  cov %-6s ft %s\n' "$t" "${execs:-?}" "${speed:-?}" "${cov:-?}" "${ft:-?}"
+    else
+        printf 'fuzz: %-6s FAILED  (exit %d) after %s runs; log %s\n' "$t" "$rc" "${execs:-?}" "$work/logs/$t.log"
+        grep -E '^(==[0-9]+==ERROR|SUMMARY|scadray fuzz:|.*runtime error:|ALARM|==[0-9]+== ERROR)' \
+            "$work/logs/$t.log" | head -5 | sed 's/^/    /'
+        ls "$work/artifacts/$t"/* 2>/dev/null | sed 's/^/    input: /'
+    fi
+    return $rc
+}
+
+failed=()
+pids=() names=()
+for t in "${targets[@]}"; do
+    run_one "$t" & pids+=($!) names+=("$t")
+    if [[ ${#pids[@]} -ge 2 ]]; then
+        wait "${pids[0]}" || failed+=("${names[0]}")
+        pids=("${pids[@]:1}") names=("${names[@]:1}")
+    fi
+done
+for i in "${!pids[@]}"; do wait "${pids[$i]}" || failed+=("${names[$i]}"); done
+if [[ ${#failed[@]} -gt 0 ]]; then
+    echo "fuzz: failed: ${failed[*]}" >&2
+    exit 1
+fi
+echo "fuzz: ${#targets[@]} targets ran ${seconds} s each without a finding"
