@@ -62,8 +62,12 @@ run_one() {  # run_one TARGET
     local dirs=("$work/corpus/$t" "$work/seeds/$t")
     [[ -d tests/fuzz/seeds/$t ]] && dirs+=("tests/fuzz/seeds/$t")
     [[ -d tests/fuzz/regressions/$t ]] && dirs+=("tests/fuzz/regressions/$t")
+    # The image reader's leak suppression (OpenImageIO) needs whole stacks through the library
+    local unwind=1
+    [[ $t == image ]] && unwind=0
     local rc=0
-    ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=0" \
+    ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=0:fast_unwind_on_malloc=$unwind" \
+    LSAN_OPTIONS="suppressions=$root/tests/fuzz/lsan.supp:print_suppressions=0" \
     UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
         "$root/build-asan/tests/fuzz/${t}_fuzz" -max_total_time="$seconds" -timeout=10 \
         -rss_limit_mb=2048 -max_len="$max_len" "${dict[@]}" -print_final_stats=1 \

@@ -33,5 +33,6 @@ suites=(core_tests scad_tests gltf_tests meshio_tests cli_tests exporter_tests)
 cmake --build build-asan -j "$(nproc)" --target scadray "${suites[@]}"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+export LSAN_OPTIONS="suppressions=$(pwd)/tests/fuzz/lsan.supp:print_suppressions=0"
 labels=$(IFS='|'; echo "${suites[*]}")
 ctest --test-dir build-asan --output-on-failure -j "$(nproc)" -L "^(${labels})\$" "$@"
