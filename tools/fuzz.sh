@@ -73,17 +73,17 @@ run_one() {  # run_one TARGET
         -rss_limit_mb=2048 -max_len="$max_len" "${dict[@]}" -print_final_stats=1 \
         -artifact_prefix="$work/artifacts/$t/" "${dirs[@]}" >"$work/logs/$t.log" 2>&1 || rc=$?
     local execs speed cov ft
-    execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$work/logs/$t.log" | tail -1)
-    speed=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$work/logs/$t.log" | tail -1)
-    cov=$(grep -o 'cov: [0-9]*' "$work/logs/$t.log" | tail -1 | cut -d' ' -f2)
-    ft=$(grep -o 'ft: [0-9]*' "$work/logs/$t.log" | tail -1 | cut -d' ' -f2)
+    execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$work/logs/$t.log" | tail -1 || true)
+    speed=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$work/logs/$t.log" | tail -1 || true)
+    cov=$(grep -o 'cov: [0-9]*' "$work/logs/$t.log" | tail -1 | cut -d' ' -f2 || true)
+    ft=$(grep -o 'ft: [0-9]*' "$work/logs/$t.log" | tail -1 | cut -d' ' -f2 || true)
     if [[ $rc -eq 0 ]]; then
         printf 'fuzz: %-6s ok      %8s runs %6s/s  cov %-6s ft %s\n' "$t" "${execs:-?}" "${speed:-?}" "${cov:-?}" "${ft:-?}"
     else
         printf 'fuzz: %-6s FAILED  (exit %d) after %s runs; log %s\n' "$t" "$rc" "${execs:-?}" "$work/logs/$t.log"
         grep -E '^(==[0-9]+==ERROR|SUMMARY|scadray fuzz:|.*runtime error:|ALARM|==[0-9]+== ERROR)' \
-            "$work/logs/$t.log" | head -5 | sed 's/^/    /'
-        ls "$work/artifacts/$t"/* 2>/dev/null | sed 's/^/    input: /'
+            "$work/logs/$t.log" | head -5 | sed 's/^/    /' || true
+        ls "$work/artifacts/$t"/* 2>/dev/null | sed 's/^/    input: /' || true
     fi
     return $rc
 }
