@@ -40,7 +40,6 @@ export LSAN_OPTIONS="suppressions=$(pwd)/tests/fuzz/lsan.supp:print_suppressions
 # unsanitized and slow, and test geometry, not memory safety: left to tools/test.sh.
 filter=${SANITIZE_GTEST_FILTER:-"-OpenScad*CrossCheck.*"}
 mkdir -p build-asan/sanitize
-failed=()
 run_suite() {
     local s=$1 start=$SECONDS rc=0
     (cd build-asan/tests && "./$s" --gtest_brief=1 --gtest_filter="$filter") \
@@ -51,19 +50,12 @@ run_suite() {
         grep -E '^\[  FAILED  \]|ERROR: (Address|Leak)Sanitizer|runtime error:' \
             "build-asan/sanitize/$s.log" | sort -u | head -10 | sed 's/^/    /'
     fi
-    return $rc
+    return $((rc == 0 ? 0 : 1))
 }
-pids=() names=()
-for s in "${suites[@]}"; do
-    run_suite "$s" & pids+=($!) names+=("$s")
-    if [[ ${#pids[@]} -ge 2 ]]; then
-        wait "${pids[0]}" || failed+=("${names[0]}")
-        pids=("${pids[@]:1}") names=("${names[@]:1}")
-    fi
-done
-for i in "${!pids[@]}"; do wait "${pids[$i]}" || failed+=("${names[$i]}"); done
-if [[ ${#failed[@]} -gt 0 ]]; then
-    echo "sanitize: failed: ${failed[*]}" >&2
+export -f run_suite
+export filter
+if ! printf '%s\n' "${suites[@]}" | xargs -P 2 -I{} bash -c 'run_suite "$1"' _ {}; then
+    echo "sanitize: a suite failed (see above)" >&2
     exit 1
 fi
 echo "sanitize: ${#suites[@]} suites passed under ASan + UBSan"
