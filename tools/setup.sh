@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Installs the Debian 12 packages scadray needs to build, test and compare renders; installs only what is missing.
+# clang and libclang-rt-14-dev (libFuzzer and the sanitizer runtimes) serve tools/sanitize.sh and tools/fuzz.sh.
 set -euo pipefail
 
 packages=(
@@ -9,6 +10,7 @@ packages=(
     libgtest-dev libgmock-dev libbenchmark-dev
     libtinygltf-dev libpolyclipping-dev
     povray openscad
+    clang libclang-rt-14-dev
 )
 
 missing=()

@@ -42,7 +42,13 @@ ImageEstimate noisyEstimate(const Image &truth, double sigma, int batches, uint6
             if (x >= x0 && x < x1 && y >= y0 && y < y1) t = t * (1 + bias);
             Rgb mean(0), m2(0);
             for (int b = 0; b < batches; ++b) {
-                Rgb v(t.r + sigma * gaussian(rng), t.g + sigma * gaussian(rng), t.b + sigma * gaussian(rng));
+                // Drawn in separate statements: the order of evaluation of constructor arguments
+                // is unspecified (GCC goes right to left, clang left to right), and with it
+                // which noise each channel got, so the images differed between compilers
+                double nr = gaussian(rng);
+                double ng = gaussian(rng);
+                double nb = gaussian(rng);
+                Rgb v(t.r + sigma * nr, t.g + sigma * ng, t.b + sigma * nb);
                 Rgb d = v - mean;
                 mean += d / double(b + 1);
                 m2 += d * (v - mean);
@@ -65,23 +71,33 @@ TEST(ImageCompare, IdenticalImagesPass) {
 }
 
 TEST(ImageCompare, TwoPercentBiasOnARegionFails) {
+    // Benjamini-Hochberg bounds the false discovery rate, the expected share of failed tiles
+    // that are not really different, by alpha; it does not promise that no unbiased tile ever
+    // fails. Measured over 400 seeds: 48 biased tile-channels fail every time, and a tile
+    // outside the region fails in about 3% of the images (0.04 tiles an image, a false
+    // discovery rate near 0.1%). So: every image is caught, every failure inside the region
+    // is a positive difference, and the false discoveries stay below alpha of all failures.
     Image truth = reference(96, 64);
     ImageEstimate ref{truth, {}, 0, {}, {}};
-    int fails = 0;
-    for (uint64_t seed = 0; seed < 20; ++seed) {
+    CompareOptions o;
+    int fails = 0, inside = 0, outside = 0;
+    const int kSeeds = 20;
+    for (uint64_t seed = 0; seed < kSeeds; ++seed) {
         ImageEstimate test = noisyEstimate(truth, 0.02, 8, seed, 0.02, 32, 16, 64, 48);
-        CompareResult r = compareImages(test, ref);
+        CompareResult r = compareImages(test, ref, o);
         fails += !r.pass;
-        // Only tiles inside the biased region fail
         for (const TileTest &t : r.failures) {
-            EXPECT_GE(t.x * 8, 32);
-            EXPECT_LT(t.x * 8, 64);
-            EXPECT_GE(t.y * 8, 16);
-            EXPECT_LT(t.y * 8, 48);
-            EXPECT_GT(t.difference, 0);
+            if (t.x * 8 >= 32 && t.x * 8 < 64 && t.y * 8 >= 16 && t.y * 8 < 48) {
+                ++inside;
+                EXPECT_GT(t.difference, 0) << "seed " << seed;
+            } else {
+                ++outside;
+            }
         }
     }
-    EXPECT_EQ(fails, 20) << "a 2% bias must be detected every time at this noise level";
+    EXPECT_EQ(fails, kSeeds) << "a 2% bias must be detected every time at this noise level";
+    EXPECT_EQ(inside, kSeeds * 4 * 4 * 3) << "every biased tile and channel fails";
+    EXPECT_LE(outside, o.alpha * (inside + outside)) << "false discoveries beyond alpha";
 }
 
 TEST(ImageCompare, BiasWithinTheMarginPasses) {

@@ -5,7 +5,6 @@
 
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cstdlib>
 
 #include "importers/mesh/mesh_test_support.h"
@@ -437,18 +436,14 @@ TEST(Echo, NamedArgumentsAndValueFormatting) {
     EXPECT_EQ(r.diag.all()[0].loc.line, 1);
 }
 
-TEST(EvaluatorPerformance, HundredThousandPrimitives) {
-    auto start = std::chrono::steady_clock::now();
+// The time it takes is a benchmark, not a test: build/tests/scad_eval_bench (issue 14)
+TEST(EvaluatorScale, HundredThousandPrimitives) {
     Imported r = importText(
         "for (i = [0:99], j = [0:99], k = [0:9]) translate([i, j, k]) color([i / 100, j / 100, "
         "0.5])"
         " cube(0.5);");
-    double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_EQ(r.scene.root->primitiveCount(), 100000u);
     EXPECT_EQ(r.scene.materials.size(), 10000u);
-    // Well under a second in RelWithDebInfo; generous here for loaded or Debug builds
-    EXPECT_LT(seconds, 5.0);
 }
 
 }  // namespace
