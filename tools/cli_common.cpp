@@ -70,12 +70,17 @@ void SceneArgs::addTo(CLI::App &cmd) {
               "Cap on .scad evaluation steps (calls, loop iterations, module instances) "
               "that stops runaway programs; 0 = no cap",
               decltype(maxSteps){0}, std::numeric_limits<decltype(maxSteps)>::max());
+    addNumber(cmd, "--max-elements", maxElements,
+              "Cap on .scad vector elements alive at once (about 24 bytes each), which also "
+              "bounds one comparison of vectors",
+              int64_t{1}, int64_t{1} << 40);
 }
 
 LoadOptions SceneArgs::loadOptions(bool quiet) const {
     LoadOptions lo;
     lo.quiet = quiet;
     lo.maxSteps = maxSteps;
+    lo.maxElements = maxElements;
     lo.libraryPaths = libraries;
     for (const auto &d : defines) lo.defines.push_back(parseDefine(d));
     auto mode = ir::parseFacetMode(facets.empty() ? "auto" : facets);
@@ -132,6 +137,7 @@ ir::Scene loadScene(const std::string &path, DiagnosticSink &diag, const LoadOpt
         io.libraryPaths = opts.libraryPaths;
         io.defines = opts.defines;
         io.maxSteps = opts.maxSteps;
+        io.maxElements = opts.maxElements;
         if (!opts.quiet && isatty(STDERR_FILENO)) io.progress = evaluationProgress();
         struct ClearAtEnd {
             ~ClearAtEnd() { clearProgressLine(); }

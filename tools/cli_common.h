@@ -33,6 +33,7 @@ struct LoadOptions {
     /// How spheres, cylinders, tori and lathes are drawn (`--facets`).
     ir::FacetMode facets = ir::FacetMode::Auto;
     int64_t maxSteps = scad::kDefaultMaxSteps;  ///< .scad evaluation step cap; 0 = none
+    int64_t maxElements = scad::kDefaultMaxElements;  ///< .scad vector elements alive at once
 };
 
 /// The scene argument and the options every scene-reading subcommand takes (-D, -L,
@@ -42,6 +43,7 @@ struct SceneArgs {
     std::vector<std::string> defines, libraries;
     std::string facets;  ///< as given; empty when not given (auto)
     int64_t maxSteps = scad::kDefaultMaxSteps;
+    int64_t maxElements = scad::kDefaultMaxElements;
 
     /// Registers the positional scene and -D/-L on a subcommand.
     void addTo(CLI::App &cmd);

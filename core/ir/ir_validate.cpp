@@ -92,23 +92,6 @@ void checkPrism(const Scene &scene, const Node &node) {
                                        " is not in the scene (internal error)");
 }
 
-/// Throws at the first node nested deeper than kMaxTreeDepth; iterative, so it runs before any
-/// recursive walk.
-void checkTreeDepth(const Node &root) {
-    std::vector<std::pair<const Node *, int>> pending{{&root, 1}};
-    while (!pending.empty()) {
-        auto [node, depth] = pending.back();
-        pending.pop_back();
-        if (depth > kMaxTreeDepth)
-            throw SceneError(node->loc, "objects are nested more than " + std::to_string(kMaxTreeDepth) +
-                                            " levels deep (each module call, transform, colour and CSG "
-                                            "operation is a level); scadray stops there");
-        // In reverse, so the first child is visited first (the error names the first node)
-        for (auto c = node->children.rbegin(); c != node->children.rend(); ++c)
-            pending.push_back({c->get(), depth + 1});
-    }
-}
-
 /// Walks the tree with composed transforms and checks every primitive's world bounds.
 void checkNode(const Scene &scene, const Node &node, const Mat4 &m, int *primitives) {
     // An importer must resolve its 2D placeholders (extrude them or draw them as plates)
@@ -148,10 +131,26 @@ void checkNode(const Scene &scene, const Node &node, const Mat4 &m, int *primiti
 
 }  // namespace
 
+const Node *firstNodeDeeperThan(const Node &root, int maxDepth) {
+    std::vector<std::pair<const Node *, int>> pending{{&root, 1}};
+    while (!pending.empty()) {
+        auto [node, depth] = pending.back();
+        pending.pop_back();
+        if (depth > maxDepth) return node;
+        // In reverse, so the first child is visited first (the error names the first node)
+        for (auto c = node->children.rbegin(); c != node->children.rend(); ++c)
+            pending.push_back({c->get(), depth + 1});
+    }
+    return nullptr;
+}
+
 void validateScene(const Scene &scene, DiagnosticSink &diag) {
     for (const MeshPtr &mesh : scene.meshes)
         if (mesh) validateMesh(*mesh);
-    checkTreeDepth(*scene.root);
+    if (const Node *deep = firstNodeDeeperThan(*scene.root, kMaxTreeDepth))
+        throw SceneError(deep->loc, "objects are nested more than " + std::to_string(kMaxTreeDepth) +
+                                        " levels deep (each module call, transform, colour and CSG "
+                                        "operation is a level); scadray stops there");
     int primitives = 0;
     checkNode(scene, *scene.root, Mat4(), &primitives);
     if (primitives == 0)

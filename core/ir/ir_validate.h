@@ -22,8 +22,13 @@ constexpr double kMaxBlurDegrees = 90;
 /// Rays a blurred surface spreads where a path first meets it.
 constexpr int kMaxBlurSamples = 4096;
 
+/// The first node (in depth-first order, root at depth 1) deeper than `maxDepth`, or null.
+/// Iterative, so it runs safely before any recursive walk over a tree of unknown depth.
+const Node *firstNodeDeeperThan(const Node &root, int maxDepth);
+
 /// Throws SceneError for non-finite or out-of-range geometry, lights, camera or settings;
-/// warns when the scene has no geometry at all.
+/// warns when the scene has no geometry at all. A tree deeper than kMaxTreeDepth is an error at
+/// its first node past the limit.
 void validateScene(const Scene &scene, DiagnosticSink &diag);
 
 }  // namespace rt::ir

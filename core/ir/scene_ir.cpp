@@ -16,6 +16,7 @@ Node::~Node() {
     while (!pending.empty()) {
         std::unique_ptr<Node> n = std::move(pending.back());
         pending.pop_back();
+        if (!n) continue;  // importers may leave null slots while they build
         for (auto &c : n->children) pending.push_back(std::move(c));
         n->children.clear();
     }  // each node is destroyed with no children left

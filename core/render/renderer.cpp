@@ -23,6 +23,10 @@ void validateRenderOptions(const RenderOptions &o) {
         throw std::invalid_argument("image size " + std::to_string(o.width) + "x" +
                                     std::to_string(o.height) + " is outside 1.." +
                                     std::to_string(kMaxImageSide));
+    if (int64_t(o.width) * o.height > kMaxImagePixels)
+        throw std::invalid_argument("image size " + std::to_string(o.width) + "x" + std::to_string(o.height) +
+                                    " has more than " + std::to_string(kMaxImagePixels) +
+                                    " pixels (16384 x 16384), the limit");
     if (o.samplesPerPixel < 1 || o.samplesPerPixel > kMaxSamplesPerPixel)
         throw std::invalid_argument("samples per pixel must be between 1 and " +
                                     std::to_string(kMaxSamplesPerPixel));

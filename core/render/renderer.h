@@ -7,6 +7,7 @@
 #include <functional>
 
 #include "core/image/image.h"
+#include "core/image/image_limits.h"
 #include "core/render/ray_stats.h"
 #include "core/render/render_scene.h"
 
@@ -51,6 +52,9 @@ struct RenderResult {
 
 /// Largest accepted image side and sample count, so absurd sizes fail fast and clearly.
 constexpr int kMaxImageSide = 32768;
+/// Most pixels a render may have (16384 x 16384, about 9 GiB for its three float images): the
+/// same limit as for images read back (compare, check), so every render can be compared.
+constexpr int64_t kMaxImagePixels = static_cast<int64_t>(kMaxReadImagePixels);
 constexpr int kMaxSamplesPerPixel = 65536;
 constexpr int kMaxBatches = 1024;
 

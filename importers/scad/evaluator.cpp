@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <limits>
 
+#include "core/ir/ir_validate.h"
 #include "importers/scad/utf8.h"
 
 namespace rt::scad {
@@ -99,7 +100,8 @@ void Evaluator::stepSlow(const SourceLoc &loc) {
 void Evaluator::checkElementBudget(size_t extra, const SourceLoc &loc) {
     if (liveVectorElements() + static_cast<int64_t>(extra) > limits_.maxLiveElements)
         throw EvalError(loc, "too many elements: vectors would hold more than " +
-                                 std::to_string(limits_.maxLiveElements) + " values");
+                                 std::to_string(limits_.maxLiveElements) +
+                                 " values; if the model needs more, raise the cap with --max-elements N");
 }
 
 Value Evaluator::makeString(std::string s, const SourceLoc &loc) {
@@ -120,17 +122,10 @@ ir::NodePtr Evaluator::newNode(ir::NodeKind kind, const SourceLoc &loc) {
 }
 
 void Evaluator::checkNodeDepth(const ir::Node &root) const {
-    // Iterative: the tree may be as deep as the evaluation recursed
-    std::vector<std::pair<const ir::Node *, int>> todo{{&root, 1}};
-    while (!todo.empty()) {
-        auto [n, depth] = todo.back();
-        todo.pop_back();
-        if (depth > limits_.maxNodeDepth)
-            throw EvalError(n->loc, "geometry nested too deep: more than " +
-                                        std::to_string(limits_.maxNodeDepth) +
-                                        " levels of module instances, transforms and operations");
-        for (const auto &c : n->children) todo.emplace_back(c.get(), depth + 1);
-    }
+    if (const ir::Node *deep = ir::firstNodeDeeperThan(root, limits_.maxNodeDepth))
+        throw EvalError(deep->loc, "geometry nested too deep: more than " +
+                                       std::to_string(limits_.maxNodeDepth) +
+                                       " levels of module instances, transforms and operations");
 }
 
 ir::NodePtr Evaluator::groupOf(ir::NodeKind kind, const SourceLoc &loc,

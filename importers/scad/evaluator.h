@@ -31,12 +31,12 @@ struct EvalLimits {
     /// Calls + loop iterations + instantiations; 0 = no cap. A legitimate model may need more
     /// (scadray --max-steps), so the error names the option.
     int64_t maxSteps = kDefaultMaxSteps;
-    int64_t maxLiveElements = 8'000'000;     ///< vector elements alive at once (~24 bytes each)
+    int64_t maxLiveElements = kDefaultMaxElements;  ///< vector elements alive at once (~24 bytes each)
     int64_t maxLiveStringBytes = 256 << 20;  ///< bytes of string values alive at once
     int64_t maxNodes = 1'500'000;            ///< IR nodes produced (~300 bytes each)
-    /// Deepest node of the scene tree: the root is at depth 1. Later stages may walk the tree
-    /// recursively on an ordinary thread stack, so a deeper tree is a located error.
-    int maxNodeDepth = 10000;
+    /// Deepest node of the scene tree: the root is at depth 1. Later stages walk the tree
+    /// recursively (on stacks sized for this depth), so a deeper tree is a located error.
+    int maxNodeDepth = ir::kMaxTreeDepth;
     /// Nesting of vector values (`[[[...]]]` built by a loop or tail recursion): freeing,
     /// printing or comparing them recurses that deep.
     int maxValueDepth = 100000;

@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: MIT
-// importScad: parse and evaluate on a thread with a large stack, so deep recursion ends in a
-// located EvalError rather than a stack overflow.
+// importScad: parse and evaluate on a thread with a large stack (kLargeStackBytes), so deep
+// recursion ends in a located EvalError rather than a stack overflow.
 #include "importers/scad/scad_importer.h"
-
-#include <pthread.h>
 
 #include <exception>
 #include <functional>
 
+#include "core/system/large_stack.h"
 #include "importers/mesh/reader_support.h"
 #include "importers/scad/evaluator.h"
 #include "importers/scad/lexer.h"
@@ -16,39 +15,6 @@
 namespace rt::scad {
 
 namespace {
-
-/// Stack of the evaluation thread. Only touched pages are committed; the evaluator stops
-/// (with an error) well before the end, and its call-depth limit normally triggers first.
-constexpr size_t kEvalStackBytes = size_t{512} << 20;
-
-/// Runs `fn` on a thread with a kEvalStackBytes stack and rethrows what it throws.
-void runWithLargeStack(const std::function<void()> &fn) {
-    struct Task {
-        const std::function<void()> *fn;
-        std::exception_ptr error;
-    } task{&fn, nullptr};
-    auto entry = [](void *p) -> void * {
-        auto *t = static_cast<Task *>(p);
-        try {
-            (*t->fn)();
-        } catch (...) {
-            t->error = std::current_exception();
-        }
-        return nullptr;
-    };
-    pthread_attr_t attr;
-    pthread_attr_init(&attr);
-    pthread_attr_setstacksize(&attr, kEvalStackBytes);
-    pthread_t thread;
-    int rc = pthread_create(&thread, &attr, entry, &task);
-    pthread_attr_destroy(&attr);
-    if (rc != 0) {
-        fn();  // no thread available: evaluate here, still bounded by the evaluator's checks
-        return;
-    }
-    pthread_join(thread, nullptr);
-    if (task.error) std::rethrow_exception(task.error);
-}
 
 bool isIdentifier(const std::string &s) {
     if (s.empty()) return false;
@@ -64,7 +30,7 @@ bool isIdentifier(const std::string &s) {
 ir::Scene importScadSource(const std::string &source, const std::string &virtualPath,
                            DiagnosticSink &diag, const ImportOptions &opts) {
     ir::Scene scene;
-    runWithLargeStack([&] {
+    runWithStack(kLargeStackBytes, [&] {
         SourceLoader loader(defaultLibraryPaths(opts.libraryPaths), diag);
         std::shared_ptr<SourceFile> file = parseSource(source, virtualPath, loader);
         // -D name=expr: appended to the main file's top-level assignments, replacing the
@@ -79,6 +45,7 @@ ir::Scene importScadSource(const std::string &source, const std::string &virtual
         }
         EvalLimits limits;
         limits.maxSteps = opts.maxSteps;
+        limits.maxLiveElements = opts.maxElements;
         Evaluator evaluator(diag, limits);
         evaluator.setProgress(opts.progress);
         scene = evaluator.evaluate(*file, loader);

@@ -15,6 +15,9 @@ namespace rt::scad {
 
 /// Default evaluation step cap: stops a runaway program within about 10 s.
 constexpr int64_t kDefaultMaxSteps = 30'000'000;
+/// Default cap on vector elements alive at once (about 24 bytes each, so ~200 MB), which also
+/// bounds one comparison's work; --max-elements raises it.
+constexpr int64_t kDefaultMaxElements = 8'000'000;
 
 struct ImportOptions {
     /// Extra folders searched by include<>/use<> after the including file's folder.
@@ -24,6 +27,8 @@ struct ImportOptions {
     std::vector<std::pair<std::string, std::string>> defines;
     /// Evaluation step cap (calls, loop iterations, module instances); 0 = no cap.
     int64_t maxSteps = kDefaultMaxSteps;
+    /// Vector elements alive at once (and elements one comparison may visit).
+    int64_t maxElements = kDefaultMaxElements;
     /// Called now and then during evaluation with the steps taken so far (on the evaluating
     /// thread); for a progress display.
     std::function<void(int64_t steps)> progress;

@@ -39,7 +39,8 @@ StringData::~StringData() { tlLiveStringBytes -= static_cast<int64_t>(text.size(
 VectorData::VectorData(std::vector<Value> v) : items(std::move(v)) {
     if (tlLiveElements + static_cast<int64_t>(items.size()) > tlLimits.maxLiveElements)
         throw ValueLimitError("too many elements: vectors would hold more than " +
-                              std::to_string(tlLimits.maxLiveElements) + " values");
+                              std::to_string(tlLimits.maxLiveElements) +
+                              " values; if the model needs more, raise the cap with --max-elements N");
     for (const auto &e : items) depth = std::max(depth, e.depth() + 1);
     if (depth > tlLimits.maxDepth)
         throw ValueLimitError("vectors nested too deep: more than " +
@@ -140,7 +141,8 @@ bool equalValues(const Value &a, const Value &b, int64_t &visits) {
     if (visits > tlLimits.maxVisits)
         throw ValueLimitError("comparison too large: more than " +
                               std::to_string(tlLimits.maxVisits) +
-                              " elements compared (vectors sharing sub-vectors?)");
+                              " elements compared (vectors sharing sub-vectors?); raise the cap with "
+                              "--max-elements N");
     for (size_t i = 0; i < x.size(); ++i)
         if (!equalValues(x[i], y[i], visits)) return false;
     return true;

@@ -254,6 +254,11 @@ TEST(Renderer, RejectsAbsurdOptions) {
     EXPECT_THROW(validateRenderOptions(o), std::invalid_argument);
     o.samplesPerPixel = 5;
     EXPECT_NO_THROW(validateRenderOptions(o));
+    // Each side allowed, the total too large (36 GB of images): refused before allocating
+    o.width = o.height = kMaxImageSide;
+    EXPECT_THROW(validateRenderOptions(o), std::invalid_argument);
+    o.width = o.height = 16384;
+    EXPECT_NO_THROW(validateRenderOptions(o));
 }
 
 TEST(Renderer, StrataAreTheSquarestGrid) {

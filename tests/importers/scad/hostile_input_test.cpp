@@ -106,7 +106,7 @@ TEST(Hostile, DeepSceneTreesAreALocatedError) {
     // which later stages would walk recursively
     EvalError e = errorOf<EvalError>(
         "module m(n) if (n > 0) translate([1, 0, 0]) m(n - 1); else cube();\nm(9000);\n",
-        "geometry nested too deep: more than 10000 levels");
+        "geometry nested too deep: more than 20000 levels");
     EXPECT_EQ(e.loc().fileName(), kFile);
     EXPECT_EQ(e.loc().line, 1);
     // A shallow recursion is fine
@@ -130,6 +130,33 @@ TEST(Hostile, DeeplyNestedVectorsAreALocatedError) {
 
 /// t(60) is 2^60 elements deep down, described by 61 vectors.
 const std::string kTower = "function t(n) = n == 0 ? [1] : let(s = t(n - 1)) [s, s];\n";
+
+TEST(Hostile, TheElementCapIsAnOption) {
+    const std::string src = "x = [for (i = [0:9999]) i];\ny = x == [for (i = [0:9999]) i];\n";
+    EXPECT_NO_THROW(importText(src, kFile));
+    ImportOptions low;
+    low.maxElements = 5000;
+    try {
+        importText(src, kFile, low);
+        ADD_FAILURE() << "expected the element cap";
+    } catch (const EvalError &e) {
+        EXPECT_NE(std::string(e.what()).find("more than 5000 values"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("--max-elements"), std::string::npos) << e.what();
+        EXPECT_EQ(e.loc().line, 1);
+    }
+    // A comparison visiting more than the cap stops, naming the option (t(20): 2^20 leaves
+    // from 21 small vectors): it passes under the default cap
+    const std::string tower = kTower + "y = t(20) == t(20);\n";
+    EXPECT_NO_THROW(importText(tower, kFile));
+    try {
+        importText(tower, kFile, low);
+        ADD_FAILURE() << "expected the comparison cap";
+    } catch (const EvalError &e) {
+        EXPECT_NE(std::string(e.what()).find("comparison too large"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("--max-elements"), std::string::npos) << e.what();
+        EXPECT_EQ(e.loc().line, 2);
+    }
+}
 
 TEST(Hostile, ComparingHugeSharedVectorsStops) {
     // Two separately built towers share nothing with each other: equality would visit 2^60
