@@ -86,13 +86,13 @@ void dumpNode(const Node &n, int indent, std::ostringstream &os) {
                     os << (i ? " " : "") << outline(l->outlines[i]);
                 os << "]";
             }
-            else if (const auto *p = std::get_if<PrismPrim>(&n.shape)) {
-                os << "prism z0 " << formatNumber(p->z0) << " z1 " << formatNumber(p->z1)
-                   << " k0 " << formatNumber(p->k0) << " k1 " << formatNumber(p->k1) << " mesh "
-                   << p->mesh << " outline [";
-                for (size_t i = 0; i < p->outline.size(); ++i)
-                    os << (i ? " [" : "[") << formatNumber(p->outline[i].x) << ", "
-                       << formatNumber(p->outline[i].y) << "]";
+            else if (const auto *pr = std::get_if<PrismPrim>(&n.shape)) {
+                os << "prism z0 " << formatNumber(pr->z0) << " z1 " << formatNumber(pr->z1)
+                   << " k0 " << formatNumber(pr->k0) << " k1 " << formatNumber(pr->k1) << " mesh "
+                   << pr->mesh << " outline [";
+                for (size_t i = 0; i < pr->outline.size(); ++i)
+                    os << (i ? " [" : "[") << formatNumber(pr->outline[i].x) << ", "
+                       << formatNumber(pr->outline[i].y) << "]";
                 os << "]";
             }
             else {

@@ -354,6 +354,27 @@ TEST_F(Hostile, FifoDeviceAndFolderScenesAreRefusedBeforeOpening) {
     EXPECT_NE(empty.err.find("empty file name"), std::string::npos) << empty.err;
 }
 
+/// In a forked child: interrupts at their default action, as on a terminal. A shell that starts
+/// the tests in the background (`cmd &` in a script) ignores SIGINT, and a child would inherit
+/// that, so neither it nor scadray (which leaves ignored signals ignored) would react.
+void defaultInterruptSignals() {
+    for (int sig : {SIGINT, SIGTERM, SIGHUP}) ::signal(sig, SIG_DFL);
+}
+
+/// waitpid, but a child still running after two minutes is killed and reported: a test must
+/// fail, never hang the suite.
+int waitOrKill(pid_t pid) {
+    int status = 0;
+    for (int i = 0; i < 24000; ++i) {
+        if (::waitpid(pid, &status, WNOHANG) == pid) return status;
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    ::kill(pid, SIGKILL);
+    ::waitpid(pid, &status, 0);
+    ADD_FAILURE() << "child " << pid << " did not end within two minutes of the interrupt";
+    return status;
+}
+
 // ---- 4. Temporaries: interrupts and long names ----------------------------------------------
 
 TEST_F(Hostile, InterruptRemovesTheTemporaryOfAWrite) {
@@ -365,6 +386,7 @@ TEST_F(Hostile, InterruptRemovesTheTemporaryOfAWrite) {
     pid_t pid = ::fork();
     ASSERT_GE(pid, 0);
     if (pid == 0) {
+        defaultInterruptSignals();
         installInterruptCleanup();
         TempFile tmp(target, ".png");
         std::ofstream(tmp.path()) << "half";
@@ -377,8 +399,7 @@ TEST_F(Hostile, InterruptRemovesTheTemporaryOfAWrite) {
     ::close(ready[0]);
     EXPECT_EQ(strayFiles({}).size(), 1u);  // the temporary, while the write goes on
     ::kill(pid, SIGINT);
-    int status = 0;
-    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    int status = waitOrKill(pid);
     EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT) << status;
     EXPECT_TRUE(strayFiles({}).empty());
 }
@@ -391,6 +412,7 @@ TEST_F(Hostile, InterruptedRenderLeavesNothing) {
     pid_t pid = ::fork();
     ASSERT_GE(pid, 0);
     if (pid == 0) {
+        defaultInterruptSignals();
         int null = ::open("/dev/null", O_WRONLY);
         ::dup2(null, 1);
         ::dup2(null, 2);
@@ -411,8 +433,7 @@ TEST_F(Hostile, InterruptedRenderLeavesNothing) {
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
     EXPECT_TRUE(catchesSigint());
     ::kill(pid, SIGINT);
-    int status = 0;
-    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    int status = waitOrKill(pid);
     EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT) << status;
     EXPECT_EQ(strayFiles({"slow.scad"}), std::vector<std::string>{});
 }
@@ -424,6 +445,7 @@ TEST_F(Hostile, InterruptStopsAnExternalRenderer) {
     pid_t pid = ::fork();
     ASSERT_GE(pid, 0);
     if (pid == 0) {
+        defaultInterruptSignals();
         installInterruptCleanup();
         ProcessOptions po;
         po.timeoutSeconds = 60;
@@ -437,8 +459,7 @@ TEST_F(Hostile, InterruptStopsAnExternalRenderer) {
     ASSERT_TRUE(fs::exists(pidFile));
     pid_t child = std::stoi(slurp(pidFile));
     ::kill(pid, SIGINT);
-    int status = 0;
-    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    int status = waitOrKill(pid);
     EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT) << status;
     // The renderer is gone (or a zombie its new parent has yet to reap)
     auto running = [child] {

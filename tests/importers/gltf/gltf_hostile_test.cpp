@@ -66,7 +66,7 @@ TEST(GltfHostile, UrisOutsideTheModelFolderAreRefusedAtTheirPosition) {
     fs::create_directories(tmp.file("model/sub"));
     fs::create_symlink(tmp.file("secret.bin"), tmp.file("model/link.bin"));
     std::string model = tmp.file("model/box.gltf");
-    for (const std::string uri :
+    for (const std::string &uri :
          {std::string("../secret.bin"), std::string("%2e%2e/secret.bin"),
           std::string("%2E%2E%2Fsecret.bin"), std::string("sub/../../secret.bin"),
           std::string("..\\\\secret.bin"), std::string("link.bin"), tmp.file("secret.bin"),
@@ -93,7 +93,7 @@ TEST(GltfHostile, FilesInsideTheFolderAreRead) {
     writeBytes(tmp.file("model/sub/box data.bin"), bin.data(), bin.size());
     fs::create_symlink("sub/box data.bin", tmp.file("model/inside.bin"));
     std::string model = tmp.file("model/box.gltf");
-    for (const std::string uri :
+    for (const char *uri :
          {"sub/box%20data.bin", "./sub/../sub/box data.bin", "inside.bin"}) {
         SCOPED_TRACE(uri);
         boxWithUri(model, uri);
@@ -122,17 +122,19 @@ TEST(GltfHostile, NonRegularFilesAreRefused) {
     TempDir tmp;
     ASSERT_EQ(::mkfifo(tmp.file("fifo.bin").c_str(), 0600), 0);
     fs::create_directories(tmp.file("folder.bin"));
-    for (const std::string uri : {"fifo.bin", "folder.bin"}) {
+    for (const char *uri : {"fifo.bin", "folder.bin"}) {
         SCOPED_TRACE(uri);
         boxWithUri(tmp.file("box.gltf"), uri);
-        if (auto e = parseError(tmp.file("box.gltf")))
+        if (auto e = parseError(tmp.file("box.gltf"))) {
             EXPECT_NE(std::string(e->what()).find("is not a regular file"), std::string::npos)
                 << e->what();
+        }
     }
     // The model itself
-    if (auto e = parseError(tmp.file("fifo.bin")))
+    if (auto e = parseError(tmp.file("fifo.bin"))) {
         EXPECT_NE(std::string(e->what()).find("not a regular file"), std::string::npos)
             << e->what();
+    }
 }
 
 TEST(GltfHostile, GlbBuffersWithoutUriCannotMultiplyTheBinChunk) {
@@ -155,9 +157,10 @@ TEST(GltfHostile, GlbBuffersWithoutUriCannotMultiplyTheBinChunk) {
     glb += std::string(65536, '\0');
     TempDir tmp;
     writeText(tmp.file("many.glb"), glb);
-    if (auto e = parseError(tmp.file("many.glb")))
+    if (auto e = parseError(tmp.file("many.glb"))) {
         EXPECT_NE(std::string(e->what()).find("2000 buffers have no uri"), std::string::npos)
             << e->what();
+    }
 }
 
 TEST(GltfHostile, OneFileNamedByManyBuffersIsNotReadAgainAndAgain) {
@@ -169,10 +172,11 @@ TEST(GltfHostile, OneFileNamedByManyBuffersIsNotReadAgainAndAgain) {
     for (int i = 0; i < 200; ++i)
         json += std::string(i ? "," : "") + R"({"byteLength":262144,"uri":"one.bin"})";
     writeText(tmp.file("many.gltf"), json + "]}");
-    if (auto e = parseError(tmp.file("many.gltf")))
+    if (auto e = parseError(tmp.file("many.gltf"))) {
         EXPECT_NE(std::string(e->what()).find("more than twice the size of the files it names"),
                   std::string::npos)
             << e->what();
+    }
     // Named twice is fine
     json = R"({"asset":{"version":"2.0"},"scenes":[{"nodes":[]}],"buffers":[)"
            R"({"byteLength":262144,"uri":"one.bin"},{"byteLength":262144,"uri":"one.bin"}]})";
@@ -188,11 +192,12 @@ TEST(GltfHostile, AccessorOfZerosIsBoundedByTheBuffers) {
         replaceOnce(triangleGltf(""), R"({"bufferView":0,"componentType":5126,"count":3,)",
                     R"({"componentType":5126,"count":60000000,)");
     writeText(tmp.file("zeros.gltf"), text);
-    if (auto e = parseError(tmp.file("zeros.gltf")))
+    if (auto e = parseError(tmp.file("zeros.gltf"))) {
         EXPECT_NE(
             std::string(e->what()).find("count 60000000 without a bufferView is more than 65536"),
             std::string::npos)
             << e->what();
+    }
 }
 
 TEST(GltfHostile, LongStringInInvalidJsonIsLocated) {
