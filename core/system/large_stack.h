@@ -18,8 +18,9 @@ constexpr size_t kLargeStackBytes = size_t{512} << 20;
 /// Stack of each render worker: per-ray CSG evaluation recurses once per CSG level.
 constexpr size_t kWorkerStackBytes = size_t{64} << 20;
 
-/// A thread with a chosen stack size, running `fn` once. join() waits and rethrows what `fn`
-/// threw. Where no such thread can be made, `fn` runs in join() on the calling thread.
+/// A thread with a chosen stack size (the default size where that cannot be had), running `fn`
+/// once; std::system_error when no thread can be started, as std::thread. join() waits and
+/// rethrows what `fn` threw.
 class StackThread {
   public:
     StackThread(size_t stackBytes, std::function<void()> fn);
@@ -36,7 +37,7 @@ class StackThread {
     static void *run(void *task);
     std::unique_ptr<Task> task_;
     pthread_t thread_{};
-    bool started_ = false, joined_ = false;
+    bool joined_ = false;
 };
 
 /// Runs `fn` on a new thread with a `stackBytes` stack, waits, and rethrows what it threw.
