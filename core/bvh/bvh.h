@@ -45,50 +45,63 @@ class Bvh {
         uint32_t index;
     };
     int build(std::vector<BuildItem> &items, size_t begin, size_t end, int depth);
-    static bool hitNode(const Bounds3 &b, const Ray &ray, const Vec3 &invDir, const int dirIsNeg[3],
-                        double tMin, double tMax);
+    /// What the slab test needs of a ray, computed once per traversal.
+    struct RaySlabs {
+        Vec3 o, invDir;
+        bool neg[3];
+        explicit RaySlabs(const Ray &ray)
+            : o(ray.o), invDir(1 / ray.d.x, 1 / ray.d.y, 1 / ray.d.z),
+              neg{invDir.x < 0, invDir.y < 0, invDir.z < 0} {}
+    };
+    static bool hitNode(const Bounds3 &b, const RaySlabs &r, double tMin, double tMax);
 
     std::vector<Node> nodes_;
     std::vector<uint32_t> order_;
     int depth_ = 0;
 };
 
-inline bool Bvh::hitNode(const Bounds3 &b, const Ray &ray, const Vec3 &invDir,
-                         const int dirIsNeg[3], double tMin, double tMax) {
-    // pbrt-v3 Bounds3::IntersectP with precomputed reciprocal; NaN-safe comparisons
-    const Vec3 *corners[2] = {&b.min, &b.max};
+inline bool Bvh::hitNode(const Bounds3 &b, const RaySlabs &r, double tMin, double tMax) {
+    // pbrt-v3 Bounds3::IntersectP with precomputed reciprocal, written without a loop or an early
+    // exit so the three slabs are computed side by side (the result is the same: t0 only grows
+    // and t1 only shrinks). The comparisons are NaN-safe: a NaN slab leaves t0/t1 unchanged.
+    double nearX = ((r.neg[0] ? b.max.x : b.min.x) - r.o.x) * r.invDir.x;
+    double nearY = ((r.neg[1] ? b.max.y : b.min.y) - r.o.y) * r.invDir.y;
+    double nearZ = ((r.neg[2] ? b.max.z : b.min.z) - r.o.z) * r.invDir.z;
+    double farX = ((r.neg[0] ? b.min.x : b.max.x) - r.o.x) * r.invDir.x;
+    double farY = ((r.neg[1] ? b.min.y : b.max.y) - r.o.y) * r.invDir.y;
+    double farZ = ((r.neg[2] ? b.min.z : b.max.z) - r.o.z) * r.invDir.z;
+    // Grow the far distance by its rounding error (pbrt's 1 + 2 gamma(3)) away from zero:
+    // span queries look behind the origin too (tMin = -inf), and scaling a negative tFar
+    // would shrink it, so a flat node (one face of a mesh) behind the origin was missed
+    farX += 2 * gamma(3) * std::abs(farX);
+    farY += 2 * gamma(3) * std::abs(farY);
+    farZ += 2 * gamma(3) * std::abs(farZ);
     double t0 = tMin, t1 = tMax;
-    for (int i = 0; i < 3; ++i) {
-        double tNear = ((*corners[dirIsNeg[i]])[i] - ray.o[i]) * invDir[i];
-        double tFar = ((*corners[1 - dirIsNeg[i]])[i] - ray.o[i]) * invDir[i];
-        // Grow the far distance by its rounding error (pbrt's 1 + 2 gamma(3)) away from zero:
-        // span queries look behind the origin too (tMin = -inf), and scaling a negative tFar
-        // would shrink it, so a flat node (one face of a mesh) behind the origin was missed
-        tFar += 2 * gamma(3) * std::abs(tFar);
-        t0 = tNear > t0 ? tNear : t0;
-        t1 = tFar < t1 ? tFar : t1;
-        if (t0 > t1) return false;
-    }
-    return true;
+    t0 = nearX > t0 ? nearX : t0;
+    t1 = farX < t1 ? farX : t1;
+    t0 = nearY > t0 ? nearY : t0;
+    t1 = farY < t1 ? farY : t1;
+    t0 = nearZ > t0 ? nearZ : t0;
+    t1 = farZ < t1 ? farZ : t1;
+    return t0 <= t1;
 }
 
 template <typename Visit>
 void Bvh::traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit) const {
     if (nodes_.empty()) return;
-    Vec3 invDir(1 / ray.d.x, 1 / ray.d.y, 1 / ray.d.z);
-    int dirIsNeg[3] = {invDir.x < 0, invDir.y < 0, invDir.z < 0};
+    const RaySlabs slabs(ray);
     uint32_t stack[128];
     int top = 0;
     uint32_t current = 0;
     while (true) {
         const Node &node = nodes_[current];
-        if (hitNode(node.bounds, ray, invDir, dirIsNeg, tMin, *tMax)) {
+        if (hitNode(node.bounds, slabs, tMin, *tMax)) {
             if (node.count > 0) {
                 for (uint32_t i = 0; i < node.count; ++i)
                     if (visit(order_[node.offset + i], tMax)) return;
                 if (top == 0) return;
                 current = stack[--top];
-            } else if (dirIsNeg[node.axis]) {
+            } else if (slabs.neg[node.axis]) {
                 stack[top++] = current + 1;
                 current = node.offset;
             } else {
