@@ -377,6 +377,25 @@ std::unique_ptr<RenderScene> RenderScene::compile(const ir::Scene &scene, Diagno
 
 bool RenderScene::intersect(const Ray &ray, double tMin, double tMax, SurfaceInteraction *si,
                             SpanScratch &scratch) const {
+    Hit hit;
+    bool found = closestHit(ray, tMin, tMax, &hit, scratch);
+    if (!found) {
+        si->tie = hit.tie;
+        return false;
+    }
+    *si = surfaceAt(ray, hit);
+    return true;
+}
+
+SurfaceInteraction RenderScene::surfaceAt(const Ray &ray, const Hit &hit) const {
+    SurfaceInteraction si = hit.crossing.leaf->surfaceAt(ray, hit.crossing);
+    si.object = hit.object;
+    si.tie = hit.tie;
+    return si;
+}
+
+bool RenderScene::closestHit(const Ray &ray, double tMin, double tMax, Hit *hit,
+                             SpanScratch &scratch) const {
     Crossing best;
     const Shape *bestObject = nullptr;
     bool tie = false;
@@ -403,17 +422,17 @@ bool RenderScene::intersect(const Ray &ray, double tMin, double tMax, SurfaceInt
         return false;
     });
     if (!bestObject || best.t >= tMax) {
-        si->tie = cancelled < tMax;  // a miss can still pass coincident faces
+        hit->tie = cancelled < tMax;  // a miss can still pass coincident faces
         return false;
     }
-    *si = best.leaf->surfaceAt(ray, best);
-    si->object = bestObject;
+    hit->crossing = best;
+    hit->object = bestObject;
     // Coincident faces that cancelled in front of the hit (a face of zero thickness that another
     // renderer may show) make it a tie as well
     tie = tie || cancelled <= best.t + tieEpsilon(ray.o, best.t);
     // A surface right at the origin of a secondary ray is a tie too (POV-Ray skips hits
     // closer than its MIN_ISECT_DEPTH)
-    si->tie = tie || best.tie || best.t <= tieEpsilon(ray.o, 0);
+    hit->tie = tie || best.tie || best.t <= tieEpsilon(ray.o, 0);
     return true;
 }
 

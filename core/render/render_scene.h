@@ -48,6 +48,18 @@ class RenderScene {
     bool intersect(const Ray &ray, double tMin, double tMax, SurfaceInteraction *si,
                    SpanScratch &scratch) const;
 
+    /// The closest crossing of intersect() without its surface (point, normals, texture
+    /// coordinates): all a shadow ray needs when the blocker is opaque. `tie` is set as
+    /// intersect() sets si->tie, on a hit and on a miss.
+    struct Hit {
+        Crossing crossing;
+        const Shape *object = nullptr;
+        bool tie = false;
+    };
+    bool closestHit(const Ray &ray, double tMin, double tMax, Hit *hit, SpanScratch &scratch) const;
+    /// The surface at a hit closestHit() found along the same ray.
+    SurfaceInteraction surfaceAt(const Ray &ray, const Hit &hit) const;
+
     const ir::Material &material(int index) const { return materials_[index]; }
     const std::vector<ir::Material> &materials() const { return materials_; }
     const ir::Texture *texture(int index) const {

@@ -36,7 +36,14 @@ WhittedIntegrator::WhittedIntegrator(const RenderScene &scene, const Vec3 &camer
     // POV-Ray's InitRayContainerState: camera rays start inside every solid holding the camera
     for (const auto &o : scene.objects())
         if (o->inside(cameraPosition)) cameraStack_.push(o.get());
-    for (const ir::Light &l : scene.lights()) areaWeights_.emplace_back(l.areaLight);
+    for (const ir::Light &l : scene.lights()) {
+        areaWeights_.emplace_back(l.areaLight);
+        LightConstants k;
+        k.axis = normalize(l.direction);
+        k.cosRadius = std::cos(radians(l.spotRadius));
+        k.cosFalloff = std::cos(radians(l.spotFalloff));
+        lightConstants_.push_back(k);
+    }
 }
 
 Rgb WhittedIntegrator::li(const Ray &cameraRay, TraceContext &ctx) const {
@@ -202,7 +209,7 @@ Rgb WhittedIntegrator::localColour(const Ray &ray, const SurfaceInteraction &si,
         Vec3 L;
         double dist;
         if (light.kind == ir::Light::Kind::Directional) {
-            L = -normalize(light.direction);
+            L = -lightConstants_[li].axis;
             dist = dot(light.position - si.p, L);
         } else {
             Vec3 toLight = light.position - si.p;
@@ -221,7 +228,7 @@ Rgb WhittedIntegrator::localColour(const Ray &ray, const SurfaceInteraction &si,
             ctx.tie = tie;
         }
         if (cosNL < kPovEpsilon) continue;
-        Rgb lc = light.color * lightAttenuation(light, L, dist);
+        Rgb lc = light.color * lightAttenuation(li, L, dist);
         if (!light.shadowless && dist > 0)
             lc = light.area ? areaShadow(si, li, lc, stack, blurred, ctx)
                             : lc * shadowFilter(si, L, dist, stack, ctx);
@@ -251,17 +258,17 @@ Rgb WhittedIntegrator::localColour(const Ray &ray, const SurfaceInteraction &si,
     return colour;
 }
 
-double WhittedIntegrator::lightAttenuation(const ir::Light &light, const Vec3 &L, double dist) const {
+double WhittedIntegrator::lightAttenuation(size_t index, const Vec3 &L, double dist) const {
+    const ir::Light &light = scene_.lights()[index];
+    const LightConstants &k = lightConstants_[index];
     double att = 1;
     if (light.kind == ir::Light::Kind::Spot) {
         // POV-Ray Attenuate_Light: cos^tightness, then a cubic spline from the falloff cone
         // (0) to the radius cone (1)
-        double cosTheta = dot(-L, normalize(light.direction));
+        double cosTheta = dot(-L, k.axis);
         if (!(cosTheta > 0)) return 0;
         att = std::pow(cosTheta, light.spotTightness);
-        double cosRadius = std::cos(radians(light.spotRadius));
-        double cosFalloff = std::cos(radians(light.spotFalloff));
-        if (cosRadius > 0 && cosTheta < cosRadius) att *= cubicSpline(cosFalloff, cosRadius, cosTheta);
+        if (k.cosRadius > 0 && cosTheta < k.cosRadius) att *= cubicSpline(k.cosFalloff, k.cosRadius, cosTheta);
     }
     return att * lightFade(light, dist);
 }
@@ -295,12 +302,14 @@ Rgb WhittedIntegrator::shadowFilter(const SurfaceInteraction &si, const Vec3 &L,
     // March from surface to surface towards the light, filtering at each crossing
     while (true) {
         ++ctx.stats.shadow;
-        SurfaceInteraction hit;
-        bool blocked = scene_.intersect(ray, 0, remaining, &hit, ctx.scratch);
-        ctx.tie = ctx.tie || hit.tie;
+        RenderScene::Hit blocker;
+        bool blocked = scene_.closestHit(ray, 0, remaining, &blocker, ctx.scratch);
+        ctx.tie = ctx.tie || blocker.tie;
         if (!blocked) return filter;
-        const ir::Material &m = scene_.material(hit.leaf->material());
-        if (hit.object->opaque || !m.isTransparent()) return Rgb(0);
+        // An opaque blocker settles it; only a transparent one needs its surface
+        const ir::Material &m = scene_.material(blocker.crossing.leaf->material());
+        if (blocker.object->opaque || !m.isTransparent()) return Rgb(0);
+        SurfaceInteraction hit = scene_.surfaceAt(ray, blocker);
         filter *= surfaceColour(m, hit) * m.filter + Rgb(m.transmit);
         // The shadow ray starts with the interior list of the ray that hit the shaded point; at
         // each crossing light fades over the segment inside that solid, then the crossing

@@ -58,8 +58,8 @@ class WhittedIntegrator {
                     bool blurred, TraceContext &ctx) const;
     /// Pigment colour at a hit: the material's colour times its texture, if any.
     Rgb surfaceColour(const ir::Material &m, const SurfaceInteraction &si) const;
-    /// Spotlight cone and fade of a light seen in direction L at shadow distance dist.
-    double lightAttenuation(const ir::Light &light, const Vec3 &L, double dist) const;
+    /// Spotlight cone and fade of light `index` seen in direction L at shadow distance dist.
+    double lightAttenuation(size_t index, const Vec3 &L, double dist) const;
     /// Filtered light reaching si from the direction L over distance dist (1 = unoccluded),
     /// POV-Ray section 1.4. `stack` is the interior list of the ray that hit si.
     Rgb shadowFilter(const SurfaceInteraction &si, const Vec3 &L, double dist,
@@ -80,6 +80,12 @@ class WhittedIntegrator {
     InteriorStack cameraStack_;
     /// POV-Ray's grid weights of each light (trivial for point lights), for one-ray shadows
     std::vector<AreaLightWeights> areaWeights_;
+    /// What every hit would otherwise recompute per light
+    struct LightConstants {
+        Vec3 axis;  ///< unit direction the light shines in (parallel and spot lights)
+        double cosRadius = 1, cosFalloff = 1;  ///< spot cones
+    };
+    std::vector<LightConstants> lightConstants_;
 };
 
 }  // namespace rt
