@@ -3,6 +3,7 @@
 #include "core/render/whitted.h"
 
 #include <cmath>
+#include <optional>
 
 #include "core/lights/area_light.h"
 #include "core/materials/classic_shading.h"
@@ -296,7 +297,9 @@ Rgb WhittedIntegrator::areaShadow(const SurfaceInteraction &si, size_t index, co
 Rgb WhittedIntegrator::shadowFilter(const SurfaceInteraction &si, const Vec3 &L, double dist,
                                     const InteriorStack &stack, TraceContext &ctx) const {
     Rgb filter(1);
-    InteriorStack inside = stack;
+    // The interior list is copied only at the first transparent crossing: most shadow rays
+    // end at an opaque blocker or reach the light
+    std::optional<InteriorStack> inside;
     Ray ray = spawnRay(si, L);
     double remaining = (dist - dot(ray.o - si.p, L)) * (1 - kShadowEpsilon);
     // March from surface to surface towards the light, filtering at each crossing
@@ -314,10 +317,11 @@ Rgb WhittedIntegrator::shadowFilter(const SurfaceInteraction &si, const Vec3 &L,
         // The shadow ray starts with the interior list of the ray that hit the shaded point; at
         // each crossing light fades over the segment inside that solid, then the crossing
         // enters or leaves it (POV-Ray ComputeShadowTexture, ComputeShadowMedia)
-        if (inside.contains(hit.object)) {
+        if (!inside) inside = stack;
+        if (inside->contains(hit.object)) {
             filter *= interiorFade(interiorOf(hit.object), hit.t, true);
-            inside.remove(hit.object);
-        } else if (!inside.push(hit.object)) {
+            inside->remove(hit.object);
+        } else if (!inside->push(hit.object)) {
             ++ctx.stats.interiorOverflow;
         }
         if (filter.isBlack()) return filter;
