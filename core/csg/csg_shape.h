@@ -57,6 +57,9 @@ class CsgShape final : public Shape {
     void evaluate(int node, const Ray &ray, double w0, double w1, SpanList &out,
                   SpanScratch &scratch) const;
     bool insideNode(int node, const Vec3 &p) const;
+    /// Whether p is inside any operand in the BVH of `node` (only those whose bounds hold p
+    /// are tested).
+    bool anyOperandInside(const Node &node, const Vec3 &p) const;
     /// The operands (node indices) of a node with a BVH that the ray may reach within
     /// [w0, w1], in the node's order.
     void reachedOperands(const Node &node, const Ray &ray, double w0, double w1,
