@@ -14,6 +14,10 @@ namespace rt {
 
 /// A union or difference with at least this many operands finds the ones a ray reaches
 /// through a BVH over their bounds; below it, testing each operand's bounds is as fast.
+/// Intersections have none: a ray that hits needs every operand's spans, and one that misses
+/// inside the common part of the operands' bounds (the node's bounds, tested first) is inside
+/// every operand's bounds too, so bounds cannot find the operand that empties the result;
+/// taking operands out of order would change which coincident face wins a tie.
 constexpr size_t kCsgBvhMinOperands = 16;
 
 class CsgShape final : public Shape {
