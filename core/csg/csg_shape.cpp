@@ -177,6 +177,7 @@ bool CsgShape::insideNode(int index, const Vec3 &p) const {
     switch (node.op) {
         case Op::Leaf: return node.leaf->inside(p);
         case Op::Union:
+            if (node.bvh && prune_) return anyOperandInside(node, p);
             return std::any_of(node.children.begin(), node.children.end(),
                                [&](int c) { return insideNode(c, p); });
         case Op::Intersection:
@@ -185,12 +186,25 @@ bool CsgShape::insideNode(int index, const Vec3 &p) const {
                                [&](int c) { return insideNode(c, p); });
         case Op::Difference: {
             if (node.children.empty() || !insideNode(node.children.front(), p)) return false;
+            if (node.bvh && prune_) return !anyOperandInside(node, p);
             for (size_t i = 1; i < node.children.size(); ++i)
                 if (insideNode(node.children[i], p)) return false;
             return true;
         }
     }
     return false;
+}
+
+bool CsgShape::anyOperandInside(const Node &node, const Vec3 &p) const {
+    // The operands whose bounds contain p are among those a ray from p reaches at t = 0 (a zero
+    // direction component gives an infinite or NaN slab distance, which the node test passes)
+    bool found = false;
+    double tMax = 0;
+    node.bvh->traverse(Ray(p, Vec3(1, 0, 0)), 0, &tMax, [&](uint32_t item, double *) {
+        found = insideNode(node.children[item + node.bvhFirst], p);
+        return found;
+    });
+    return found;
 }
 
 }  // namespace rt

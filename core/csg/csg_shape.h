@@ -14,6 +14,10 @@ namespace rt {
 
 /// A union or difference with at least this many operands finds the ones a ray reaches
 /// through a BVH over their bounds; below it, testing each operand's bounds is as fast.
+/// Intersections have none: a ray that hits needs every operand's spans, and one that misses
+/// inside the common part of the operands' bounds (the node's bounds, tested first) is inside
+/// every operand's bounds too, so bounds cannot find the operand that empties the result;
+/// taking operands out of order would change which coincident face wins a tie.
 constexpr size_t kCsgBvhMinOperands = 16;
 
 class CsgShape final : public Shape {
@@ -57,6 +61,9 @@ class CsgShape final : public Shape {
     void evaluate(int node, const Ray &ray, double w0, double w1, SpanList &out,
                   SpanScratch &scratch) const;
     bool insideNode(int node, const Vec3 &p) const;
+    /// Whether p is inside any operand in the BVH of `node` (only those whose bounds hold p
+    /// are tested).
+    bool anyOperandInside(const Node &node, const Vec3 &p) const;
     /// The operands (node indices) of a node with a BVH that the ray may reach within
     /// [w0, w1], in the node's order.
     void reachedOperands(const Node &node, const Ray &ray, double w0, double w1,

@@ -343,5 +343,40 @@ TEST(CsgShape, ManyOperandsThroughABvhGiveThePlainLoopsSpans) {
     EXPECT_GT(hits, 1000);
 }
 
+/// Points on the faces, edges and corners of the operands' bounds: the BVH's point query must
+/// still find every operand whose bounds hold the point, as the plain loop does.
+TEST(CsgShape, ManyOperandsInsideTestsOnTheirBoundsFaces) {
+    auto cube = [](const Vec3 &lo, const Vec3 &hi, int material) {
+        return std::make_unique<PrimitiveInstance>(std::make_unique<Box>(lo, hi), Transform(),
+                                                   material);
+    };
+    auto build = [&](CsgShape &s) {
+        // A 4 x 4 x 1 slab minus 16 unit cubes' halves on a grid, united with 20 cubes above
+        std::vector<int> diff{s.addLeaf(cube({0, 0, 0}, {4, 4, 1}, 0))};
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j)
+                diff.push_back(s.addLeaf(cube({i + 0.25, j + 0.25, 0.5}, {i + 0.75, j + 0.75, 2}, 1)));
+        std::vector<int> parts{s.addOp(CsgShape::Op::Difference, diff)};
+        for (int k = 0; k < 20; ++k)
+            parts.push_back(s.addLeaf(cube({k % 5 * 0.75, k / 5 * 1.0, 1}, {k % 5 * 0.75 + 0.5, k / 5 + 0.5, 1.5}, 2)));
+        s.addOp(CsgShape::Op::Union, parts);
+    };
+    CsgShape pruned, plain;
+    build(pruned);
+    build(plain);
+    plain.setPruning(false);
+    int inside = 0, points = 0;
+    for (double x = -0.25; x <= 4.25; x += 0.125)
+        for (double y = -0.25; y <= 4.25; y += 0.125)
+            for (double z = -0.25; z <= 2.25; z += 0.25) {
+                Vec3 p(x, y, z);
+                ASSERT_EQ(pruned.inside(p), plain.inside(p)) << x << " " << y << " " << z;
+                inside += plain.inside(p);
+                ++points;
+            }
+    EXPECT_GT(inside, points / 10);
+    EXPECT_LT(inside, points / 2);
+}
+
 }  // namespace
 }  // namespace rt
