@@ -83,18 +83,19 @@ void CsgShape::spans(const Ray &ray, double tMin, double tMax, SpanList &out,
                      SpanScratch &scratch) const {
     out.clear();
     if (!nodes_.empty())
-        evaluate(static_cast<int>(nodes_.size()) - 1, ray, tMin, tMax, out, scratch);
+        evaluate(static_cast<int>(nodes_.size()) - 1, ray,
+                 Vec3(1 / ray.d.x, 1 / ray.d.y, 1 / ray.d.z), tMin, tMax, out, scratch);
 }
 
 // Only the state of the ray inside [w0, w1] decides the crossings there, and a boolean result's
 // state at t depends only on its operands' states at t. So a subtree whose bounds the ray misses
 // within the window contributes nothing, and an intersection or difference can narrow the window
 // of later operands to the extent of its result so far.
-void CsgShape::evaluate(int index, const Ray &ray, double w0, double w1, SpanList &out,
-                        SpanScratch &scratch) const {
+void CsgShape::evaluate(int index, const Ray &ray, const Vec3 &invDir, double w0, double w1,
+                        SpanList &out, SpanScratch &scratch) const {
     const Node &node = nodes_[index];
     out.clear();
-    if (prune_ && !node.bounds.intersectP(ray, w0, w1)) {
+    if (prune_ && !node.bounds.intersectP(ray, invDir, w0, w1)) {
         ++scratch.prunedSubtrees;
         return;
     }
@@ -118,11 +119,11 @@ void CsgShape::evaluate(int index, const Ray &ray, double w0, double w1, SpanLis
             w1 = std::min(w1, out.back().out.t + tieEpsilon(ray.o, out.back().out.t));
         }
         if (first) {
-            evaluate(child, ray, w0, w1, out, scratch);
+            evaluate(child, ray, invDir, w0, w1, out, scratch);
             first = false;
             return true;
         }
-        evaluate(child, ray, w0, w1, *operand, scratch);
+        evaluate(child, ray, invDir, w0, w1, *operand, scratch);
         if (operand->empty()) {
             if (node.op == Op::Intersection) {
                 out.clear();

@@ -58,8 +58,9 @@ class CsgShape final : public Shape {
         size_t bvhFirst = 0;
     };
 
-    void evaluate(int node, const Ray &ray, double w0, double w1, SpanList &out,
-                  SpanScratch &scratch) const;
+    /// `invDir`: the reciprocal of ray.d, computed once per ray for every bounds test.
+    void evaluate(int node, const Ray &ray, const Vec3 &invDir, double w0, double w1,
+                  SpanList &out, SpanScratch &scratch) const;
     bool insideNode(int node, const Vec3 &p) const;
     /// Whether p is inside any operand in the BVH of `node` (only those whose bounds hold p
     /// are tested).

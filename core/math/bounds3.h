@@ -50,9 +50,14 @@ struct Bounds3 {
     /// rounding of the slab distances cannot cull a real hit.
     bool intersectP(const Ray &ray, double tMin, double tMax, double *hit0 = nullptr,
                     double *hit1 = nullptr) const {
+        return intersectP(ray, Vec3(1 / ray.d.x, 1 / ray.d.y, 1 / ray.d.z), tMin, tMax, hit0, hit1);
+    }
+    /// The same with the reciprocal of the ray's direction computed once by the caller.
+    bool intersectP(const Ray &ray, const Vec3 &invDir, double tMin, double tMax,
+                    double *hit0 = nullptr, double *hit1 = nullptr) const {
         double t0 = tMin, t1 = tMax;
         for (int i = 0; i < 3; ++i) {
-            double invD = 1 / ray.d[i];
+            double invD = invDir[i];
             double tNear = (min[i] - ray.o[i]) * invD;
             double tFar = (max[i] - ray.o[i]) * invD;
             if (tNear > tFar) std::swap(tNear, tFar);
