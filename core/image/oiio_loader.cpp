@@ -43,6 +43,7 @@ LoadResult load() {
         } else {
             const char *err = ::dlerror();
             reason = err ? err : "cannot be loaded";
+            if (reason.rfind(path + ": ", 0) == 0) reason.erase(0, path.size() + 2);
         }
         tried += (tried.empty() ? "" : "; ") + path + " (" + reason + ")";
     }
