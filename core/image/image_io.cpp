@@ -119,7 +119,8 @@ RawImage readOiioRaw(const std::string &path) {
     raw.integer = h.integer != 0;
     raw.linear = h.linear != 0;
     raw.batches = h.batches;
-    for (int c = 0; c < h.channels; ++c) raw.channelNames.emplace_back(h.channelNames[c]);
+    for (int c = 0; c < std::min(h.channels, SCADRAY_OIIO_MAX_NAMED_CHANNELS); ++c)
+        raw.channelNames.emplace_back(h.channelNames[c]);
     raw.pixels.resize(size_t(h.width) * size_t(h.height) * size_t(h.channels));
     if (!oiio.readPixels(in, raw.pixels.data(), error, sizeof error))
         throw std::runtime_error("cannot read image '" + path + "': " + error);
