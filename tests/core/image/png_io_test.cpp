@@ -222,5 +222,55 @@ TEST_F(PngIo, BrokenPngsFailWithTheirReason) {
                  std::runtime_error);
 }
 
+TEST_F(PngIo, DamagedPngsReadOrFailCleanly) {
+    // Every truncation and a flipped byte at every offset after the signature of a small 16-bit
+    // PNG: libpng's errors come back as exceptions, never a crash (a file without the signature
+    // goes to OpenImageIO, which tries every format it knows: slow, and not what this tests)
+    std::string good = (dir / "good.png").string();
+    WriteOptions o;
+    o.pngDepth = PngDepth::Bits16;
+    Image img(9, 4);
+    for (int x = 0; x < 9; ++x) img.set(x, x % 4, Rgb(x / 8.0, 0.25, 1));
+    writeImage(img, good, o);
+    std::ifstream in(good, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::string bad = (dir / "bad.png").string();
+    int read = 0, refused = 0;
+    auto attempt = [&](const std::string &content) {
+        std::ofstream(bad, std::ios::binary | std::ios::trunc) << content;
+        try {
+            Image back = readImage(bad);
+            EXPECT_EQ(back.data().size(), 3u * size_t(back.width()) * size_t(back.height()));
+            ++read;
+        } catch (const std::runtime_error &) {
+            ++refused;
+        }
+    };
+    for (size_t n = 8; n < bytes.size(); ++n) attempt(bytes.substr(0, n));
+    for (size_t at = 8; at < bytes.size(); ++at) {
+        std::string flipped = bytes;
+        flipped[at] = static_cast<char>(flipped[at] ^ 0x5A);
+        attempt(flipped);
+    }
+    EXPECT_GT(refused, 0);
+    EXPECT_GT(read, 0);  // flips in ancillary chunks are only warnings
+
+    // A text chunk declaring 1.5 GB in a 170-byte file: refused before libpng allocates it
+    std::string text = bytes;
+    size_t at = text.find("tEXt");
+    ASSERT_NE(at, std::string::npos);
+    text[at - 4] = 0x5A;
+    std::ofstream(bad, std::ios::binary | std::ios::trunc) << text;
+    try {
+        readImage(bad);
+        ADD_FAILURE() << "a chunk longer than its file was read";
+    } catch (const std::runtime_error &e) {
+        EXPECT_NE(std::string(e.what()).find("chunk tEXt at byte " + std::to_string(at - 4) +
+                                             " declares 1509949"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace rt
