@@ -164,6 +164,11 @@ struct PngReader::Impl {
     size_t rowBytes = 0;
     int bitDepth = 8;
     bool interlaced = false;
+    /// libpng's message, and whether the file ended before the image did.
+    std::string why() const {
+        return std::string(error.text) +
+               (file.f && std::feof(file.f) ? " (the file ends early: truncated)" : "");
+    }
     ~Impl() {
         if (png) png_destroy_read_struct(&png, info ? &info : nullptr, nullptr);
     }
@@ -186,8 +191,7 @@ PngReader::PngReader(const std::string &path) : impl_(std::make_unique<Impl>()),
     png_init_io(impl_->png, impl_->file.f);
     png_uint_32 size[2] = {0, 0};
     int raw[3] = {0, 0, 0}, expanded[4] = {0, 0, 0, 0}, linear = 0;
-    if (!readInfo(impl_->png, impl_->info, size, raw, expanded, &linear))
-        fail(impl_->error.text);
+    if (!readInfo(impl_->png, impl_->info, size, raw, expanded, &linear)) fail(impl_->why());
     width_ = size[0];
     height_ = size[1];
     fileChannels_ = raw[0];
@@ -208,7 +212,7 @@ std::vector<float> PngReader::readPixels() {
     std::vector<png_bytep> rows(h);
     for (size_t y = 0; y < h; ++y) rows[y] = data.data() + y * impl_->rowBytes;
     if (!readRows(impl_->png, rows.data(), impl_->interlaced))
-        throw std::runtime_error("cannot read image '" + path_ + "': " + impl_->error.text);
+        throw std::runtime_error("cannot read image '" + path_ + "': " + impl_->why());
     // OpenImageIO's integer-to-float conversion: the sample times the float 1 / max
     std::vector<float> px(w * h * size_t(channels_));
     if (impl_->bitDepth == 16) {
