@@ -6,7 +6,7 @@ set -euo pipefail
 
 packages=(
     g++ cmake ninja-build pkg-config
-    libopenimageio-dev libcli11-dev
+    libopenimageio-dev libpng-dev libcli11-dev
     libgtest-dev libgmock-dev libbenchmark-dev
     libtinygltf-dev libpolyclipping-dev
     povray openscad

@@ -1,19 +1,18 @@
 // SPDX-License-Identifier: MIT
-// OpenImageIO-based image reading and atomic writing.
+// Image reading and atomic writing: PNG through libpng (png_io.h), every other format through
+// the OpenImageIO module, loaded on first use (oiio_loader.h).
 #include "core/image/image_io.h"
-
-#include <OpenImageIO/imageio.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <memory>
-#include <span>
+#include <optional>
 #include <stdexcept>
 
 #include "core/image/image_limits.h"
+#include "core/image/oiio_loader.h"
+#include "core/image/png_io.h"
 #include "core/system/temp_file.h"
 
 namespace rt {
@@ -54,52 +53,151 @@ std::vector<T> quantise(const Image &img, double maxValue, bool srgb) {
     return out;
 }
 
-/// Writes pixels of `spec.format` through a temporary file beside `path` and a rename, so the
-/// target is either complete or untouched; an interrupt removes the temporary too.
-void writeWithSpec(const OIIO::ImageSpec &spec, const void *pixels, const std::string &path) {
+/// What an image file holds, as OpenImageIO's read_image(FLOAT) gives it: `channels` floats a
+/// pixel (integer samples divided by their maximum).
+struct RawImage {
+    int width = 0, height = 0, channels = 0;
+    bool integer = false;  ///< 8- or 16-bit samples
+    bool linear = false;   ///< declares a linear colour space
+    int batches = 0;
+    std::vector<std::string> channelNames;
+    std::vector<float> pixels;
+};
+
+/// Refuses what a header declares beyond the limits (image_limits.h), before any pixel memory is
+/// allocated.
+void checkDeclared(const std::string &path, uint64_t width, uint64_t height, int channels) {
+    if (width == 0 || height == 0 || channels < 1)
+        throw std::runtime_error("image '" + path + "' has no pixels");
+    if (channels > kMaxReadImageChannels)
+        throw std::runtime_error("image '" + path + "' has " + std::to_string(channels) +
+                                 " channels, more than the limit of " +
+                                 std::to_string(kMaxReadImageChannels));
+    std::string problem = imageSizeProblem(width, height, kMaxReadImagePixels, kMaxReadImageSide);
+    if (!problem.empty()) throw std::runtime_error("image '" + path + "' " + problem);
+}
+
+/// A PNG without alpha through libpng; nothing for one with alpha, whose pixels OpenImageIO
+/// premultiplies (left to it, so they read exactly as before).
+std::optional<RawImage> readPngRaw(const std::string &path, uint64_t fileBytes) {
+    PngReader png(path);
+    if (png.hasAlpha()) return std::nullopt;
+    checkDeclared(path, png.width(), png.height(), png.channels());
+    // The header's own fields (a palette image has one channel before expansion)
+    ImageHeader header;
+    header.format = "PNG";
+    header.width = png.width();
+    header.height = png.height();
+    header.channels = png.fileChannels();
+    header.bitDepth = png.fileBitDepth();
+    std::string problem = pngPlausibilityProblem(header, fileBytes);
+    if (!problem.empty()) throw std::runtime_error("image '" + path + "' " + problem);
+    RawImage raw;
+    raw.width = static_cast<int>(png.width());
+    raw.height = static_cast<int>(png.height());
+    raw.channels = png.channels();
+    raw.integer = true;
+    raw.linear = png.linear();
+    raw.pixels = png.readPixels();
+    return raw;
+}
+
+/// Any other image through the OpenImageIO module.
+RawImage readOiioRaw(const std::string &path) {
+    const ScadrayOiioApi &oiio = oiioModule("read image '" + path + "'");
+    char error[4096] = "";
+    ScadrayOiioHeader h{};
+    void *in = oiio.openInput(path.c_str(), &h, error, sizeof error);
+    if (!in) throw std::runtime_error("cannot read image '" + path + "': " + error);
+    std::unique_ptr<void, void (*)(void *)> closer(in, oiio.closeInput);
+    checkDeclared(path, uint64_t(std::max(h.width, 0)), uint64_t(std::max(h.height, 0)),
+                  h.channels);
+    RawImage raw;
+    raw.width = h.width;
+    raw.height = h.height;
+    raw.channels = h.channels;
+    raw.integer = h.integer != 0;
+    raw.linear = h.linear != 0;
+    raw.batches = h.batches;
+    for (int c = 0; c < std::min(h.channels, SCADRAY_OIIO_MAX_NAMED_CHANNELS); ++c)
+        raw.channelNames.emplace_back(h.channelNames[c]);
+    raw.pixels.resize(size_t(h.width) * size_t(h.height) * size_t(h.channels));
+    if (!oiio.readPixels(in, raw.pixels.data(), error, sizeof error))
+        throw std::runtime_error("cannot read image '" + path + "': " + error);
+    return raw;
+}
+
+/// Reads an image file: PNG through libpng, the rest through OpenImageIO, chosen by content.
+RawImage readRaw(const std::string &path, bool forceOiio = false) {
+    std::error_code ec;
+    fs::file_status st = fs::status(path, ec);
+    if (!fs::exists(st))
+        throw std::runtime_error("cannot read image '" + path + "': no such file");
+    if (!fs::is_regular_file(st))
+        throw std::runtime_error("cannot read image '" + path + "': not a regular file");
+    uint64_t fileBytes = fs::file_size(path, ec);
+    if (!forceOiio && hasPngSignature(path))
+        if (std::optional<RawImage> raw = readPngRaw(path, fileBytes)) return std::move(*raw);
+    return readOiioRaw(path);
+}
+
+/// The first three channels (grey repeated) as linear RGB: integer samples are sRGB-encoded
+/// unless the file says it is linear (e.g. POV-Ray's File_Gamma=1.0 PNGs carry gAMA 1.0) or
+/// `assumeLinear` is set.
+Image toImage(const RawImage &raw, bool assumeLinear) {
+    bool decode = raw.integer && !assumeLinear && !raw.linear;
+    Image img(raw.width, raw.height);
+    for (int y = 0; y < raw.height; ++y)
+        for (int x = 0; x < raw.width; ++x) {
+            const float *p = &raw.pixels[(size_t(y) * raw.width + x) * raw.channels];
+            Rgb c;
+            for (int ch = 0; ch < 3; ++ch) {
+                double v = p[std::min(ch, raw.channels - 1)];
+                c[ch] = decode ? srgbDecode(v) : v;
+            }
+            img.set(x, y, c);
+        }
+    return img;
+}
+
+/// Writes `pixels` of `spec` through the OpenImageIO module into a temporary file beside
+/// `path` and a rename, so the target is either complete or untouched.
+void writeOiio(const ScadrayOiioWriteSpec &spec, const void *pixels, const std::string &path) {
+    const ScadrayOiioApi &oiio = oiioModule("write '" + path + "'");
+    char error[4096] = "";
     // The writer is chosen by the target's extension, before any temporary exists
-    auto out = OIIO::ImageOutput::create(path);
+    void *out = oiio.createOutput(path.c_str(), error, sizeof error);
     if (!out)
-        throw std::runtime_error("no image writer for '" + path + "' (use .png or .exr): " +
-                                 OIIO::geterror());
+        throw std::runtime_error("no image writer for '" + path + "' (use .png or .exr): " + error);
+    std::unique_ptr<void, void (*)(void *)> destroyer(out, oiio.destroyOutput);
     // The temporary keeps the extension too
     TempFile tmp(path, lowerExtension(path));
-    bool ok = out->open(tmp.path(), spec) && out->write_image(spec.format, pixels);
-    ok = out->close() && ok;
-    if (!ok) throw std::runtime_error("cannot write '" + path + "': " + out->geterror());
+    if (!oiio.writePixels(out, tmp.path().c_str(), &spec, pixels, error, sizeof error))
+        throw std::runtime_error("cannot write '" + path + "': " + error);
     tmp.commit();
 }
 
-/// Opens an image file for reading after checking what its header declares against the limits
-/// (image_limits.h) and, for PNG, against the file's size: the pixel buffers are allocated from
-/// the declared size, before a pixel is read.
-std::unique_ptr<OIIO::ImageInput> openForReading(const std::string &path) {
-    std::error_code ec;
-    fs::file_status st = fs::status(path, ec);
-    if (fs::exists(st) && !fs::is_regular_file(st))
-        throw std::runtime_error("cannot read image '" + path + "': not a regular file");
-    uint64_t fileBytes = fs::exists(st) ? fs::file_size(path, ec) : 0;
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) throw std::runtime_error("cannot read image '" + path + "': " + OIIO::geterror());
-    const OIIO::ImageSpec &spec = in->spec();
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels < 1)
-        throw std::runtime_error("image '" + path + "' has no pixels");
-    if (spec.nchannels > kMaxReadImageChannels)
-        throw std::runtime_error("image '" + path + "' has " + std::to_string(spec.nchannels) +
-                                 " channels, more than the limit of " +
-                                 std::to_string(kMaxReadImageChannels));
-    std::string problem = imageSizeProblem(uint64_t(spec.width), uint64_t(spec.height),
-                                           kMaxReadImagePixels, kMaxReadImageSide);
-    if (problem.empty() && std::string(in->format_name()) == "png") {
-        // The header's own fields (a palette image has one channel before expansion)
-        unsigned char head[64] = {};
-        std::ifstream file(path, std::ios::binary);
-        file.read(reinterpret_cast<char *>(head), sizeof head);
-        if (auto header = readImageHeader(std::span(head, size_t(file.gcount()))))
-            problem = pngPlausibilityProblem(*header, fileBytes);
-    }
-    if (!problem.empty()) throw std::runtime_error("image '" + path + "' " + problem);
-    return in;
+/// writeImage through the OpenImageIO module, PNG included.
+void writeImageOiio(const Image &img, const std::string &path, const WriteOptions &opts) {
+    std::string ext = lowerExtension(path);
+    bool isPng = ext == ".png";
+    bool isFloat = ext == ".exr" || ext == ".hdr" || ext == ".pfm";
+    bool bits16 = opts.pngDepth == PngDepth::Bits16;
+    bool srgb = !isFloat && !(isPng && opts.linearPng);
+    ScadrayOiioWriteSpec spec{};
+    spec.width = img.width();
+    spec.height = img.height();
+    spec.channels = 3;
+    spec.type = isFloat ? SCADRAY_OIIO_FLOAT : bits16 ? SCADRAY_OIIO_UINT16 : SCADRAY_OIIO_UINT8;
+    spec.colorSpace = srgb ? "sRGB" : "Linear";
+    spec.gamma = isPng && !srgb ? 1.0f : 0.0f;
+    spec.batches = -1;
+    if (isFloat)
+        writeOiio(spec, img.data().data(), path);
+    else if (bits16)
+        writeOiio(spec, quantise<uint16_t>(img, 65535, srgb).data(), path);
+    else
+        writeOiio(spec, quantise<uint8_t>(img, 255, srgb).data(), path);
 }
 
 }  // namespace
@@ -107,25 +205,22 @@ std::unique_ptr<OIIO::ImageInput> openForReading(const std::string &path) {
 void writeImage(const Image &img, const std::string &path, const WriteOptions &opts) {
     if (img.empty()) throw std::runtime_error("cannot write an empty image");
     std::string ext = lowerExtension(path);
-    bool isPng = ext == ".png";
-    bool isFloat = ext == ".exr" || ext == ".hdr" || ext == ".pfm";
-    OIIO::TypeDesc type = isFloat ? OIIO::TypeDesc::FLOAT
-                          : (opts.pngDepth == PngDepth::Bits16 ? OIIO::TypeDesc::UINT16
-                                                               : OIIO::TypeDesc::UINT8);
-    OIIO::ImageSpec spec(img.width(), img.height(), 3, type);
-    bool srgb = !isFloat && !(isPng && opts.linearPng);
-    spec.attribute("oiio:ColorSpace", srgb ? "sRGB" : "Linear");
-    spec.attribute("Software", "scadray");
-    if (isPng && !srgb) spec.attribute("oiio:Gamma", 1.0f);
-    if (isFloat) {
-        writeWithSpec(spec, img.data().data(), path);
-    } else if (type == OIIO::TypeDesc::UINT16) {
-        auto px = quantise<uint16_t>(img, 65535, srgb);
-        writeWithSpec(spec, px.data(), path);
-    } else {
-        auto px = quantise<uint8_t>(img, 255, srgb);
-        writeWithSpec(spec, px.data(), path);
-    }
+    if (ext != ".png") return writeImageOiio(img, path, opts);
+    // libpng, through a temporary beside the target and a rename
+    bool linear = opts.linearPng;
+    TempFile tmp(path, ext);
+    if (opts.pngDepth == PngDepth::Bits16)
+        writePng(tmp.path(), img.width(), img.height(), 16,
+                 quantise<uint16_t>(img, 65535, !linear).data(), linear);
+    else
+        writePng(tmp.path(), img.width(), img.height(), 8,
+                 quantise<uint8_t>(img, 255, !linear).data(), linear);
+    tmp.commit();
+}
+
+void writeImageWithOiio(const Image &img, const std::string &path, const WriteOptions &opts) {
+    if (img.empty()) throw std::runtime_error("cannot write an empty image");
+    writeImageOiio(img, path, opts);
 }
 
 void writeEstimate(const ImageEstimate &est, const std::string &path) {
@@ -137,41 +232,42 @@ void writeEstimate(const ImageEstimate &est, const std::string &path) {
     if (!est.spread.empty()) layers.push_back({&est.spread, "spread."});
     if (!est.ties.empty()) layers.push_back({&est.ties, "ties."});
     int nch = 3 * static_cast<int>(layers.size());
-    OIIO::ImageSpec spec(m.width(), m.height(), nch, OIIO::TypeDesc::FLOAT);
-    spec.channelnames.clear();
+    std::vector<std::string> names;
     for (const auto &[img, prefix] : layers)
-        for (const char *c : {"R", "G", "B"}) spec.channelnames.push_back(prefix + c);
-    spec.attribute("scadray:batches", est.batches);
-    spec.attribute("Software", "scadray");
+        for (const char *c : {"R", "G", "B"}) names.push_back(prefix + c);
+    std::vector<const char *> namePtrs;
+    for (const std::string &n : names) namePtrs.push_back(n.c_str());
+    ScadrayOiioWriteSpec spec{};
+    spec.width = m.width();
+    spec.height = m.height();
+    spec.channels = nch;
+    spec.type = SCADRAY_OIIO_FLOAT;
+    spec.channelNames = namePtrs.data();
+    spec.batches = est.batches;
     std::vector<float> px(size_t(m.width()) * m.height() * nch);
     for (size_t p = 0; p < size_t(m.width()) * m.height(); ++p)
         for (size_t l = 0; l < layers.size(); ++l)
             for (int c = 0; c < 3; ++c) px[p * nch + 3 * l + c] = layers[l].first->data()[3 * p + c];
-    writeWithSpec(spec, px.data(), path);
+    writeOiio(spec, px.data(), path);
 }
 
 ImageEstimate readEstimate(const std::string &path, bool assumeLinear) {
-    std::unique_ptr<OIIO::ImageInput> in = openForReading(path);
-    const OIIO::ImageSpec &spec = in->spec();
+    RawImage raw = readRaw(path);
     auto channel = [&](const std::string &name) {
-        for (int i = 0; i < spec.nchannels; ++i)
-            if (spec.channelnames[i] == name) return i;
+        for (size_t i = 0; i < raw.channelNames.size(); ++i)
+            if (raw.channelNames[i] == name) return static_cast<int>(i);
         return -1;
     };
     ImageEstimate est;
-    est.mean = readImage(path, assumeLinear);
-    if (channel("var.R") < 0 && channel("spread.R") < 0 && channel("ties.R") < 0) return est;
-    std::vector<float> px(size_t(spec.width) * spec.height * spec.nchannels);
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data()))
-        throw std::runtime_error("cannot read image '" + path + "': " + in->geterror());
+    est.mean = toImage(raw, assumeLinear);
     auto layer = [&](const std::string &prefix) {
         int r = channel(prefix + "R"), g = channel(prefix + "G"), b = channel(prefix + "B");
         Image img;
         if (r < 0 || g < 0 || b < 0) return img;
-        img = Image(spec.width, spec.height);
-        for (int y = 0; y < spec.height; ++y)
-            for (int x = 0; x < spec.width; ++x) {
-                const float *p = &px[(size_t(y) * spec.width + x) * spec.nchannels];
+        img = Image(raw.width, raw.height);
+        for (int y = 0; y < raw.height; ++y)
+            for (int x = 0; x < raw.width; ++x) {
+                const float *p = &raw.pixels[(size_t(y) * raw.width + x) * raw.channels];
                 img.set(x, y, Rgb(p[r], p[g], p[b]));
             }
         return img;
@@ -179,7 +275,8 @@ ImageEstimate readEstimate(const std::string &path, bool assumeLinear) {
     est.variance = layer("var.");
     est.spread = layer("spread.");
     est.ties = layer("ties.");
-    est.batches = spec.get_int_attribute("scadray:batches", 0);
+    if (!est.variance.empty() || !est.spread.empty() || !est.ties.empty())
+        est.batches = raw.batches;
     return est;
 }
 
@@ -216,31 +313,11 @@ ImageEstimate downsample(const Image &img, int k) {
 }
 
 Image readImage(const std::string &path, bool assumeLinear) {
-    std::unique_ptr<OIIO::ImageInput> in = openForReading(path);
-    const OIIO::ImageSpec &spec = in->spec();
-    std::vector<float> px(size_t(spec.width) * spec.height * spec.nchannels);
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data()))
-        throw std::runtime_error("cannot read image '" + path + "': " + in->geterror());
-    bool integer = spec.format.basetype == OIIO::TypeDesc::UINT8 ||
-                   spec.format.basetype == OIIO::TypeDesc::UINT16;
-    // Integer files are sRGB-encoded unless they say they are linear (e.g. POV-Ray's
-    // File_Gamma=1.0 PNGs carry gAMA 1.0, which OpenImageIO reports as a linear colour space)
-    std::string space = spec.get_string_attribute("oiio:ColorSpace");
-    std::transform(space.begin(), space.end(), space.begin(), [](unsigned char c) { return std::tolower(c); });
-    bool decode = integer && !assumeLinear && space != "linear";
-    Image img(spec.width, spec.height);
-    for (int y = 0; y < spec.height; ++y)
-        for (int x = 0; x < spec.width; ++x) {
-            const float *p = &px[(size_t(y) * spec.width + x) * spec.nchannels];
-            Rgb c;
-            for (int ch = 0; ch < 3; ++ch) {
-                double v = p[std::min(ch, spec.nchannels - 1)];
-                c[ch] = decode ? srgbDecode(v) : v;
-            }
-            img.set(x, y, c);
-        }
-    in->close();
-    return img;
+    return toImage(readRaw(path), assumeLinear);
+}
+
+Image readImageWithOiio(const std::string &path, bool assumeLinear) {
+    return toImage(readRaw(path, true), assumeLinear);
 }
 
 }  // namespace rt

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Image files through OpenImageIO (the only place it is used): PNG with the sRGB curve at 8 or
-// 16 bits, EXR as linear float; written to a temporary file and renamed, so an output file is
-// either complete or untouched.
+// Image files: PNG with the sRGB curve at 8 or 16 bits through libpng, EXR as linear float and
+// every other format through OpenImageIO, in a module loaded only when such a file is first read
+// or written; written to a temporary file and renamed, so an output file is either complete or
+// untouched.
 #pragma once
 
 #include <string>
@@ -23,8 +24,9 @@ double srgbEncode(double linear);
 /// Inverse of srgbEncode.
 double srgbDecode(double encoded);
 
-/// Writes by extension (.png, .exr, also .tif/.ppm as OIIO knows them). Throws std::runtime_error
-/// with the reason on failure; the target is then left as it was.
+/// Writes by extension (.png through libpng; .exr, also .tif/.ppm as OpenImageIO knows them,
+/// through the OpenImageIO module). Throws std::runtime_error with the reason on failure,
+/// including a module that cannot be loaded; the target is then left as it was.
 void writeImage(const Image &img, const std::string &path, const WriteOptions &opts = {});
 
 /// Writes an estimate as OpenEXR: channels R, G, B (the mean), var.R/G/B, spread.R/G/B and
@@ -44,7 +46,14 @@ ImageEstimate downsample(const Image &img, int k);
 /// kMaxReadImageChannels channels (image_limits.h), a regular file, and for PNG a size its
 /// compressed data can hold. 8/16-bit files are decoded with the sRGB curve unless
 /// they declare themselves linear (gAMA 1.0, as POV-Ray's File_Gamma=1.0 output and scadray's
-/// --linear PNGs do) or `assumeLinear` is set. Throws std::runtime_error.
+/// --linear PNGs do) or `assumeLinear` is set. A PNG without alpha is decoded by libpng, any other
+/// file by OpenImageIO (chosen by content); both give the same floats. Throws
+/// std::runtime_error.
 Image readImage(const std::string &path, bool assumeLinear = false);
+
+/// readImage and writeImage through OpenImageIO whatever the format, PNG included (the one path
+/// before PNG went through libpng), so tests can check that both give the same pixels.
+Image readImageWithOiio(const std::string &path, bool assumeLinear = false);
+void writeImageWithOiio(const Image &img, const std::string &path, const WriteOptions &opts = {});
 
 }  // namespace rt

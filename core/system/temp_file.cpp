@@ -28,9 +28,10 @@ constexpr size_t kMaxSlotPath = 4096;
 struct Slot {
     std::atomic<bool> used{false};
     std::atomic<bool> claimed{false};
-    char path[kMaxSlotPath];
+    char path[kMaxSlotPath] = {};
 };
-Slot slots[kMaxLiveTempFiles];
+/// Constant-initialised (zero, in .bss): no start-up code touches its 64 KiB
+constinit Slot slots[kMaxLiveTempFiles];
 
 int claimSlot(const std::string &path) {
     if (path.size() >= kMaxSlotPath) return -1;
@@ -51,7 +52,7 @@ void releaseSlot(int i) {
 }
 
 /// Process groups of running children; 0 = free.
-std::atomic<int> childGroups[kMaxLiveTempFiles];
+constinit std::atomic<int> childGroups[kMaxLiveTempFiles];
 
 extern "C" void removeTempsAndDie(int sig) {
     // Only async-signal-safe calls: kill, unlink, signal, raise

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Fuzz target: image reading as `scadray compare` does it (readEstimate through OpenImageIO),
-// on PNG and OpenEXR files. The extension follows the input's magic number; other inputs are
-// skipped, so OpenImageIO's other format readers stay out of scope. readEstimate's contract is
-// std::runtime_error on a bad file.
+// Fuzz target: image reading as `scadray compare` does it (readEstimate: PNG through libpng, PNG
+// with alpha and OpenEXR through the OpenImageIO module), on PNG and OpenEXR files. The extension
+// follows the input's magic number; other inputs are skipped, so OpenImageIO's other format
+// readers stay out of scope. readEstimate's contract is std::runtime_error on a bad file.
 #include <cstdint>
 #include <cstring>
 
