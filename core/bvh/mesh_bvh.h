@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "core/ir/mesh.h"
@@ -77,23 +78,30 @@ void MeshBvh::traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit)
     };
     Entry stack[kStackSize];
     int top = 0;
-    stack[top++] = {0, tMin};
+    uint32_t current = 0;  // the root is always a node
 #if defined(__SSE2__)
     const __m128d o[3] = {_mm_set1_pd(ray.o.x), _mm_set1_pd(ray.o.y), _mm_set1_pd(ray.o.z)};
     const __m128d iv[3] = {_mm_set1_pd(inv[0]), _mm_set1_pd(inv[1]), _mm_set1_pd(inv[2])};
     const __m128d slop = _mm_set1_pd(kSlop);
     const __m128d absMask = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
 #endif
-    while (top > 0) {
-        Entry e = stack[--top];
-        if (e.tNear > *tMax) continue;
-        if (e.ref & kLeaf) {
-            uint32_t first = (e.ref & ~kLeaf) >> 2, count = (e.ref & 3) + 1;
+    auto push = [&](uint32_t ref, double tNear) {
+        stack[top++] = {ref, tNear};
+#if defined(__SSE2__)
+        if (!(ref & kLeaf)) {
+            const char *p = reinterpret_cast<const char *>(&nodes_[ref]);
+            _mm_prefetch(p, _MM_HINT_T0);
+            _mm_prefetch(p + 64, _MM_HINT_T0);
+        }
+#endif
+    };
+    while (true) {
+        if (current & kLeaf) {
+            uint32_t first = (current & ~kLeaf) >> 2, count = (current & 3) + 1;
             for (uint32_t i = 0; i < count; ++i)
                 if (visit(order_[first + i], tMax)) return;
-            continue;
-        }
-        const Node &n = nodes_[e.ref];
+        } else {
+        const Node &n = nodes_[current];
         alignas(16) double tn[4];
         int mask;
 #if defined(__SSE2__)
@@ -116,6 +124,9 @@ void MeshBvh::traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit)
             t1b = _mm_min_pd(fb, t1b);
         }
         mask = _mm_movemask_pd(_mm_cmple_pd(t0a, t1a)) | _mm_movemask_pd(_mm_cmple_pd(t0b, t1b)) << 2;
+        // Without the empty slots (an inverted infinite box still meets a ray with tMax = inf)
+        mask &= ~_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(
+            _mm_load_si128(reinterpret_cast<const __m128i *>(n.child)), _mm_set1_epi32(-1))));
         _mm_store_pd(tn, t0a);
         _mm_store_pd(tn + 2, t0b);
 #else
@@ -131,32 +142,46 @@ void MeshBvh::traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit)
                 t1 = tFar < t1 ? tFar : t1;
             }
             tn[c] = t0;
-            if (t0 <= t1) mask |= 1 << c;
+            if (t0 <= t1 && n.child[c] != kEmpty) mask |= 1 << c;
         }
 #endif
-        // Push the children met, farthest first, so the nearest is visited next
-        Entry hit[4];
-        int k = 0;
-        for (int c = 0; c < 4; ++c) {
-            if (!(mask & (1 << c)) || n.child[c] == kEmpty) continue;
-            Entry x{n.child[c], tn[c]};
-            int j = k++;
-            while (j > 0 && hit[j - 1].tNear < x.tNear) {
-                hit[j] = hit[j - 1];
-                --j;
+        // Go on with the nearest child met and push the others, farthest first
+        if (mask != 0) {
+            int c0 = __builtin_ctz(mask);
+            mask &= mask - 1;
+            if (mask == 0) {
+                current = n.child[c0];
+                continue;
             }
-            hit[j] = x;
-        }
-        for (int j = 0; j < k; ++j) {
-            stack[top++] = hit[j];
-#if defined(__SSE2__)
-            if (!(hit[j].ref & kLeaf)) {
-                const char *p = reinterpret_cast<const char *>(&nodes_[hit[j].ref]);
-                _mm_prefetch(p, _MM_HINT_T0);
-                _mm_prefetch(p + 64, _MM_HINT_T0);
+            int c1 = __builtin_ctz(mask);
+            mask &= mask - 1;
+            if (mask == 0) {
+                if (tn[c1] < tn[c0]) std::swap(c0, c1);
+                push(n.child[c1], tn[c1]);
+                current = n.child[c0];
+                continue;
             }
-#endif
+            Entry hit[4] = {{n.child[c0], tn[c0]}, {n.child[c1], tn[c1]}};
+            int k = 2;
+            for (; mask != 0; mask &= mask - 1) hit[k++] = {n.child[__builtin_ctz(mask)], tn[__builtin_ctz(mask)]};
+            // Farthest first (insertion sort of at most four)
+            for (int i = 1; i < k; ++i) {
+                Entry x = hit[i];
+                int j = i;
+                for (; j > 0 && hit[j - 1].tNear < x.tNear; --j) hit[j] = hit[j - 1];
+                hit[j] = x;
+            }
+            for (int j = 0; j < k - 1; ++j) push(hit[j].ref, hit[j].tNear);
+            current = hit[k - 1].ref;
+            continue;
         }
+        }
+        // Next: the nearest pushed entry still within reach
+        do {
+            if (top == 0) return;
+            --top;
+        } while (stack[top].tNear > *tMax);
+        current = stack[top].ref;
     }
 }
 
