@@ -106,7 +106,9 @@ void MeshBvh::traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit)
         int mask;
 #if defined(__SSE2__)
         __m128d t0a = _mm_set1_pd(tMin), t0b = t0a;
-        __m128d t1a = _mm_set1_pd(*tMax), t1b = t1a;
+        // The far distance is the nearest far plane grown by its rounding error, then capped at
+        // tMax: growing is monotonic, so growing the minimum equals the minimum of the grown
+        __m128d t1a = _mm_set1_pd(kInfinity), t1b = t1a;
         for (int a = 0; a < 3; ++a) {
             __m128 nearF = _mm_load_ps(nearHi[a] ? n.hi[a] : n.lo[a]);
             __m128 farF = _mm_load_ps(nearHi[a] ? n.lo[a] : n.hi[a]);
@@ -114,8 +116,6 @@ void MeshBvh::traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit)
             __m128d nb = _mm_mul_pd(_mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(nearF, nearF)), o[a]), iv[a]);
             __m128d fa = _mm_mul_pd(_mm_sub_pd(_mm_cvtps_pd(farF), o[a]), iv[a]);
             __m128d fb = _mm_mul_pd(_mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(farF, farF)), o[a]), iv[a]);
-            fa = _mm_add_pd(fa, _mm_mul_pd(slop, _mm_and_pd(fa, absMask)));
-            fb = _mm_add_pd(fb, _mm_mul_pd(slop, _mm_and_pd(fb, absMask)));
             // maxpd/minpd return their second operand when either is NaN: a NaN distance
             // (origin on the plane of a flat direction) leaves the interval as it was
             t0a = _mm_max_pd(na, t0a);
@@ -123,6 +123,9 @@ void MeshBvh::traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit)
             t1a = _mm_min_pd(fa, t1a);
             t1b = _mm_min_pd(fb, t1b);
         }
+        const __m128d tMaxV = _mm_set1_pd(*tMax);
+        t1a = _mm_min_pd(_mm_add_pd(t1a, _mm_mul_pd(slop, _mm_and_pd(t1a, absMask))), tMaxV);
+        t1b = _mm_min_pd(_mm_add_pd(t1b, _mm_mul_pd(slop, _mm_and_pd(t1b, absMask))), tMaxV);
         mask = _mm_movemask_pd(_mm_cmple_pd(t0a, t1a)) | _mm_movemask_pd(_mm_cmple_pd(t0b, t1b)) << 2;
         // Without the empty slots (an inverted infinite box still meets a ray with tMax = inf)
         mask &= ~_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(
