@@ -11,6 +11,7 @@ packages=(
     libtinygltf-dev libpolyclipping-dev
     povray openscad
     clang libclang-rt-14-dev
+    libembree-dev
 )
 
 missing=()

@@ -28,45 +28,58 @@ bool ownsEdge(const Vec3 &a, const Vec3 &b, double sign) {
 
 }  // namespace
 
-TriangleMesh::TriangleMesh(ir::MeshPtr mesh) : mesh_(std::move(mesh)) {
+TriangleMesh::TriangleMesh(ir::MeshPtr mesh, int buildThreads) : mesh_(std::move(mesh)) {
     const ir::Mesh &m = *mesh_;
-    std::vector<Bounds3> triBounds;
-    triBounds.reserve(m.triangles.size());
     smooth_.resize(m.triangles.size(), false);
     for (size_t i = 0; i < m.triangles.size(); ++i) {
         const auto &t = m.triangles[i];
-        Bounds3 b = Bounds3::point(m.positions[t[0]]);
-        b = unionBounds(b, m.positions[t[1]]);
-        b = unionBounds(b, m.positions[t[2]]);
-        triBounds.push_back(b);
-        bounds_ = unionBounds(bounds_, b);
+        for (int k = 0; k < 3; ++k) bounds_ = unionBounds(bounds_, m.positions[t[k]]);
         if (!m.normals.empty())
             smooth_[i] = !(m.normals[t[0]] == m.normals[t[1]] && m.normals[t[1]] == m.normals[t[2]]);
     }
-    bvh_ = Bvh(triBounds);
+    bvh_ = MeshBvh(m, buildThreads);
     topology_ = ir::analyzeMesh(m);
 }
 
-size_t TriangleMesh::extraBytes() const {
-    return bvh_.nodes().capacity() * sizeof(Bvh::Node) + bvh_.itemOrder().capacity() * sizeof(uint32_t) +
-           smooth_.capacity() / 8;
+size_t TriangleMesh::extraBytes() const { return bvh_.bytes() + smooth_.capacity() / 8; }
+
+TriangleMesh::RayFrame::RayFrame(const Ray &r) : ray(&r) {
+    // Permute so the ray's largest component is z, and shear so the ray runs along +z
+    kz = maxDimension(abs(r.d));
+    kx = kz + 1 == 3 ? 0 : kz + 1;
+    ky = kx + 1 == 3 ? 0 : kx + 1;
+    Vec3 d = permute(r.d, kx, ky, kz);
+    sx = -d.x / d.z;
+    sy = -d.y / d.z;
+    sz = 1 / d.z;
 }
 
 bool TriangleMesh::intersectTriangle(const Ray &r, uint32_t triangle, Hit *hit) const {
+    return intersect(RayFrame(r), triangle, -kInfinity, kInfinity, false, hit);
+}
+
+// The edge functions round once each through std::fma, which without an FMA instruction in the
+// x86-64 baseline is a call into libm; a clone for CPUs with FMA computes the same results
+// (fma is exactly rounded either way, and nothing else is contracted: ISO C++ mode in GCC, and
+// the pragma for Clang) with the instruction inline.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__SANITIZE_ADDRESS__)
+#if defined(__clang__)
+#pragma clang fp contract(off)
+#endif
+__attribute__((target_clones("fma", "default")))
+#endif
+bool TriangleMesh::intersect(const RayFrame &f, uint32_t triangle, double tMin, double tMax,
+                             bool tMaxInclusive, Hit *hit) const {
+    const Ray &r = *f.ray;
     const auto &idx = mesh_->triangles[triangle];
     const Vec3 &p0 = mesh_->positions[idx[0]], &p1 = mesh_->positions[idx[1]],
                &p2 = mesh_->positions[idx[2]];
-    // Translate the vertices to the ray origin, permute so the ray's largest component is z,
-    // and shear so the ray runs along +z
-    Vec3 p0t = p0 - r.o, p1t = p1 - r.o, p2t = p2 - r.o;
-    int kz = maxDimension(abs(r.d));
-    int kx = kz + 1 == 3 ? 0 : kz + 1;
-    int ky = kx + 1 == 3 ? 0 : kx + 1;
-    Vec3 d = permute(r.d, kx, ky, kz);
-    p0t = permute(p0t, kx, ky, kz);
-    p1t = permute(p1t, kx, ky, kz);
-    p2t = permute(p2t, kx, ky, kz);
-    double sx = -d.x / d.z, sy = -d.y / d.z, sz = 1 / d.z;
+    // Translate the vertices to the ray origin, permute and shear into the ray's frame
+    const int kx = f.kx, ky = f.ky, kz = f.kz;
+    Vec3 p0t(p0[kx] - r.o[kx], p0[ky] - r.o[ky], p0[kz] - r.o[kz]);
+    Vec3 p1t(p1[kx] - r.o[kx], p1[ky] - r.o[ky], p1[kz] - r.o[kz]);
+    Vec3 p2t(p2[kx] - r.o[kx], p2[ky] - r.o[ky], p2[kz] - r.o[kz]);
+    const double sx = f.sx, sy = f.sy, sz = f.sz;
     p0t.x += sx * p0t.z;
     p0t.y += sy * p0t.z;
     p1t.x += sx * p1t.z;
@@ -92,7 +105,9 @@ bool TriangleMesh::intersectTriangle(const Ray &r, uint32_t triangle, Hit *hit) 
     p2t.z *= sz;
     double tScaled = e0 * p0t.z + e1 * p1t.z + e2 * p2t.z;
     double invDet = 1 / det;
-    hit->t = tScaled * invDet;
+    double t = tScaled * invDet;
+    if (!(t > tMin && (t < tMax || (tMaxInclusive && t == tMax)))) return false;
+    hit->t = t;
     hit->b0 = e0 * invDet;
     hit->b1 = e1 * invDet;
     hit->b2 = e2 * invDet;
@@ -108,15 +123,17 @@ bool TriangleMesh::intersectTriangle(const Ray &r, uint32_t triangle, Hit *hit) 
     double deltaE = 2 * (gamma(2) * maxXt * maxYt + deltaY * maxXt + deltaX * maxYt);
     double maxE = maxComponent(abs(Vec3(e0, e1, e2)));
     hit->tError = 3 * (gamma(3) * maxE * maxZt + deltaE * maxZt + deltaZ * maxE) * std::abs(invDet);
-    return std::isfinite(hit->t);
+    return true;
 }
 
 bool TriangleMesh::closest(const Ray &r, double tMin, double tMax, Hit *hit) const {
     bool found = false;
     double far = tMax;
+    RayFrame frame(r);
     bvh_.traverse(r, tMin, &far, [&](uint32_t tri, double *tFar) {
         Hit h;
-        if (!intersectTriangle(r, tri, &h) || !(h.t > tMin) || !(h.t < *tFar)) return false;
+        // A tie at the closest t goes to the lower triangle index
+        if (!intersect(frame, tri, tMin, *tFar, found && tri < hit->triangle, &h)) return false;
         // A hit within its own rounding error of the origin may be the surface the ray
         // starts on: t must be conservatively positive (pbrt-v3 Triangle::Intersect)
         if (h.t <= h.tError) return false;
@@ -130,9 +147,10 @@ bool TriangleMesh::closest(const Ray &r, double tMin, double tMax, Hit *hit) con
 
 void TriangleMesh::allHits(const Ray &r, std::vector<Hit> &out) const {
     double far = kInfinity;
+    RayFrame frame(r);
     bvh_.traverse(r, -kInfinity, &far, [&](uint32_t tri, double *) {
         Hit h;
-        if (intersectTriangle(r, tri, &h)) out.push_back(h);
+        if (intersect(frame, tri, -kInfinity, kInfinity, false, &h)) out.push_back(h);
         return false;
     });
 }
@@ -176,8 +194,10 @@ void MeshInstance::lineSpans(const Ray &worldRay, SpanList &out) const {
     thread_local std::vector<TriangleMesh::Hit> hits;
     hits.clear();
     mesh_->allHits(placement_.toObject(worldRay), hits);
-    std::sort(hits.begin(), hits.end(),
-              [](const TriangleMesh::Hit &a, const TriangleMesh::Hit &b) { return a.t < b.t; });
+    // By t, and at one t by triangle, so the crossing named does not depend on the BVH's order
+    std::sort(hits.begin(), hits.end(), [](const TriangleMesh::Hit &a, const TriangleMesh::Hit &b) {
+        return a.t < b.t || (a.t == b.t && a.triangle < b.triangle);
+    });
     // Winding number (or parity), applying all hits at one t together: a ray through an edge
     // or vertex meets several triangles at once, and their net count is what matters
     bool winding = mesh_->oriented();

@@ -7,7 +7,7 @@
 #include <memory>
 #include <vector>
 
-#include "core/bvh/bvh.h"
+#include "core/bvh/mesh_bvh.h"
 #include "core/geometry/shape.h"
 #include "core/ir/mesh.h"
 
@@ -24,7 +24,8 @@ class TriangleMesh {
         double tError = 0;              ///< bound on the rounding error of t
     };
 
-    explicit TriangleMesh(ir::MeshPtr mesh);
+    /// buildThreads: threads of the BVH build, 0 for all cores; the BVH does not depend on it.
+    explicit TriangleMesh(ir::MeshPtr mesh, int buildThreads = 0);
 
     const ir::Mesh &mesh() const { return *mesh_; }
     const Bounds3 &bounds() const { return bounds_; }
@@ -34,6 +35,7 @@ class TriangleMesh {
     size_t triangleCount() const { return mesh_->triangles.size(); }
     /// Bytes held by the BVH and the derived data (not counting the shared ir::Mesh).
     size_t extraBytes() const;
+    const MeshBvh &bvh() const { return bvh_; }
 
     /// Watertight ray-triangle test (Woop, Benthin and Wald 2013; pbrt-v3 section 3.6.2) for
     /// any t along the line, with a fill convention on edges and vertices: a ray through a
@@ -41,7 +43,8 @@ class TriangleMesh {
     /// the winding number of a closed mesh is counted right.
     bool intersectTriangle(const Ray &r, uint32_t triangle, Hit *hit) const;
     /// Closest hit with tMin < t < tMax, where t also exceeds the rounding-error bound of its own
-    /// computation, so a ray spawned from the surface does not find it again.
+    /// computation, so a ray spawned from the surface does not find it again. Of triangles hit
+    /// at the same t, the lowest index wins, whatever order the BVH visits them in.
     bool closest(const Ray &r, double tMin, double tMax, Hit *hit) const;
     /// Every crossing of the whole line, unsorted.
     void allHits(const Ray &r, std::vector<Hit> &out) const;
@@ -50,8 +53,20 @@ class TriangleMesh {
                           bool *hasUv) const;
 
   private:
+    /// The ray in the watertight test's frame: the axis of its largest component is z.
+    struct RayFrame {
+        const Ray *ray;
+        int kx, ky, kz;
+        double sx, sy, sz;
+        explicit RayFrame(const Ray &r);
+    };
+    /// intersectTriangle for a ray frame, returning false early when t is not within
+    /// (tMin, tMax), or (tMin, tMax] when tMaxInclusive.
+    bool intersect(const RayFrame &f, uint32_t triangle, double tMin, double tMax, bool tMaxInclusive,
+                   Hit *hit) const;
+
     ir::MeshPtr mesh_;
-    Bvh bvh_;
+    MeshBvh bvh_;
     Bounds3 bounds_;
     ir::MeshTopology topology_;
     /// Per triangle: true when its vertex normals differ (POV-Ray shades only such triangles

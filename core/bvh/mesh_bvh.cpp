@@ -1,0 +1,400 @@
+// SPDX-License-Identifier: MIT
+// Binned SAH build of the four-wide mesh BVH. Triangle boxes are rounded outward to float once;
+// each node splits its range in two by the SAH (16 bins on every axis) and splits its largest
+// child again until it has four. Below the top levels, subtrees are built by separate threads
+// into their own node arrays and appended in a fixed order, so the tree is the same for any
+// thread count.
+#include "core/bvh/mesh_bvh.h"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <thread>
+
+namespace rt {
+
+namespace {
+
+float roundDown(double x) {
+    float f = static_cast<float>(x);
+    return static_cast<double>(f) > x ? std::nextafter(f, -INFINITY) : f;
+}
+
+float roundUp(double x) {
+    float f = static_cast<float>(x);
+    return static_cast<double>(f) < x ? std::nextafter(f, INFINITY) : f;
+}
+
+/// Four floats: x, y, z and a spare lane, in one SSE register where there is SSE.
+struct F4 {
+#if defined(__SSE2__)
+    __m128 v;
+    static F4 of(float x, float y, float z, float w) { return {_mm_setr_ps(x, y, z, w)}; }
+    friend F4 operator+(F4 a, F4 b) { return {_mm_add_ps(a.v, b.v)}; }
+    friend F4 operator-(F4 a, F4 b) { return {_mm_sub_ps(a.v, b.v)}; }
+    friend F4 operator*(F4 a, F4 b) { return {_mm_mul_ps(a.v, b.v)}; }
+    friend F4 min(F4 a, F4 b) { return {_mm_min_ps(a.v, b.v)}; }
+    friend F4 max(F4 a, F4 b) { return {_mm_max_ps(a.v, b.v)}; }
+    void store(float out[4]) const { _mm_storeu_ps(out, v); }
+    /// Truncated to int, lane by lane.
+    void storeInt(int out[4]) const { _mm_storeu_si128(reinterpret_cast<__m128i *>(out), _mm_cvttps_epi32(v)); }
+#else
+    float v[4];
+    static F4 of(float x, float y, float z, float w) { return {{x, y, z, w}}; }
+    template <typename Op>
+    static F4 zip(F4 a, F4 b, Op op) {
+        return {{op(a.v[0], b.v[0]), op(a.v[1], b.v[1]), op(a.v[2], b.v[2]), op(a.v[3], b.v[3])}};
+    }
+    friend F4 operator+(F4 a, F4 b) { return zip(a, b, [](float x, float y) { return x + y; }); }
+    friend F4 operator-(F4 a, F4 b) { return zip(a, b, [](float x, float y) { return x - y; }); }
+    friend F4 operator*(F4 a, F4 b) { return zip(a, b, [](float x, float y) { return x * y; }); }
+    friend F4 min(F4 a, F4 b) { return zip(a, b, [](float x, float y) { return x < y ? x : y; }); }
+    friend F4 max(F4 a, F4 b) { return zip(a, b, [](float x, float y) { return x > y ? x : y; }); }
+    void store(float out[4]) const { std::copy(v, v + 4, out); }
+    void storeInt(int out[4]) const {
+        for (int i = 0; i < 4; ++i) out[i] = static_cast<int>(v[i]);
+    }
+#endif
+};
+
+struct Box {
+    F4 lo = F4::of(INFINITY, INFINITY, INFINITY, 0), hi = F4::of(-INFINITY, -INFINITY, -INFINITY, 0);
+    void grow(F4 l, F4 h) {
+        lo = min(lo, l);
+        hi = max(hi, h);
+    }
+    void grow(const Box &b) { grow(b.lo, b.hi); }
+    /// Half the surface area; 0 for an empty box.
+    float halfArea() const {
+        float d[4];
+        (hi - lo).store(d);
+        if (!(d[0] >= 0 && d[1] >= 0 && d[2] >= 0)) return 0;
+        return d[0] * d[1] + d[1] * d[2] + d[2] * d[0];
+    }
+    float lower(int axis) const { float f[4]; lo.store(f); return f[axis]; }
+    float upper(int axis) const { float f[4]; hi.store(f); return f[axis]; }
+};
+
+/// A triangle's box; the spare lanes hold 0 and the triangle index (as a normal float: bit 30
+/// set keeps the exponent away from both denormals and infinities).
+struct Item {
+    F4 lo, hi;
+    F4 centroid() const { return lo + hi; }  ///< twice the centre, spare lane 0 + 0
+    uint32_t triangle() const {
+        float f[4];
+        hi.store(f);
+        uint32_t bits;
+        std::memcpy(&bits, &f[3], 4);
+        return bits & ~kTag;
+    }
+    static constexpr uint32_t kTag = 0x40000000u;
+};
+
+/// A range of items with its bounds, and once decided, whether and where it splits.
+struct Range {
+    uint32_t begin = 0, end = 0;
+    Box box, centroids;
+    enum { kUndecided, kLeaf, kSplit } decision = kUndecided;
+    int axis = -1, bin = -1;  ///< SAH split: items whose centroid bin is <= bin go left
+};
+
+}  // namespace
+
+class MeshBvhBuilder {
+  public:
+    static constexpr int kBins = 16;
+    static constexpr size_t kTasksFrom = 4096;
+    static constexpr uint32_t kAllAxesFrom = 64;
+
+    MeshBvhBuilder(const ir::Mesh &mesh, MeshBvh &bvh, int threads) : bvh_(bvh), threads_(threads) {
+        size_t n = mesh.triangles.size();
+        items_.resize(n);
+        parallelFor(n, [&](size_t begin, size_t end) {
+            for (size_t i = begin; i < end; ++i) {
+                const auto &t = mesh.triangles[i];
+                float lo[3], hi[3];
+                for (int a = 0; a < 3; ++a) {
+                    lo[a] = roundDown(std::min({mesh.positions[t[0]][a], mesh.positions[t[1]][a], mesh.positions[t[2]][a]}));
+                    hi[a] = roundUp(std::max({mesh.positions[t[0]][a], mesh.positions[t[1]][a], mesh.positions[t[2]][a]}));
+                }
+                uint32_t bits = static_cast<uint32_t>(i) | Item::kTag;
+                float tag;
+                std::memcpy(&tag, &bits, 4);
+                items_[i] = {F4::of(lo[0], lo[1], lo[2], 0), F4::of(hi[0], hi[1], hi[2], tag)};
+            }
+        });
+    }
+
+    void build() {
+        Range root = measure(0, static_cast<uint32_t>(items_.size()));
+        // The root is always a node, so traversal starts at node 0
+        bvh_.nodes_.reserve(items_.size() >= kTasksFrom ? 32 : items_.size() / 2 + 8);
+        bvh_.nodes_.emplace_back();
+        std::vector<Pending> pending;
+        // Subtrees below the second level are separate tasks whatever the thread count, so the
+        // node layout is the same too
+        int taskDepth = items_.size() >= kTasksFrom ? 2 : -1;
+        int depth = fillNode(0, root, bvh_.nodes_, 1, taskDepth, &pending);
+        bvh_.depth_ = std::max(bvh_.depth_, depth);
+        runPending(pending);
+        bvh_.order_.resize(items_.size());
+        for (size_t i = 0; i < items_.size(); ++i) bvh_.order_[i] = items_[i].triangle();
+    }
+
+  private:
+    /// A subtree left for a worker: its range and the slot that will point to it.
+    struct Pending {
+        Range range;
+        uint32_t node;
+        int slot;
+        int depth;
+        std::vector<MeshBvh::Node> nodes;
+        int maxDepth = 0;
+    };
+
+    template <typename F>
+    void parallelFor(size_t n, F &&f) {
+        int t = n >= 65536 ? threads_ : 1;
+        if (t <= 1) return f(size_t{0}, n);
+        std::vector<std::thread> workers;
+        size_t chunk = (n + t - 1) / t;
+        for (int i = 1; i < t; ++i)
+            workers.emplace_back([&, i] { f(std::min(n, i * chunk), std::min(n, (i + 1) * chunk)); });
+        f(0, std::min(n, chunk));
+        for (auto &w : workers) w.join();
+    }
+
+    Range measure(uint32_t begin, uint32_t end) const {
+        Range r;
+        r.begin = begin;
+        r.end = end;
+        for (uint32_t i = begin; i < end; ++i) {
+            r.box.grow(items_[i].lo, items_[i].hi);
+            F4 c = items_[i].centroid();
+            r.centroids.grow(c, c);
+        }
+        return r;
+    }
+
+    /// Decides whether r becomes a leaf or splits, and on which bin plane.
+    void decide(Range &r, int depth) const {
+        uint32_t n = r.end - r.begin;
+        if (n <= 1) {
+            r.decision = Range::kLeaf;
+            return;
+        }
+        int bestAxis = -1, bestSplit = -1;
+        float bestCost = INFINITY;
+        float lo[4], hi[4], scale[4] = {0, 0, 0, 0};
+        r.centroids.lo.store(lo);
+        r.centroids.hi.store(hi);
+        // Past the depth bound, split by count only: the depth then grows as log4 of the items
+        bool sah = depth < MeshBvh::kMaxDepth - 16;
+        // Small ranges, where the fixed cost of the bins dominates, bin on their longest axis only
+        int longest = 0;
+        for (int a = 1; a < 3; ++a)
+            if (hi[a] - lo[a] > hi[longest] - lo[longest]) longest = a;
+        for (int a = 0; a < 3; ++a) {
+            float extent = hi[a] - lo[a];
+            if (sah && extent > 0 && (n >= kAllAxesFrom || a == longest)) scale[a] = kBins / extent * (1 - 1e-6f);
+        }
+        if (scale[0] > 0 || scale[1] > 0 || scale[2] > 0) {
+            std::array<std::array<Box, kBins>, 3> bins;
+            std::array<std::array<uint32_t, kBins>, 3> counts{};
+            const F4 origin = r.centroids.lo, scale4 = F4::of(scale[0], scale[1], scale[2], 0);
+            const F4 zero = F4::of(0, 0, 0, 0), last = F4::of(kBins - 1, kBins - 1, kBins - 1, 0);
+            for (uint32_t i = r.begin; i < r.end; ++i) {
+                const Item &it = items_[i];
+                int b[4];
+                min(max((it.centroid() - origin) * scale4, zero), last).storeInt(b);
+                for (int a = 0; a < 3; ++a) {
+                    ++counts[a][b[a]];
+                    bins[a][b[a]].grow(it.lo, it.hi);
+                }
+            }
+            for (int a = 0; a < 3; ++a) {
+                if (scale[a] == 0) continue;
+                std::array<float, kBins> rightArea{};
+                std::array<uint32_t, kBins> rightCount{};
+                Box acc;
+                uint32_t cnt = 0;
+                for (int k = kBins - 1; k > 0; --k) {
+                    acc.grow(bins[a][k]);
+                    cnt += counts[a][k];
+                    rightArea[k] = acc.halfArea();
+                    rightCount[k] = cnt;
+                }
+                acc = Box();
+                cnt = 0;
+                for (int k = 0; k < kBins - 1; ++k) {
+                    acc.grow(bins[a][k]);
+                    cnt += counts[a][k];
+                    if (cnt == 0 || rightCount[k + 1] == 0) continue;
+                    float cost = cnt * acc.halfArea() + rightCount[k + 1] * rightArea[k + 1];
+                    if (cost < bestCost) {
+                        bestCost = cost;
+                        bestAxis = a;
+                        bestSplit = k;
+                    }
+                }
+            }
+        }
+        // Relative cost: a node visit (a cache miss, mostly) costs about one triangle test
+        float area = r.box.halfArea();
+        float splitCost = area > 0 && bestAxis >= 0 ? 1.0f + bestCost / area : INFINITY;
+        if (n <= static_cast<uint32_t>(MeshBvh::kMaxLeafTriangles) && splitCost >= n) {
+            r.decision = Range::kLeaf;
+            return;
+        }
+        r.decision = Range::kSplit;
+        r.axis = bestAxis;
+        r.bin = bestSplit;
+    }
+
+    /// Splits r as decided into two measured ranges (by the SAH plane, or by count where all
+    /// centroids coincide or past the depth bound).
+    void split(const Range &r, Range *left, Range *right) {
+        if (r.axis < 0) {
+            uint32_t mid = r.begin + (r.end - r.begin) / 2;
+            *left = measure(r.begin, mid);
+            *right = measure(mid, r.end);
+            return;
+        }
+        const int axis = r.axis;
+        const float lo = r.centroids.lower(axis);
+        const float scale = kBins / (r.centroids.upper(axis) - lo) * (1 - 1e-6f);
+        auto goesLeft = [&](const Item &it) {
+            float c[4];
+            it.centroid().store(c);
+            // As the binning computes it: clamp, then truncate
+            float f = std::min(std::max((c[axis] - lo) * scale, 0.0f), static_cast<float>(kBins - 1));
+            return static_cast<int>(f) <= r.bin;
+        };
+        // Partition and measure both sides in the same pass
+        Range l, rt;
+        uint32_t i = r.begin, j = r.end;
+        while (true) {
+            while (i < j && goesLeft(items_[i])) {
+                l.box.grow(items_[i].lo, items_[i].hi);
+                F4 c = items_[i].centroid();
+                l.centroids.grow(c, c);
+                ++i;
+            }
+            while (i < j && !goesLeft(items_[j - 1])) {
+                rt.box.grow(items_[j - 1].lo, items_[j - 1].hi);
+                F4 c = items_[j - 1].centroid();
+                rt.centroids.grow(c, c);
+                --j;
+            }
+            if (i >= j) break;
+            std::swap(items_[i], items_[j - 1]);
+        }
+        l.begin = r.begin;
+        l.end = rt.begin = i;
+        rt.end = r.end;
+        *left = l;
+        *right = rt;
+    }
+
+    /// Fills node `index` of `nodes` with up to four children made from r (already measured),
+    /// recursing into interior children; returns the depth reached.
+    int fillNode(uint32_t index, Range r, std::vector<MeshBvh::Node> &nodes, int depth, int taskDepth,
+                 std::vector<Pending> *pending) {
+        if (r.decision == Range::kUndecided) decide(r, depth);
+        std::array<Range, 4> kids;
+        int count = 1;
+        kids[0] = r;
+        while (count < 4) {
+            int best = -1;
+            float bestArea = -1;
+            for (int i = 0; i < count; ++i)
+                if (kids[i].decision == Range::kSplit && kids[i].box.halfArea() > bestArea) {
+                    best = i;
+                    bestArea = kids[i].box.halfArea();
+                }
+            if (best < 0) break;
+            Range left, right;
+            split(kids[best], &left, &right);
+            decide(left, depth);
+            decide(right, depth);
+            // Keep the children in item order, so the layout follows the partition
+            for (int i = count; i > best + 1; --i) kids[i] = kids[i - 1];
+            kids[best] = left;
+            kids[best + 1] = right;
+            ++count;
+        }
+        MeshBvh::Node node;
+        for (int c = 0; c < 4; ++c) {
+            for (int a = 0; a < 3; ++a) {
+                node.lo[a][c] = c < count ? kids[c].box.lower(a) : INFINITY;
+                node.hi[a][c] = c < count ? kids[c].box.upper(a) : -INFINITY;
+            }
+            node.child[c] = MeshBvh::kEmpty;
+        }
+        int reached = depth;
+        for (int c = 0; c < count; ++c) {
+            const Range &k = kids[c];
+            if (k.decision == Range::kLeaf) {
+                node.child[c] = MeshBvh::kLeaf | k.begin << 2 | (k.end - k.begin - 1);
+            } else if (depth == taskDepth) {
+                pending->push_back({k, index, c, depth + 1, {}, 0});
+            } else {
+                uint32_t childIndex = static_cast<uint32_t>(nodes.size());
+                nodes.emplace_back();
+                node.child[c] = childIndex;
+                reached = std::max(reached, fillNode(childIndex, k, nodes, depth + 1, taskDepth, pending));
+            }
+        }
+        nodes[index] = node;
+        return reached;
+    }
+
+    void runPending(std::vector<Pending> &pending) {
+        std::atomic<size_t> next{0};
+        auto work = [&] {
+            for (size_t i; (i = next++) < pending.size();) {
+                Pending &p = pending[i];
+                p.nodes.reserve((p.range.end - p.range.begin) / 2 + 8);
+                p.nodes.emplace_back();
+                p.maxDepth = fillNode(0, p.range, p.nodes, p.depth, -1, nullptr);
+            }
+        };
+        std::vector<std::thread> workers;
+        for (int i = 1; i < threads_ && static_cast<size_t>(i) < pending.size(); ++i) workers.emplace_back(work);
+        work();
+        for (auto &w : workers) w.join();
+        auto &nodes = bvh_.nodes_;
+        size_t total = nodes.size();
+        for (const Pending &p : pending) total += p.nodes.size();
+        nodes.reserve(total);
+        for (Pending &p : pending) {
+            uint32_t base = static_cast<uint32_t>(nodes.size());
+            for (auto &n : p.nodes)
+                for (auto &c : n.child)
+                    if (c != MeshBvh::kEmpty && !(c & MeshBvh::kLeaf)) c += base;
+            nodes.insert(nodes.end(), p.nodes.begin(), p.nodes.end());
+            nodes[p.node].child[p.slot] = base;
+            bvh_.depth_ = std::max(bvh_.depth_, p.maxDepth);
+            std::vector<MeshBvh::Node>().swap(p.nodes);
+        }
+    }
+
+    MeshBvh &bvh_;
+    int threads_;
+    std::vector<Item> items_;
+};
+
+MeshBvh::MeshBvh(const ir::Mesh &mesh, int threads) {
+    if (mesh.triangles.size() >= kMaxTriangles)
+        throw std::length_error("a mesh BVH indexes at most 2^29 triangles");
+    if (mesh.triangles.empty()) return;
+    if (threads <= 0) threads = std::max(1u, std::thread::hardware_concurrency());
+    MeshBvhBuilder builder(mesh, *this, threads);
+    builder.build();
+    nodes_.shrink_to_fit();
+}
+
+}  // namespace rt

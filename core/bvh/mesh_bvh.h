@@ -1,0 +1,191 @@
+// SPDX-License-Identifier: MIT
+// The BVH of a triangle mesh: four children per node with their boxes stored as floats rounded
+// outward (so a box only ever grows, and no hit is lost), tested four at a time in double
+// precision with the same slab test as the generic Bvh; leaves of up to four triangles; binned
+// SAH build, parallel below the top levels and identical for any number of threads.
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "core/ir/mesh.h"
+#include "core/math/float_util.h"
+#include "core/math/ray.h"
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace rt {
+
+class MeshBvh {
+  public:
+    static constexpr int kWidth = 4;
+    static constexpr int kMaxLeafTriangles = 4;
+    /// Triangles a mesh BVH can index (29 bits of a child reference).
+    static constexpr size_t kMaxTriangles = size_t{1} << 29;
+
+    struct alignas(64) Node {
+        float lo[3][kWidth];  ///< per axis, the lower bound of each child
+        float hi[3][kWidth];
+        /// kLeaf | first << 2 | (count - 1), an interior node's index, or kEmpty
+        uint32_t child[kWidth];
+        // 16 bytes of padding: a node is two cache lines
+    };
+    static_assert(sizeof(Node) == 128);
+    static constexpr uint32_t kLeaf = 0x80000000u;
+    static constexpr uint32_t kEmpty = 0xffffffffu;
+
+    MeshBvh() = default;
+    /// threads: 0 for std::thread::hardware_concurrency(). The tree does not depend on it.
+    /// Throws std::length_error beyond kMaxTriangles.
+    explicit MeshBvh(const ir::Mesh &mesh, int threads = 0);
+
+    const std::vector<Node> &nodes() const { return nodes_; }
+    /// Triangle indices in leaf order.
+    const std::vector<uint32_t> &triangleOrder() const { return order_; }
+    size_t bytes() const { return nodes_.capacity() * sizeof(Node) + order_.capacity() * sizeof(uint32_t); }
+    int depth() const { return depth_; }
+
+    /// Visits the triangles whose leaves the ray reaches within [tMin, *tMax], nearest boxes
+    /// first. visit(triangle, tMax) may lower *tMax and returns true to stop.
+    template <typename Visit>
+    void traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit) const;
+
+  private:
+    /// Depth bound of the build; with at most three pushes a level it sizes the traversal stack.
+    static constexpr int kMaxDepth = 64;
+    static constexpr int kStackSize = 3 * kMaxDepth + 4;
+    friend class MeshBvhBuilder;
+
+    std::vector<Node> nodes_;
+    std::vector<uint32_t> order_;
+    int depth_ = 0;
+};
+
+template <typename Visit>
+void MeshBvh::traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit) const {
+    if (nodes_.empty()) return;
+    const double inv[3] = {1 / ray.d.x, 1 / ray.d.y, 1 / ray.d.z};
+    // The near plane of each axis: hi for a negative direction
+    const int nearHi[3] = {inv[0] < 0, inv[1] < 0, inv[2] < 0};
+    // Far distances grow by their rounding error away from zero, as in Bvh::hitNode
+    constexpr double kSlop = 2 * gamma(3);
+    struct Entry {
+        uint32_t ref;
+        double tNear;
+    };
+    Entry stack[kStackSize];
+    int top = 0;
+    uint32_t current = 0;  // the root is always a node
+#if defined(__SSE2__)
+    const __m128d o[3] = {_mm_set1_pd(ray.o.x), _mm_set1_pd(ray.o.y), _mm_set1_pd(ray.o.z)};
+    const __m128d iv[3] = {_mm_set1_pd(inv[0]), _mm_set1_pd(inv[1]), _mm_set1_pd(inv[2])};
+    const __m128d slop = _mm_set1_pd(kSlop);
+    const __m128d absMask = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
+#endif
+    auto push = [&](uint32_t ref, double tNear) {
+        stack[top++] = {ref, tNear};
+#if defined(__SSE2__)
+        if (!(ref & kLeaf)) {
+            const char *p = reinterpret_cast<const char *>(&nodes_[ref]);
+            _mm_prefetch(p, _MM_HINT_T0);
+            _mm_prefetch(p + 64, _MM_HINT_T0);
+        }
+#endif
+    };
+    while (true) {
+        if (current & kLeaf) {
+            uint32_t first = (current & ~kLeaf) >> 2, count = (current & 3) + 1;
+            for (uint32_t i = 0; i < count; ++i)
+                if (visit(order_[first + i], tMax)) return;
+        } else {
+        const Node &n = nodes_[current];
+        alignas(16) double tn[4];
+        int mask;
+#if defined(__SSE2__)
+        __m128d t0a = _mm_set1_pd(tMin), t0b = t0a;
+        // The far distance is the nearest far plane grown by its rounding error, then capped at
+        // tMax: growing is monotonic, so growing the minimum equals the minimum of the grown
+        __m128d t1a = _mm_set1_pd(kInfinity), t1b = t1a;
+        for (int a = 0; a < 3; ++a) {
+            __m128 nearF = _mm_load_ps(nearHi[a] ? n.hi[a] : n.lo[a]);
+            __m128 farF = _mm_load_ps(nearHi[a] ? n.lo[a] : n.hi[a]);
+            __m128d na = _mm_mul_pd(_mm_sub_pd(_mm_cvtps_pd(nearF), o[a]), iv[a]);
+            __m128d nb = _mm_mul_pd(_mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(nearF, nearF)), o[a]), iv[a]);
+            __m128d fa = _mm_mul_pd(_mm_sub_pd(_mm_cvtps_pd(farF), o[a]), iv[a]);
+            __m128d fb = _mm_mul_pd(_mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(farF, farF)), o[a]), iv[a]);
+            // maxpd/minpd return their second operand when either is NaN: a NaN distance
+            // (origin on the plane of a flat direction) leaves the interval as it was
+            t0a = _mm_max_pd(na, t0a);
+            t0b = _mm_max_pd(nb, t0b);
+            t1a = _mm_min_pd(fa, t1a);
+            t1b = _mm_min_pd(fb, t1b);
+        }
+        const __m128d tMaxV = _mm_set1_pd(*tMax);
+        t1a = _mm_min_pd(_mm_add_pd(t1a, _mm_mul_pd(slop, _mm_and_pd(t1a, absMask))), tMaxV);
+        t1b = _mm_min_pd(_mm_add_pd(t1b, _mm_mul_pd(slop, _mm_and_pd(t1b, absMask))), tMaxV);
+        mask = _mm_movemask_pd(_mm_cmple_pd(t0a, t1a)) | _mm_movemask_pd(_mm_cmple_pd(t0b, t1b)) << 2;
+        // Without the empty slots (an inverted infinite box still meets a ray with tMax = inf)
+        mask &= ~_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(
+            _mm_load_si128(reinterpret_cast<const __m128i *>(n.child)), _mm_set1_epi32(-1))));
+        _mm_store_pd(tn, t0a);
+        _mm_store_pd(tn + 2, t0b);
+#else
+        mask = 0;
+        for (int c = 0; c < 4; ++c) {
+            double t0 = tMin, t1 = *tMax;
+            for (int a = 0; a < 3; ++a) {
+                double nearB = nearHi[a] ? n.hi[a][c] : n.lo[a][c];
+                double farB = nearHi[a] ? n.lo[a][c] : n.hi[a][c];
+                double tNear = (nearB - ray.o[a]) * inv[a], tFar = (farB - ray.o[a]) * inv[a];
+                tFar += kSlop * std::abs(tFar);
+                t0 = tNear > t0 ? tNear : t0;
+                t1 = tFar < t1 ? tFar : t1;
+            }
+            tn[c] = t0;
+            if (t0 <= t1 && n.child[c] != kEmpty) mask |= 1 << c;
+        }
+#endif
+        // Go on with the nearest child met and push the others, farthest first
+        if (mask != 0) {
+            int c0 = __builtin_ctz(mask);
+            mask &= mask - 1;
+            if (mask == 0) {
+                current = n.child[c0];
+                continue;
+            }
+            int c1 = __builtin_ctz(mask);
+            mask &= mask - 1;
+            if (mask == 0) {
+                if (tn[c1] < tn[c0]) std::swap(c0, c1);
+                push(n.child[c1], tn[c1]);
+                current = n.child[c0];
+                continue;
+            }
+            Entry hit[4] = {{n.child[c0], tn[c0]}, {n.child[c1], tn[c1]}};
+            int k = 2;
+            for (; mask != 0; mask &= mask - 1) hit[k++] = {n.child[__builtin_ctz(mask)], tn[__builtin_ctz(mask)]};
+            // Farthest first (insertion sort of at most four)
+            for (int i = 1; i < k; ++i) {
+                Entry x = hit[i];
+                int j = i;
+                for (; j > 0 && hit[j - 1].tNear < x.tNear; --j) hit[j] = hit[j - 1];
+                hit[j] = x;
+            }
+            for (int j = 0; j < k - 1; ++j) push(hit[j].ref, hit[j].tNear);
+            current = hit[k - 1].ref;
+            continue;
+        }
+        }
+        // Next: the nearest pushed entry still within reach
+        do {
+            if (top == 0) return;
+            --top;
+        } while (stack[top].tNear > *tMax);
+        current = stack[top].ref;
+    }
+}
+
+}  // namespace rt

@@ -1,0 +1,205 @@
+// SPDX-License-Identifier: MIT
+// The four-wide mesh BVH: the closest hit (t and triangle) and every crossing of the line are
+// those of a brute-force loop over all triangles, on meshes with duplicate, coplanar
+// overlapping and degenerate triangles, near the origin and far from it; the float boxes hold
+// their triangles' double vertices; the tree is the same for 1, 2 and 5 build threads.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/bvh/mesh_bvh.h"
+#include "core/geometry/triangle_mesh.h"
+#include "core/math/rng.h"
+#include "support/mesh_builder.h"
+
+namespace rt {
+namespace {
+
+/// An icosphere plus trouble: every tenth triangle duplicated, coplanar overlapping triangles
+/// (the same plane, shifted within it), slivers with a repeated index, and zero-area triangles
+/// with three distinct collinear vertices; then scaled and moved.
+std::shared_ptr<ir::Mesh> troubleMesh(int levels, double scale, const Vec3 &offset) {
+    auto m = test::icosphere(levels, 1);
+    size_t n = m->triangles.size();
+    for (size_t i = 0; i < n; i += 10) m->triangles.push_back(m->triangles[i]);
+    for (size_t i = 5; i < n; i += 37) {
+        auto t = m->triangles[i];
+        Vec3 shift = (m->positions[t[1]] - m->positions[t[0]]) * 0.25;
+        uint32_t b = static_cast<uint32_t>(m->positions.size());
+        for (int k = 0; k < 3; ++k) m->positions.push_back(m->positions[t[k]] + shift);
+        m->triangles.push_back({b, b + 1, b + 2});
+    }
+    for (size_t i = 3; i < n; i += 53) {
+        auto t = m->triangles[i];
+        m->triangles.push_back({t[0], t[1], t[1]});
+        uint32_t b = static_cast<uint32_t>(m->positions.size());
+        Vec3 a = m->positions[t[0]], c = m->positions[t[2]];
+        m->positions.push_back(a);
+        m->positions.push_back((a + c) * 0.5);
+        m->positions.push_back(c);
+        m->triangles.push_back({b, b + 1, b + 2});
+    }
+    for (auto &p : m->positions) p = p * scale + offset;
+    return m;
+}
+
+struct Expected {
+    bool found = false;
+    double t = kInfinity;
+    uint32_t triangle = 0;
+};
+
+/// The closest hit by brute force, with TriangleMesh::closest's rules: tMin < t < tMax, t
+/// beyond its own rounding error, and of equal t the lowest triangle.
+Expected bruteClosest(const TriangleMesh &mesh, const Ray &r, double tMin, double tMax) {
+    Expected e;
+    for (uint32_t tri = 0; tri < mesh.triangleCount(); ++tri) {
+        TriangleMesh::Hit h;
+        if (!mesh.intersectTriangle(r, tri, &h) || !(h.t > tMin) || !(h.t < tMax) || h.t <= h.tError) continue;
+        if (h.t < e.t) {
+            e = {true, h.t, tri};
+        }
+    }
+    return e;
+}
+
+/// Rays from around the mesh at random points of it, at its vertices (ties between the
+/// triangles of a fan, and between duplicates) and at random directions.
+std::vector<Ray> testRays(const ir::Mesh &m, double scale, const Vec3 &offset, int count) {
+    Rng rng(5);
+    std::vector<Ray> rays;
+    for (int i = 0; i < count; ++i) {
+        Vec3 o = Vec3(rng.uniform() * 6 - 3, rng.uniform() * 6 - 3, rng.uniform() * 6 - 3) * scale + offset;
+        Vec3 target;
+        switch (i % 3) {
+        case 0: target = m.positions[static_cast<size_t>(rng.uniform() * m.positions.size())]; break;
+        case 1: target = Vec3(rng.uniform() * 2 - 1, rng.uniform() * 2 - 1, rng.uniform() * 2 - 1) * scale + offset; break;
+        default: target = o + Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5); break;
+        }
+        if (target == o) continue;
+        rays.emplace_back(o, normalize(target - o));
+    }
+    return rays;
+}
+
+void expectClosestMatchesBruteForce(double scale, const Vec3 &offset) {
+    auto m = troubleMesh(3, scale, offset);
+    TriangleMesh mesh(m);
+    int hits = 0;
+    for (const Ray &r : testRays(*m, scale, offset, 1500)) {
+        for (double tMin : {0.0, -kInfinity}) {
+            Expected e = bruteClosest(mesh, r, tMin, kInfinity);
+            TriangleMesh::Hit hit;
+            bool found = mesh.closest(r, tMin, kInfinity, &hit);
+            ASSERT_EQ(found, e.found);
+            if (found) {
+                ASSERT_EQ(hit.t, e.t);
+                ASSERT_EQ(hit.triangle, e.triangle);
+                ++hits;
+                // A bounded query ending at the hit finds nothing nearer
+                TriangleMesh::Hit nearer;
+                EXPECT_EQ(mesh.closest(r, tMin, e.t, &nearer), false);
+            }
+        }
+    }
+    EXPECT_GT(hits, 1000);
+}
+
+TEST(MeshBvh, ClosestHitMatchesBruteForceWithDuplicateCoplanarAndDegenerateTriangles) {
+    expectClosestMatchesBruteForce(1, Vec3(0));
+}
+
+TEST(MeshBvh, ClosestHitMatchesBruteForceFarFromTheOriginAtEveryScale) {
+    // Float boxes round outward: no hit is lost where a float's spacing is coarse
+    expectClosestMatchesBruteForce(1e-6, Vec3(1e6, -3e5, 2e6));
+    expectClosestMatchesBruteForce(1e6, Vec3(3e9, 0, -1e9));
+    expectClosestMatchesBruteForce(1e-6, Vec3(0.5e-6, 0, 0));
+}
+
+TEST(MeshBvh, AllHitsAreEveryCrossingOfTheLine) {
+    auto m = troubleMesh(3, 1, Vec3(0));
+    TriangleMesh mesh(m);
+    for (const Ray &r : testRays(*m, 1, Vec3(0), 600)) {
+        std::vector<std::pair<double, uint32_t>> brute, bvh;
+        for (uint32_t tri = 0; tri < mesh.triangleCount(); ++tri) {
+            TriangleMesh::Hit h;
+            if (mesh.intersectTriangle(r, tri, &h)) brute.emplace_back(h.t, tri);
+        }
+        std::vector<TriangleMesh::Hit> hits;
+        mesh.allHits(r, hits);
+        for (const auto &h : hits) bvh.emplace_back(h.t, h.triangle);
+        std::sort(brute.begin(), brute.end());
+        std::sort(bvh.begin(), bvh.end());
+        ASSERT_EQ(bvh, brute);
+    }
+}
+
+/// Every triangle once in leaf order, leaves of 1..4 triangles, and each leaf's float box holds
+/// its triangles' double vertices.
+void expectWellFormed(const MeshBvh &bvh, const ir::Mesh &m) {
+    std::vector<int> seen(m.triangles.size(), 0);
+    for (uint32_t t : bvh.triangleOrder()) ++seen.at(t);
+    EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int s) { return s == 1; }));
+    for (const auto &node : bvh.nodes())
+        for (int c = 0; c < MeshBvh::kWidth; ++c) {
+            uint32_t ref = node.child[c];
+            if (ref == MeshBvh::kEmpty || !(ref & MeshBvh::kLeaf)) continue;
+            uint32_t first = (ref & ~MeshBvh::kLeaf) >> 2, count = (ref & 3) + 1;
+            ASSERT_LE(first + count, bvh.triangleOrder().size());
+            for (uint32_t i = first; i < first + count; ++i)
+                for (uint32_t v : m.triangles[bvh.triangleOrder()[i]])
+                    for (int a = 0; a < 3; ++a) {
+                        ASSERT_LE(node.lo[a][c], m.positions[v][a]);
+                        ASSERT_GE(node.hi[a][c], m.positions[v][a]);
+                    }
+        }
+}
+
+TEST(MeshBvh, SameTreeForAnyNumberOfBuildThreads) {
+    // Large enough for the parallel subtrees (more than 4096 triangles)
+    auto m = troubleMesh(5, 1e6, Vec3(1e7, 0, 0));
+    MeshBvh one(*m, 1), two(*m, 2), five(*m, 5);
+    expectWellFormed(one, *m);
+    for (const MeshBvh *other : {&two, &five}) {
+        ASSERT_EQ(other->triangleOrder(), one.triangleOrder());
+        ASSERT_EQ(other->nodes().size(), one.nodes().size());
+        EXPECT_EQ(other->depth(), one.depth());
+        for (size_t i = 0; i < one.nodes().size(); ++i) {
+            const auto &a = one.nodes()[i], &b = other->nodes()[i];
+            ASSERT_TRUE(std::equal(&a.lo[0][0], &a.lo[0][0] + 12, &b.lo[0][0]));
+            ASSERT_TRUE(std::equal(&a.hi[0][0], &a.hi[0][0] + 12, &b.hi[0][0]));
+            ASSERT_TRUE(std::equal(a.child, a.child + 4, b.child));
+        }
+    }
+}
+
+TEST(MeshBvh, SmallEmptyAndCoincidentMeshes) {
+    ir::Mesh empty;
+    MeshBvh none(empty, 2);
+    double t = kInfinity;
+    int visits = 0;
+    none.traverse(Ray(Vec3(0), Vec3(1, 0, 0)), 0, &t, [&](uint32_t, double *) { return ++visits, false; });
+    EXPECT_EQ(visits, 0);
+    // 40 copies of one triangle: all centroids coincide, split by count into leaves of <= 4
+    ir::Mesh same;
+    same.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+    same.triangles.assign(40, {0, 1, 2});
+    MeshBvh coincident(same, 1);
+    expectWellFormed(coincident, same);
+    std::vector<uint32_t> visited;
+    coincident.traverse(Ray(Vec3(0.2, 0.2, 1), Vec3(0, 0, -1)), 0, &t, [&](uint32_t tri, double *) {
+        visited.push_back(tri);
+        return false;
+    });
+    EXPECT_EQ(visited.size(), 40u);
+    // The lowest index wins the tie among the copies
+    TriangleMesh mesh(std::make_shared<ir::Mesh>(same));
+    TriangleMesh::Hit hit;
+    ASSERT_TRUE(mesh.closest(Ray(Vec3(0.2, 0.2, 1), Vec3(0, 0, -1)), 0, kInfinity, &hit));
+    EXPECT_EQ(hit.triangle, 0u);
+    EXPECT_EQ(hit.t, 1);
+}
+
+}  // namespace
+}  // namespace rt
