@@ -41,11 +41,11 @@ std::string formatCount(int64_t n) {
     return buf;
 }
 
-/// "4" for a uniform render, "1.31 (adaptive)" for an adaptive one.
+/// "4" for a uniform render, "adaptive 1.31" for an adaptive one.
 std::string sppText(const RenderResult &r) {
     if (r.pixelsBySamples.empty()) return std::to_string(r.samples / (int64_t(r.image.width()) * r.image.height()));
     char buf[48];
-    std::snprintf(buf, sizeof buf, "%.2f (adaptive)", meanSamplesPerPixel(r));
+    std::snprintf(buf, sizeof buf, "adaptive %.2f", meanSamplesPerPixel(r));
     return buf;
 }
 
@@ -107,12 +107,12 @@ int runRender(const RenderArgs &a) {
                      triangles.c_str(), r.threads, r.seconds);
         std::fprintf(stderr,
                      "  rays: %s total (%s camera, %s shadow, %s reflection, %s refraction, "
-                     "%s transmission, %s internal reflection, %s distributed), %.2f Mrays/s\n",
+                     "%s transmission, %s internal reflection, %s distributed), %.2f Mrays/s, %.3f s CPU\n",
                      formatCount(s.totalRays()).c_str(), formatCount(s.camera).c_str(),
                      formatCount(s.shadow).c_str(), formatCount(s.reflection).c_str(),
                      formatCount(s.refraction).c_str(), formatCount(s.transmission).c_str(),
                      formatCount(s.internalReflection).c_str(), formatCount(s.distributed).c_str(),
-                     s.totalRays() / std::max(r.seconds, 1e-9) / 1e6);
+                     s.totalRays() / std::max(r.seconds, 1e-9) / 1e6, r.cpuSeconds);
         std::fprintf(stderr, "  csg: %s span merges, %s pruned subtrees; non-finite pixels: %lld\n",
                      formatCount(s.spanOps).c_str(), formatCount(s.prunedSubtrees).c_str(),
                      static_cast<long long>(s.nonFinite));
@@ -145,7 +145,7 @@ void addRenderCommand(CLI::App &app, std::function<int()> &action) {
                                   0.0, 1.0);
     auto *aaTolerance = addNumber(*cmd, "--aa-tolerance", args->aaTolerance,
                                   "Adaptive antialiasing: stop refining a pixel when the standard "
-                                  "error of its mean (display units) is at most this",
+                                  "error of its mean (display units) is below this (0: always --aa-max)",
                                   0.0, 1.0);
     auto *noAa = cmd->add_flag("--no-aa", args->noAa,
                                "No adaptive antialiasing: 1 sample per pixel (4 with Monte Carlo "

@@ -131,7 +131,7 @@ std::string describePlan(const RenderScene &scene, const ir::ImportStats &import
     if (render.adaptive)
         os << "adaptive, each pixel's centre, then 4, 16 ... up to " << render.adaptiveMax
            << " stratified samples where a neighbour differs by more than " << render.adaptiveThreshold
-           << " or saw another primitive, until the standard error is at most "
+           << " or saw another primitive, until the standard error is below "
            << render.adaptiveTolerance;
     else
         os << render.samplesPerPixel << " per pixel";

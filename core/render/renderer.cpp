@@ -3,11 +3,13 @@
 #include "core/render/renderer.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
 #include <cstdio>
+#include <ctime>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -169,13 +171,15 @@ Rgb displayValue(const Rgb &c) {
     return d;
 }
 
-/// Pass 1: every pixel's centre. Returns the pixels to refine, in index order.
+/// Pass 1: every pixel's centre. Marks the pixels to refine with 1 in result.pixelLevels and
+/// returns them in index order. Per pixel it keeps 8 bytes (the pages a pass touches are much
+/// of its cost): a 32-bit hash of the primitive hit, the display value in 1/255 steps, the mark.
 std::vector<int> adaptiveFirstPass(const Camera &camera, const WhittedIntegrator &integrator,
                                    const RenderOptions &opts, int threads, RenderResult &result) {
     Tiles tiles(opts);
     int w = opts.width, h = opts.height;
-    std::vector<const LeafShape *> hits(size_t(w) * h);
-    std::vector<Rgb> display(size_t(w) * h);
+    std::vector<uint32_t> hits(size_t(w) * h);
+    std::vector<std::array<uint8_t, 3>> display(size_t(w) * h);
     runJobs(threads, tiles.count, opts, 0, 0.5, result.stats, [&](int tile, TraceContext &ctx) {
         tiles.forPixels(opts, tile, [&](int x, int y) {
             size_t pixel = size_t(y) * w + x;
@@ -187,16 +191,20 @@ std::vector<int> adaptiveFirstPass(const Camera &camera, const WhittedIntegrator
             Rgb c = clampSample(integrator.li(camera.generateRay(x + 0.5, y + 0.5), ctx), opts);
             result.image.set(x, y, c);
             result.ties.set(x, y, Rgb(ctx.tie ? 1.0 : 0.0));
-            hits[pixel] = ctx.firstHit;
-            display[pixel] = displayValue(c);
+            auto address = reinterpret_cast<uintptr_t>(ctx.firstHit);
+            hits[pixel] = static_cast<uint32_t>(mixBits(address));
+            Rgb d = displayValue(c);
+            for (int ch = 0; ch < 3; ++ch) display[pixel][ch] = static_cast<uint8_t>(std::lround(d[ch] * 255));
         });
     });
     // Mark both pixels of each neighbouring pair that differ in colour or primitive
-    std::vector<uint8_t> marked(size_t(w) * h, 0);
+    std::vector<uint8_t> &marked = result.pixelLevels;
+    marked.assign(size_t(w) * h, 0);
+    int threshold = static_cast<int>(std::floor(opts.adaptiveThreshold * 255));
     auto differ = [&](size_t a, size_t b) {
         if (hits[a] != hits[b]) return true;
         for (int ch = 0; ch < 3; ++ch)
-            if (std::abs(display[a][ch] - display[b][ch]) > opts.adaptiveThreshold) return true;
+            if (std::abs(int(display[a][ch]) - int(display[b][ch])) > threshold) return true;
         return false;
     };
     auto pair = [&](size_t a, size_t b) {
@@ -264,7 +272,6 @@ void renderAdaptive(const Camera &camera, const WhittedIntegrator &integrator, c
     int side = 1 << levels;
     constexpr int kChunk = 32;
     int chunks = static_cast<int>((refine.size() + kChunk - 1) / kChunk);
-    std::vector<int8_t> pixelLevel(refine.size(), 0);
     runJobs(threads, chunks, opts, 0.5, 1, result.stats, [&](int chunk, TraceContext &ctx) {
         std::vector<Rgb> values(opts.adaptiveMax), display(opts.adaptiveMax);
         std::vector<int> cells(opts.adaptiveMax);
@@ -291,7 +298,7 @@ void renderAdaptive(const Camera &camera, const WhittedIntegrator &integrator, c
                     display[n] = displayValue(c);
                     cells[n] = cell;
                 }
-            } while (k < levels && adaptiveError(display, k) > opts.adaptiveTolerance);
+            } while (k < levels && adaptiveError(display, k) >= opts.adaptiveTolerance);
             // Sum in cell order, as uniform sampling does
             std::fill(byCell.begin(), byCell.end(), -1);
             for (int j = 0; j < n; ++j) byCell[cells[j]] = j;
@@ -300,13 +307,14 @@ void renderAdaptive(const Camera &camera, const WhittedIntegrator &integrator, c
                 if (j >= 0) sum += values[j];
             result.image.set(x, y, sum * (1.0 / n));
             result.ties.set(x, y, Rgb(double(tied) / n));
-            pixelLevel[i] = static_cast<int8_t>(k);
+            result.pixelLevels[pixel] = static_cast<uint8_t>(k);
         }
     });
     result.pixelsBySamples.assign(levels + 1, 0);
     result.pixelsBySamples[0] = int64_t(opts.width) * opts.height - int64_t(refine.size());
     result.samples = int64_t(opts.width) * opts.height;
-    for (int8_t k : pixelLevel) {
+    for (int pixel : refine) {
+        int k = result.pixelLevels[pixel];
         ++result.pixelsBySamples[k];
         result.samples += int64_t(1) << (2 * k);
     }
@@ -337,6 +345,7 @@ std::string describeSampling(const RenderResult &r) {
 RenderResult renderImage(const RenderScene &scene, const RenderOptions &opts) {
     validateRenderOptions(opts);
     auto start = std::chrono::steady_clock::now();
+    std::clock_t cpuStart = std::clock();
     Camera camera(scene.camera(), opts.width, opts.height);
     WhittedIntegrator integrator(scene, camera.position());
     int threads = opts.threads > 0 ? opts.threads : std::max(1u, std::thread::hardware_concurrency());
@@ -349,6 +358,7 @@ RenderResult renderImage(const RenderScene &scene, const RenderOptions &opts) {
     else
         renderUniform(camera, integrator, opts, threads, result);
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.cpuSeconds = double(std::clock() - cpuStart) / CLOCKS_PER_SEC;
     return result;
 }
 

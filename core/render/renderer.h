@@ -44,14 +44,16 @@ struct RenderOptions {
     /// neighbour's. Pass 2 gives each such pixel rounds of 4, 16, 64 ... stratified samples,
     /// the first 4^k of which are the cells of a 2^k x 2^k grid, up to adaptiveMax, stopping
     /// when the standard error of its mean (estimated from the spread within groups of
-    /// sibling cells, in display units) is at most adaptiveTolerance. A refined pixel is the
-    /// mean of its stratified samples only; every sample sits in a cell of the adaptiveMax
-    /// grid with the position and random stream uniform sampling gives that cell, so a pixel
-    /// refined to adaptiveMax is exactly the pixel of `samplesPerPixel = adaptiveMax`.
+    /// sibling cells, in display units) is below adaptiveTolerance (0: always adaptiveMax).
+    /// A refined pixel is the mean of its stratified samples only; every sample sits in a cell
+    /// of the adaptiveMax grid with the position and random stream uniform sampling gives that
+    /// cell, so a pixel refined to adaptiveMax is exactly the pixel of `samplesPerPixel =
+    /// adaptiveMax`, and the picture converges to uniform sampling's as the threshold and the
+    /// tolerance go to 0. Unrefined pixels are exactly those of 1 sample per pixel.
     bool adaptive = false;
     int adaptiveMax = 64;
-    double adaptiveThreshold = 0.05;
-    double adaptiveTolerance = 0.05;
+    double adaptiveThreshold = 0.02;
+    double adaptiveTolerance = 0.1;
     /// Called from the calling thread about four times a second with the finished fraction.
     std::function<void(double)> progress;
 };
@@ -69,7 +71,12 @@ struct RenderResult {
     /// Adaptive renders: pixels by samples, index k = pixels whose value is the mean of
     /// 4^k samples (k = 0: the centre sample only); empty for uniform renders.
     std::vector<int64_t> pixelsBySamples;
+    /// Adaptive renders: each pixel's k (row by row): the mean of 4^k samples, 0 = its centre.
+    std::vector<uint8_t> pixelLevels;
     double seconds = 0;
+    /// CPU time of the whole process during the render (all threads): a measure of the work
+    /// that other processes on the machine do not inflate as they do `seconds`.
+    double cpuSeconds = 0;
     int threads = 0;
 };
 
