@@ -26,6 +26,7 @@ struct RenderArgs {
     uint64_t seed = 0;
     bool linear = false, quiet = false, plan = false, noPlan = false, noAa = false;
     bool samplesGiven = false;  ///< -s on the command line; else the plan chooses
+    bool aaGiven = false;       ///< an --aa-* option: adaptive even where the plan would not be
     int aaMax = 64;
     double aaThreshold = RenderOptions().adaptiveThreshold, aaTolerance = RenderOptions().adaptiveTolerance;
 };
@@ -75,7 +76,7 @@ int runRender(const RenderArgs &a) {
     RenderPlan plan = makePlan(*rs);
     if (!a.samplesGiven) {
         ro.samplesPerPixel = plan.defaultSamples;
-        ro.adaptive = plan.adaptive && !a.noAa;
+        ro.adaptive = (plan.adaptive || a.aaGiven) && !a.noAa;
     }
     if (a.plan) std::fputs(describePlan(*rs, scene.stats, plan, ro, !a.samplesGiven).c_str(), stderr);
 
@@ -136,8 +137,9 @@ void addRenderCommand(CLI::App &app, std::function<int()> &action) {
               "(see --aa-max), or 4 everywhere where Monte Carlo effects need them (see --plan)",
               1, kMaxSamplesPerPixel);
     auto *aaMax = addNumber(*cmd, "--aa-max", args->aaMax,
-                            "Adaptive antialiasing (the default of sharp scenes): most samples per "
-                            "pixel, 4, 16, 64, 256, 1024 or 4096",
+                            "Adaptive antialiasing (the default of sharp scenes; any --aa-* option "
+                            "asks for it in Monte Carlo scenes too): most samples per pixel, 4, 16, "
+                            "64, 256, 1024 or 4096",
                             4, kMaxAdaptiveSamples);
     auto *aaThreshold = addNumber(*cmd, "--aa-threshold", args->aaThreshold,
                                   "Adaptive antialiasing: refine a pixel whose display value "
@@ -167,6 +169,7 @@ void addRenderCommand(CLI::App &app, std::function<int()> &action) {
     cmd->add_flag("-q,--quiet", args->quiet, "Only warnings and errors");
     cmd->callback([args, cmd, &action]() {
         args->samplesGiven = cmd->count("--samples") > 0;
+        args->aaGiven = cmd->count("--aa-max") + cmd->count("--aa-threshold") + cmd->count("--aa-tolerance") > 0;
         action = [args]() { return runRender(*args); };
     });
 }
