@@ -78,7 +78,8 @@ int runRender(const RenderArgs &a) {
         ro.samplesPerPixel = plan.defaultSamples;
         ro.adaptive = (plan.adaptive || a.aaGiven) && !a.noAa;
     }
-    if (a.plan) std::fputs(describePlan(*rs, scene.stats, plan, ro, !a.samplesGiven).c_str(), stderr);
+    bool chosen = !a.samplesGiven && !a.aaGiven;  // else the user chose
+    if (a.plan) std::fputs(describePlan(*rs, scene.stats, plan, ro, chosen).c_str(), stderr);
 
     bool tty = !a.quiet && isatty(STDERR_FILENO);
     if (tty)
