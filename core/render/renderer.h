@@ -39,9 +39,9 @@ struct RenderOptions {
     int tileSize = 16;
     /// Adaptive antialiasing instead of samplesPerPixel samples everywhere (batches 1 only).
     /// Pass 1 traces each pixel's centre. A pixel is refined when its display value (square
-    /// root of the linear one, close to sRGB) differs from an 8-neighbour's by more than
-    /// adaptiveThreshold in some channel, or its camera ray hit another primitive than a
-    /// neighbour's. Pass 2 gives each such pixel rounds of 4, 16, 64 ... stratified samples,
+    /// root of the linear one, close to sRGB) differs from that of a pixel sharing an edge
+    /// with it by more than adaptiveThreshold in some channel, or its camera ray hit another
+    /// primitive than that neighbour's. Pass 2 gives each such pixel rounds of 4, 16, 64 ... stratified samples,
     /// the first 4^k of which are the cells of a 2^k x 2^k grid, up to adaptiveMax, stopping
     /// when the standard error of its mean (estimated from the spread within groups of
     /// sibling cells, in display units) is below adaptiveTolerance (0: always adaptiveMax).
