@@ -24,8 +24,11 @@ struct RenderArgs {
     std::string output;
     int width = 640, height = 480, samples = 1, threads = 0, bits = 8;
     uint64_t seed = 0;
-    bool linear = false, quiet = false, plan = false, noPlan = false;
+    bool linear = false, quiet = false, plan = false, noPlan = false, noAa = false;
     bool samplesGiven = false;  ///< -s on the command line; else the plan chooses
+    bool aaGiven = false;       ///< an --aa-* option: adaptive even where the plan would not be
+    int aaMax = 64;
+    double aaThreshold = RenderOptions().adaptiveThreshold, aaTolerance = RenderOptions().adaptiveTolerance;
 };
 
 std::string formatCount(int64_t n) {
@@ -39,6 +42,14 @@ std::string formatCount(int64_t n) {
     return buf;
 }
 
+/// "4" for a uniform render, "adaptive 1.31" for an adaptive one.
+std::string sppText(const RenderResult &r) {
+    if (r.pixelsBySamples.empty()) return std::to_string(r.samples / (int64_t(r.image.width()) * r.image.height()));
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "adaptive %.2f", meanSamplesPerPixel(r));
+    return buf;
+}
+
 int runRender(const RenderArgs &a) {
     LoadOptions lo = a.scene.loadOptions(a.quiet);
     RenderOptions ro;
@@ -47,6 +58,10 @@ int runRender(const RenderArgs &a) {
     ro.samplesPerPixel = a.samples;
     ro.threads = a.threads;
     ro.seed = a.seed;
+    ro.adaptiveMax = a.aaMax;
+    ro.adaptiveThreshold = a.aaThreshold;
+    ro.adaptiveTolerance = a.aaTolerance;
+    ro.adaptive = !a.samplesGiven && !a.noAa;
     validateRenderOptions(ro);  // fail on bad options before reading the scene
     std::string output = a.output;
     if (output.empty()) output = std::filesystem::path(a.scene.input).stem().string() + ".png";
@@ -59,10 +74,12 @@ int runRender(const RenderArgs &a) {
     co.plan = !a.noPlan;
     auto rs = RenderScene::compile(scene, diag, co);
     RenderPlan plan = makePlan(*rs);
-    if (!a.samplesGiven) ro.samplesPerPixel = plan.defaultSamples;
-    if (a.plan)
-        std::fputs(describePlan(*rs, scene.stats, plan, ro.samplesPerPixel, !a.samplesGiven).c_str(),
-                   stderr);
+    if (!a.samplesGiven) {
+        ro.samplesPerPixel = plan.defaultSamples;
+        ro.adaptive = (plan.adaptive || a.aaGiven) && !a.noAa;
+    }
+    bool chosen = !a.samplesGiven && !a.aaGiven;  // else the user chose
+    if (a.plan) std::fputs(describePlan(*rs, scene.stats, plan, ro, chosen).c_str(), stderr);
 
     bool tty = !a.quiet && isatty(STDERR_FILENO);
     if (tty)
@@ -85,23 +102,24 @@ int runRender(const RenderArgs &a) {
                 ? ", " + formatCount(static_cast<int64_t>(rs->stats().triangles)) + " triangles"
                 : std::string();
         std::fprintf(stderr,
-                     "scadray: %s: %dx%d, %d spp, %d objects (%zu primitives%s), %d threads, "
+                     "scadray: %s: %dx%d, %s spp, %d objects (%zu primitives%s), %d threads, "
                      "%.3f s\n",
-                     output.c_str(), a.width, a.height, ro.samplesPerPixel,
+                     output.c_str(), a.width, a.height, sppText(r).c_str(),
                      static_cast<int>(rs->stats().objects), rs->stats().primitives,
                      triangles.c_str(), r.threads, r.seconds);
         std::fprintf(stderr,
                      "  rays: %s total (%s camera, %s shadow, %s reflection, %s refraction, "
-                     "%s transmission, %s internal reflection, %s distributed), %.2f Mrays/s\n",
+                     "%s transmission, %s internal reflection, %s distributed), %.2f Mrays/s, %.3f s CPU\n",
                      formatCount(s.totalRays()).c_str(), formatCount(s.camera).c_str(),
                      formatCount(s.shadow).c_str(), formatCount(s.reflection).c_str(),
                      formatCount(s.refraction).c_str(), formatCount(s.transmission).c_str(),
                      formatCount(s.internalReflection).c_str(), formatCount(s.distributed).c_str(),
-                     s.totalRays() / std::max(r.seconds, 1e-9) / 1e6);
+                     s.totalRays() / std::max(r.seconds, 1e-9) / 1e6, r.cpuSeconds);
         std::fprintf(stderr, "  csg: %s span merges, %s pruned subtrees; non-finite pixels: %lld\n",
                      formatCount(s.spanOps).c_str(), formatCount(s.prunedSubtrees).c_str(),
                      static_cast<long long>(s.nonFinite));
     }
+    if (a.plan && ro.adaptive) std::fprintf(stderr, "plan: samples: %s\n", describeSampling(r).c_str());
     return kExitOk;
 }
 
@@ -116,9 +134,27 @@ void addRenderCommand(CLI::App &app, std::function<int()> &action) {
     addNumber(*cmd, "-W,--width", args->width, "Image width in pixels", 1, kMaxImageSide);
     addNumber(*cmd, "-H,--height", args->height, "Image height in pixels", 1, kMaxImageSide);
     addNumber(*cmd, "-s,--samples", args->samples,
-              "Samples per pixel, stratified; 1 = pixel centres. Default: 1, or 4 where "
-              "Monte Carlo effects need them (see --plan)",
+              "Samples per pixel everywhere, stratified; 1 = pixel centres. Default: adaptive "
+              "(see --aa-max), or 4 everywhere where Monte Carlo effects need them (see --plan)",
               1, kMaxSamplesPerPixel);
+    auto *aaMax = addNumber(*cmd, "--aa-max", args->aaMax,
+                            "Adaptive antialiasing (the default of sharp scenes; any --aa-* option "
+                            "asks for it in Monte Carlo scenes too): most samples per pixel, 4, 16, "
+                            "64, 256, 1024 or 4096",
+                            4, kMaxAdaptiveSamples);
+    auto *aaThreshold = addNumber(*cmd, "--aa-threshold", args->aaThreshold,
+                                  "Adaptive antialiasing: refine a pixel whose display value "
+                                  "(0..1, about sRGB) differs from a neighbour's by more than this",
+                                  0.0, 1.0);
+    auto *aaTolerance = addNumber(*cmd, "--aa-tolerance", args->aaTolerance,
+                                  "Adaptive antialiasing: stop refining a pixel when the standard "
+                                  "error of its mean (display units) is below this (0: always --aa-max)",
+                                  0.0, 1.0);
+    auto *noAa = cmd->add_flag("--no-aa", args->noAa,
+                               "No adaptive antialiasing: 1 sample per pixel (4 with Monte Carlo "
+                               "effects), as -s");
+    for (CLI::Option *o : {aaMax, aaThreshold, aaTolerance, noAa}) o->excludes("--samples");
+    for (CLI::Option *o : {aaMax, aaThreshold, aaTolerance}) o->excludes(noAa);
     cmd->add_flag("--plan", args->plan,
                   "Print the render plan first: features in use and why, objects kept and "
                   "dropped, the samples per pixel chosen");
@@ -134,6 +170,7 @@ void addRenderCommand(CLI::App &app, std::function<int()> &action) {
     cmd->add_flag("-q,--quiet", args->quiet, "Only warnings and errors");
     cmd->callback([args, cmd, &action]() {
         args->samplesGiven = cmd->count("--samples") > 0;
+        args->aaGiven = cmd->count("--aa-max") + cmd->count("--aa-threshold") + cmd->count("--aa-tolerance") > 0;
         action = [args]() { return runRender(*args); };
     });
 }

@@ -46,15 +46,17 @@ RenderPlan makePlan(const RenderScene &scene) {
         plan.samplesReason = "Monte Carlo effects: 4 samples average their noise";
     } else {
         plan.defaultSamples = 1;
+        plan.adaptive = true;
         plan.samplesReason =
-            "every material is sharp and no light is jittered, so the picture is deterministic and "
-            "more samples would only antialias edges (-s 4 or more to antialias)";
+            "every material is sharp and no light is jittered, so a pixel's centre is exact away "
+            "from edges, shadow boundaries and textures, and only those get more samples "
+            "(--no-aa: 1 per pixel; -s N: N everywhere)";
     }
     return plan;
 }
 
 std::string describePlan(const RenderScene &scene, const ir::ImportStats &imported,
-                         const RenderPlan &plan, int samples, bool chosen) {
+                         const RenderPlan &plan, const RenderOptions &render, bool chosen) {
     const CompileStats &st = scene.stats();
     MaterialUse u = materialUse(scene);
     std::ostringstream os;
@@ -125,8 +127,15 @@ std::string describePlan(const RenderScene &scene, const ir::ImportStats &import
        << (scene.options().plan ? "subtrees skipped by bounds and by the empty-operand rules"
                                 : "off")
        << "\n";
-    os << "  samples: " << samples << " per pixel"
-       << (chosen ? " (chosen: " + plan.samplesReason + ")" : std::string(" (given)")) << "\n";
+    os << "  samples: ";
+    if (render.adaptive)
+        os << "adaptive, each pixel's centre, then 4, 16 ... up to " << render.adaptiveMax
+           << " stratified samples where a neighbour differs by more than " << render.adaptiveThreshold
+           << " or saw another primitive, until the standard error is below "
+           << render.adaptiveTolerance;
+    else
+        os << render.samplesPerPixel << " per pixel";
+    os << (chosen ? " (chosen: " + plan.samplesReason + ")" : std::string(" (given)")) << "\n";
     return os.str();
 }
 

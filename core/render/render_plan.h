@@ -7,6 +7,7 @@
 
 #include "core/ir/scene_ir.h"
 #include "core/render/render_scene.h"
+#include "core/render/renderer.h"
 
 namespace rt {
 
@@ -16,14 +17,19 @@ struct RenderPlan {
     /// Samples per pixel when the user gives none: 1 for a deterministic picture (more samples
     /// would only antialias edges), 4 where Monte Carlo effects average their noise.
     int defaultSamples = 1;
+    /// Adaptive antialiasing when the user gives no sample count (sharp scenes): the centre of
+    /// each pixel, more samples only where neighbours differ. Monte Carlo scenes keep
+    /// defaultSamples everywhere: their noise differs between all neighbours.
+    bool adaptive = false;
     std::string samplesReason;
 };
 
 RenderPlan makePlan(const RenderScene &scene);
 
 /// The plan as text, a few lines: features in use and why, objects kept and dropped, the
-/// acceleration structure, the samples per pixel (`samples`, chosen when `chosen`).
+/// acceleration structure, the sampling of `render` (uniform or adaptive, chosen by the plan
+/// when `chosen`).
 std::string describePlan(const RenderScene &scene, const ir::ImportStats &imported,
-                         const RenderPlan &plan, int samples, bool chosen);
+                         const RenderPlan &plan, const RenderOptions &render, bool chosen);
 
 }  // namespace rt

@@ -64,6 +64,7 @@ Rgb WhittedIntegrator::trace(const Ray &ray, int level, double weight, const Int
     SurfaceInteraction si;
     bool hit = scene_.intersect(ray, 0, kInfinity, &si, ctx.scratch);
     ctx.tie = ctx.tie || si.tie;
+    if (level == 0) ctx.firstHit = hit ? si.leaf : nullptr;  // the camera ray
     if (!hit) return s.background;
     return shade(ray, si, continued ? level : level + 1, weight, stack, blurred, ctx);
 }

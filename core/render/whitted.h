@@ -22,6 +22,9 @@ struct TraceContext {
     /// Set when the current sample's path met a tie (coincident surfaces); the renderer clears
     /// it per sample and reports the fraction of such samples per pixel.
     bool tie = false;
+    /// Primitive (or mesh) the current sample's camera ray hit, null for the background: the
+    /// adaptive renderer refines pixels whose neighbours saw another primitive.
+    const LeafShape *firstHit = nullptr;
     /// The current sample's random stream (pixel jitter, then every distributed ray of its
     /// path), seeded by pixel, sample and user seed so a render is the same on any thread count.
     Rng rng;

@@ -269,14 +269,17 @@ TEST(RenderPlan, UnionsSplitOnlyIntoDisjointPartsWithOneInterior) {
 TEST(RenderPlan, DescribesItself) {
     Compiled c = compileScene(load(scene("print_plate.scad")), true);
     RenderPlan plan = makePlan(*c.rs);
-    std::string text = describePlan(*c.rs, c.scene.stats, plan, plan.defaultSamples, true);
+    RenderOptions ro;
+    ro.samplesPerPixel = plan.defaultSamples;
+    ro.adaptive = plan.adaptive;
+    std::string text = describePlan(*c.rs, c.scene.stats, plan, ro, true);
     for (const char *part : {"shadows: rays towards 1 of 2 lights (1 shadowless: none)",
                              "no material reflects: no reflection rays",
                              "no material is transparent: no refraction",
                              "no distributed rays", "49 solids kept (48 with CSG span merging",
                              "1 union of disjoint parts split", "dropped: 1 behind the camera",
                              "1 unused material (of 3)", "BVH over 49 solids",
-                             "samples: 1 per pixel (chosen: "})
+                             "samples: adaptive, each pixel's centre", "(chosen: every material is sharp"})
         EXPECT_NE(text.find(part), std::string::npos) << part << " not in:\n" << text;
 }
 

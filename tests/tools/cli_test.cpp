@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -180,8 +181,11 @@ TEST_F(Cli, PlanIsPrintedBeforeRendering) {
     ASSERT_NE(summary, std::string::npos) << r.err;
     EXPECT_LT(plan, summary);
     EXPECT_NE(r.err.find("dropped: 1 behind the camera"), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find("samples: 1 per pixel (chosen: "), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find(", 1 spp,"), std::string::npos) << r.err;
+    // A sharp scene is antialiased adaptively, and the plan says where the samples went
+    EXPECT_NE(r.err.find("samples: adaptive, each pixel's centre, then 4, 16 ... up to 64"), std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find(", adaptive "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("\nplan: samples: adaptive, pixels by samples: 1: "), std::string::npos) << r.err;
     // A Monte Carlo scene chooses 4 samples; -s overrides
     CliRun mc = run("render --plan -W 16 -H 12 " + scene("montecarlo/glossy.scad") + " -o " + out);
     EXPECT_NE(mc.err.find("samples: 4 per pixel (chosen: Monte Carlo"), std::string::npos) << mc.err;
@@ -193,6 +197,34 @@ TEST_F(Cli, PlanIsPrintedBeforeRendering) {
     EXPECT_NE(naive.err.find("plan (disabled"), std::string::npos) << naive.err;
     EXPECT_NE(naive.err.find("dropped: 0 behind the camera"), std::string::npos) << naive.err;
     EXPECT_NE(naive.err.find("0 pruned subtrees"), std::string::npos) << naive.err;
+}
+
+TEST_F(Cli, AdaptiveAntialiasingOptions) {
+    std::string out = (dir / "aa.png").string(), in = scene("lecture_csg.scad");
+    // The summary line gives the mean samples per pixel
+    CliRun r = run("render -W 32 -H 24 --aa-max 16 --aa-threshold 0.1 --aa-tolerance 0.01 " + in + " -o " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    size_t at = r.err.find("32x24, adaptive ");
+    ASSERT_NE(at, std::string::npos) << r.err;
+    double spp = std::atof(r.err.c_str() + at + std::strlen("32x24, adaptive "));
+    EXPECT_GT(spp, 1);
+    EXPECT_LE(spp, 17);
+    EXPECT_NE(r.err.find(" spp, "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(" s CPU\n"), std::string::npos) << r.err;
+    // Turned off, and -s: uniform
+    CliRun off = run("render -W 32 -H 24 --no-aa " + in + " -o " + out);
+    EXPECT_NE(off.err.find("32x24, 1 spp, "), std::string::npos) << off.err;
+    CliRun given = run("render -W 32 -H 24 -s 4 " + in + " -o " + out);
+    EXPECT_NE(given.err.find("32x24, 4 spp, "), std::string::npos) << given.err;
+    // Out of range, not a power of 4, or combined with -s or --no-aa: usage errors
+    for (const char *bad : {"--aa-max 2", "--aa-max 8192", "--aa-max 32", "--aa-threshold -0.1",
+                            "--aa-threshold 2", "--aa-tolerance nan", "--aa-tolerance 1.5",
+                            "-s 4 --aa-max 16", "--no-aa --aa-threshold 0.1", "-s 2 --no-aa"}) {
+        CliRun b = run(std::string("render -W 8 -H 8 ") + bad + " " + in + " -o " + out);
+        EXPECT_EQ(b.exitCode, 2) << bad << ": " << b.err;
+    }
+    CliRun notPower = run("render -W 8 -H 8 --aa-max 32 " + in + " -o " + out);
+    EXPECT_NE(notPower.err.find("4, 16, 64, 256, 1024 or 4096"), std::string::npos) << notPower.err;
 }
 
 TEST_F(Cli, FailureKeepsAnExistingOutput) {

@@ -1,0 +1,252 @@
+// SPDX-License-Identifier: MIT
+// Adaptive antialiasing (issue 15): the same picture as uniform 64 samples per pixel within
+// `compare`, with a fraction of the samples; refined pixels are exactly uniform sampling's; the
+// picture is the same for any thread count and tile size; pixels that differ from a neighbour
+// (edges, shadow boundaries) are the ones refined.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "core/image/image_compare.h"
+#include "core/ir/scene_defaults.h"
+#include "core/render/render_plan.h"
+#include "core/render/render_scene.h"
+#include "core/render/renderer.h"
+#include "importers/scad/scad_importer.h"
+
+namespace rt {
+namespace {
+
+struct Compiled {
+    ir::Scene scene;
+    std::unique_ptr<RenderScene> rs;
+};
+
+scad::ImportOptions libraryOptions() {
+    scad::ImportOptions io;
+    io.libraryPaths = {std::string(SCADRAY_SOURCE_DIR) + "/scenes"};
+    return io;
+}
+
+Compiled compile(ir::Scene scene) {
+    Compiled c{std::move(scene), nullptr};
+    DiagnosticSink diag;
+    ir::completeScene(c.scene, diag);
+    c.rs = RenderScene::compile(c.scene, diag);
+    return c;
+}
+
+Compiled loadScene(const std::string &name) {
+    DiagnosticSink diag;
+    return compile(scad::importScad(std::string(SCADRAY_SOURCE_DIR) + "/scenes/" + name, diag,
+                                    libraryOptions()));
+}
+
+Compiled loadText(const std::string &text) {
+    DiagnosticSink diag;
+    return compile(scad::importScadSource("use <scadray.scad>\n" + text,
+                                          std::string(SCADRAY_SOURCE_DIR) + "/scenes/test.scad", diag,
+                                          libraryOptions()));
+}
+
+RenderOptions options(int w, int h) {
+    RenderOptions o;
+    o.width = w;
+    o.height = h;
+    o.threads = 2;
+    return o;
+}
+
+RenderResult uniform(const RenderScene &rs, int w, int h, int spp) {
+    RenderOptions o = options(w, h);
+    o.samplesPerPixel = spp;
+    return renderImage(rs, o);
+}
+
+RenderResult adaptive(const RenderScene &rs, int w, int h, RenderOptions o = {}) {
+    o.width = w;
+    o.height = h;
+    if (o.threads == 0) o.threads = 2;
+    o.adaptive = true;
+    return renderImage(rs, o);
+}
+
+/// Root mean square difference of the display values (square root of linear) over every
+/// pixel, edges included.
+double displayRmse(const Image &a, const Image &b) {
+    double sum = 0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x)
+            for (int ch = 0; ch < 3; ++ch) {
+                double d = std::sqrt(std::clamp(double(a.at(x, y)[ch]), 0.0, 1.0)) -
+                           std::sqrt(std::clamp(double(b.at(x, y)[ch]), 0.0, 1.0));
+                sum += d * d;
+            }
+    return std::sqrt(sum / (3.0 * a.width() * a.height()));
+}
+
+bool samePixels(const Image &a, const Image &b) {
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x)
+            if (!(a.at(x, y) == b.at(x, y))) return false;
+    return true;
+}
+
+TEST(AdaptiveRender, SamePictureAsUniform64WithAFractionOfTheSamples) {
+    // Edges, CSG holes and shadows
+    for (const char *name : {"lecture_csg.scad", "csg_part.scad"}) {
+        SCOPED_TRACE(name);
+        Compiled c = loadScene(name);
+        const int w = 160, h = 120;
+        RenderResult a = adaptive(*c.rs, w, h), ref = uniform(*c.rs, w, h, 64),
+                     one = uniform(*c.rs, w, h, 1);
+        ImageEstimate test{a.image, {}, 0, {}, a.ties}, reference{ref.image, {}, 0, {}, ref.ties};
+        CompareResult cmp = compareImages(test, reference);
+        EXPECT_TRUE(cmp.pass) << cmp.summary({});
+        double fraction = double(a.samples) / (64.0 * w * h);
+        double errorAdaptive = displayRmse(a.image, ref.image), errorOne = displayRmse(one.image, ref.image);
+        std::printf("%s %dx%d: adaptive %.2f spp = %.3f of uniform 64; display RMSE against it %.4f "
+                    "(1 spp: %.4f)\n",
+                    name, w, h, meanSamplesPerPixel(a), fraction, errorAdaptive, errorOne);
+        EXPECT_LT(fraction, 0.1);
+        // Antialiased: the edges are much closer to uniform 64's than the centres are
+        EXPECT_LT(errorAdaptive, 0.5 * errorOne);
+        // The histogram accounts for every pixel and every sample
+        ASSERT_EQ(a.pixelsBySamples.size(), 4u);
+        int64_t pixels = 0, samples = w * h;
+        for (size_t k = 0; k < a.pixelsBySamples.size(); ++k) {
+            pixels += a.pixelsBySamples[k];
+            if (k) samples += a.pixelsBySamples[k] << (2 * k);
+        }
+        EXPECT_EQ(pixels, w * h);
+        EXPECT_EQ(samples, a.samples);
+        EXPECT_EQ(a.stats.camera, a.samples);
+    }
+}
+
+TEST(AdaptiveRender, RefinedPixelsAreUniformSamplingsAndTheRestAreCentres) {
+    // With no tolerance every refined pixel takes all adaptiveMax samples: it is then exactly
+    // the pixel of uniform sampling at adaptiveMax, and every other pixel that of 1 spp
+    Compiled c = loadScene("lecture_csg.scad");
+    const int w = 64, h = 48;
+    RenderOptions o;
+    o.adaptiveMax = 16;
+    o.adaptiveTolerance = 0;
+    RenderResult a = adaptive(*c.rs, w, h, o), one = uniform(*c.rs, w, h, 1),
+                 sixteen = uniform(*c.rs, w, h, 16);
+    ASSERT_EQ(a.pixelLevels.size(), size_t(w) * h);
+    int refined = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            int n = 1 << (2 * a.pixelLevels[size_t(y) * w + x]);
+            ASSERT_TRUE(n == 1 || n == 16) << n;
+            const Image &expected = n == 1 ? one.image : sixteen.image;
+            EXPECT_TRUE(a.image.at(x, y) == expected.at(x, y)) << x << "," << y << ": " << n;
+            refined += n == 16;
+        }
+    EXPECT_GT(refined, 0);
+    EXPECT_EQ(a.pixelsBySamples[2], refined);
+    EXPECT_EQ(a.pixelsBySamples[1], 0);
+}
+
+TEST(AdaptiveRender, SameForAnyThreadCountAndTileSize) {
+    Compiled c = loadScene("csg_part.scad");
+    RenderOptions o;
+    o.threads = 1;
+    RenderResult base = adaptive(*c.rs, 80, 60, o);
+    for (auto [threads, tile] : {std::pair{2, 7}, std::pair{3, 32}, std::pair{2, 1}}) {
+        o.threads = threads;
+        o.tileSize = tile;
+        RenderResult r = adaptive(*c.rs, 80, 60, o);
+        EXPECT_TRUE(samePixels(base.image, r.image)) << threads << " threads, tile " << tile;
+        EXPECT_EQ(base.samples, r.samples);
+        EXPECT_EQ(base.pixelLevels, r.pixelLevels);
+    }
+}
+
+TEST(AdaptiveRender, EdgesShadowsAndSameColouredNeighboursAreRefined) {
+    // A floor, a box casting a shadow on it, and two boxes of one colour side by side, lit
+    // alike: their seam has no contrast, but the primitives differ
+    Compiled c = loadText(R"(
+camera(location=[0, -12, 6], look_at=[0, 0, 0], fov=40);
+point_light(position=[4, -6, 10]);
+material(color="white") translate([-8, -8, -1]) cube([16, 16, 1]);
+material(color="red") translate([-3, -1, 0]) cube([2, 2, 2]);
+material(color="green") translate([1, -1, 0]) cube([1, 2, 1]);
+material(color="green") translate([2, -1, 0]) cube([1, 2, 1]);
+)");
+    const int w = 96, h = 72;
+    RenderResult a = adaptive(*c.rs, w, h), one = uniform(*c.rs, w, h, 1);
+    RenderOptions o;
+    double threshold = o.adaptiveThreshold + 1.0 / 255;  // the renderer keeps 1/255 steps
+    auto display = [&](int x, int y, int ch) { return std::sqrt(std::clamp(double(one.image.at(x, y)[ch]), 0.0, 1.0)); };
+    // Every pixel that differs from a neighbour beyond the threshold is refined
+    int contrasted = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x + 1 < w; ++x)
+            for (int ch = 0; ch < 3; ++ch)
+                if (std::abs(display(x, y, ch) - display(x + 1, y, ch)) > threshold) {
+                    ++contrasted;
+                    EXPECT_GT(a.pixelLevels[size_t(y) * w + x], 0) << x << "," << y;
+                    EXPECT_GT(a.pixelLevels[size_t(y) * w + x + 1], 0) << x + 1 << "," << y;
+                }
+    EXPECT_GT(contrasted, 20);
+    // Most of the picture keeps its centre sample
+    EXPECT_GT(a.pixelsBySamples[0], w * h / 2);
+    // The seam between the two green boxes: found as the column where the 1 spp picture's
+    // green faces meet, refined although the colour does not change across it
+    RenderOptions noContrast;
+    noContrast.adaptiveThreshold = 1;  // only primitive changes refine
+    RenderResult seams = adaptive(*c.rs, w, h, noContrast);
+    int64_t refined = seams.pixelsBySamples[0];
+    EXPECT_LT(refined, w * h);
+    EXPECT_GT(w * h - refined, contrasted / 4);
+}
+
+TEST(AdaptiveRender, OptionsAreValidated) {
+    RenderOptions o;
+    o.adaptive = true;
+    EXPECT_NO_THROW(validateRenderOptions(o));
+    for (int max : {4, 16, 256, kMaxAdaptiveSamples}) {
+        o.adaptiveMax = max;
+        EXPECT_NO_THROW(validateRenderOptions(o)) << max;
+    }
+    for (int max : {0, 1, 2, 8, 32, 100, kMaxAdaptiveSamples * 4}) {
+        o.adaptiveMax = max;
+        EXPECT_THROW(validateRenderOptions(o), std::invalid_argument) << max;
+    }
+    o.adaptiveMax = 64;
+    o.adaptiveThreshold = -1;
+    EXPECT_THROW(validateRenderOptions(o), std::invalid_argument);
+    o.adaptiveThreshold = 0.1;
+    o.adaptiveTolerance = std::nan("");
+    EXPECT_THROW(validateRenderOptions(o), std::invalid_argument);
+    o.adaptiveTolerance = 0.1;
+    o.batches = 2;
+    EXPECT_THROW(validateRenderOptions(o), std::invalid_argument);
+}
+
+TEST(AdaptiveRender, PlanChoosesAdaptiveForSharpScenesAndSaysWhereSamplesWent) {
+    Compiled sharp = loadScene("lecture_csg.scad");
+    RenderPlan plan = makePlan(*sharp.rs);
+    EXPECT_TRUE(plan.adaptive);
+    RenderOptions o;
+    o.adaptive = true;
+    std::string text = describePlan(*sharp.rs, sharp.scene.stats, plan, o, true);
+    EXPECT_NE(text.find("samples: adaptive, each pixel's centre, then 4, 16 ... up to 64"), std::string::npos)
+        << text;
+    RenderResult r = adaptive(*sharp.rs, 32, 24);
+    std::string where = describeSampling(r);
+    EXPECT_EQ(where.rfind("adaptive, pixels by samples: 1: ", 0), 0u) << where;
+    EXPECT_NE(where.find(", 64: "), std::string::npos) << where;
+    EXPECT_NE(where.find(" per pixel"), std::string::npos) << where;
+    EXPECT_EQ(describeSampling(uniform(*sharp.rs, 8, 6, 4)), "4.00 per pixel");
+    // Monte Carlo scenes keep uniform sampling
+    Compiled mc = loadScene("montecarlo/glossy.scad");
+    EXPECT_FALSE(makePlan(*mc.rs).adaptive);
+}
+
+}  // namespace
+}  // namespace rt
