@@ -22,6 +22,18 @@
 
 namespace rt {
 
+namespace {
+
+/// Rounds of refinement up to `maxSamples`: the smallest k >= 1 with 4^k >= maxSamples, at most
+/// kMaxAdaptiveLevel (validateRenderOptions requires 4^k == maxSamples).
+int adaptiveLevels(int maxSamples) {
+    int k = 1;
+    while (k < kMaxAdaptiveLevel && (1 << (2 * k)) < maxSamples) ++k;
+    return k;
+}
+
+}  // namespace
+
 void validateRenderOptions(const RenderOptions &o) {
     if (o.width < 1 || o.height < 1 || o.width > kMaxImageSide || o.height > kMaxImageSide)
         throw std::invalid_argument("image size " + std::to_string(o.width) + "x" +
@@ -40,9 +52,7 @@ void validateRenderOptions(const RenderOptions &o) {
     if (o.threads < 0) throw std::invalid_argument("thread count must not be negative");
     if (o.tileSize < 1) throw std::invalid_argument("tile size must be positive");
     if (o.adaptive) {
-        int level = 1;
-        while (level < kMaxAdaptiveLevel && (1 << (2 * level)) < o.adaptiveMax) ++level;
-        if (o.adaptiveMax != 1 << (2 * level))
+        if (o.adaptiveMax != 1 << (2 * adaptiveLevels(o.adaptiveMax)))
             throw std::invalid_argument("adaptive antialiasing needs a maximum of 4, 16, 64, 256, "
                                         "1024 or 4096 samples per pixel, not " +
                                         std::to_string(o.adaptiveMax));
@@ -265,8 +275,7 @@ double adaptiveError(const std::vector<Rgb> &display, int k) {
 void renderAdaptive(const Camera &camera, const WhittedIntegrator &integrator, const RenderOptions &opts,
                     int threads, RenderResult &result) {
     std::vector<int> refine = adaptiveFirstPass(camera, integrator, opts, threads, result);
-    int levels = 1;
-    while ((1 << (2 * levels)) < opts.adaptiveMax) ++levels;
+    int levels = adaptiveLevels(opts.adaptiveMax);
     int side = 1 << levels;
     constexpr int kChunk = 32;
     int chunks = static_cast<int>((refine.size() + kChunk - 1) / kChunk);
