@@ -387,6 +387,26 @@ class MeshBvhBuilder {
     std::vector<Item> items_;
 };
 
+#if defined(__SSE2__)
+bool MeshBvh::FloatSlabs::init(const Ray &ray) {
+    for (int a = 0; a < 3; ++a) {
+        double o = ray.o[a], inv = 1 / ray.d[a];
+        if (!(std::abs(o) <= 1e30)) return false;
+        if (!std::isinf(inv) && !(std::abs(inv) >= 1e-30 && std::abs(inv) <= 1e30)) return false;
+        // For a positive direction the near distance (b - o) * inv is smallest for the largest
+        // origin: the float above o; the far distance is largest for the float below. A plane b
+        // is a float, so b - oNear has the sign of b - o or is zero (a NaN distance where inv
+        // is infinite, which the test ignores)
+        nearHi[a] = inv < 0;
+        float up = roundUp(o), down = roundDown(o);
+        oNear[a] = _mm_set1_ps(nearHi[a] ? down : up);
+        oFar[a] = _mm_set1_ps(nearHi[a] ? up : down);
+        this->inv[a] = _mm_set1_ps(static_cast<float>(inv));
+    }
+    return true;
+}
+#endif
+
 MeshBvh::MeshBvh(const ir::Mesh &mesh, int threads) {
     if (mesh.triangles.size() >= kMaxTriangles)
         throw std::length_error("a mesh BVH indexes at most 2^29 triangles");

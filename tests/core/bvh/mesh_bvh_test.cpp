@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "core/bvh/mesh_bvh.h"
 #include "core/geometry/triangle_mesh.h"
@@ -199,6 +201,118 @@ TEST(MeshBvh, SmallEmptyAndCoincidentMeshes) {
     ASSERT_TRUE(mesh.closest(Ray(Vec3(0.2, 0.2, 1), Vec3(0, 0, -1)), 0, kInfinity, &hit));
     EXPECT_EQ(hit.triangle, 0u);
     EXPECT_EQ(hit.t, 1);
+}
+
+std::string describe(const Ray &r) {
+    char s[200];
+    std::snprintf(s, sizeof s, "ray [%.17g, %.17g, %.17g] + t [%.17g, %.17g, %.17g]", r.o.x, r.o.y, r.o.z, r.d.x, r.d.y,
+                  r.d.z);
+    return s;
+}
+
+/// The closest hit of every ray (for tMin = 0 and -inf) and every crossing of the line are
+/// brute force's.
+void expectSameAsBruteForce(const TriangleMesh &mesh, const std::vector<Ray> &rays, int *hits) {
+    for (const Ray &r : rays) {
+        for (double tMin : {0.0, -kInfinity}) {
+            Expected e = bruteClosest(mesh, r, tMin, kInfinity);
+            TriangleMesh::Hit hit;
+            bool found = mesh.closest(r, tMin, kInfinity, &hit);
+            ASSERT_EQ(found, e.found) << describe(r) << ", tMin " << tMin;
+            if (!found) continue;
+            ASSERT_EQ(hit.t, e.t) << describe(r) << ", tMin " << tMin;
+            ASSERT_EQ(hit.triangle, e.triangle) << describe(r) << ", tMin " << tMin;
+            ++*hits;
+        }
+        std::vector<std::pair<double, uint32_t>> brute, bvh;
+        for (uint32_t tri = 0; tri < mesh.triangleCount(); ++tri) {
+            TriangleMesh::Hit h;
+            if (mesh.intersectTriangle(r, tri, &h)) brute.emplace_back(h.t, tri);
+        }
+        std::vector<TriangleMesh::Hit> all;
+        mesh.allHits(r, all);
+        for (const auto &h : all) bvh.emplace_back(h.t, h.triangle);
+        std::sort(brute.begin(), brute.end());
+        std::sort(bvh.begin(), bvh.end());
+        ASSERT_EQ(bvh, brute) << describe(r);
+    }
+}
+
+/// Rays the float node test must not lose: axis-parallel ones through vertices, rays starting
+/// exactly on the planes of the float boxes, rays grazing along edges, and rays whose
+/// direction has a component of 1e-30 or 1e-300 (a reciprocal beyond the float range).
+std::vector<Ray> stiffRays(const ir::Mesh &m, const MeshBvh &bvh, double scale, int count) {
+    Rng rng(11);
+    std::vector<Ray> rays;
+    auto vertex = [&] { return m.positions[static_cast<size_t>(rng.uniform() * m.positions.size())]; };
+    for (int i = 0; i < count; ++i) {
+        int axis = i % 3;
+        double sign = i % 2 ? 1 : -1;
+        Vec3 d(0), target = vertex();
+        d[axis] = sign;
+        // Axis-parallel, through a vertex (on the boxes' planes in the other two axes)
+        rays.emplace_back(target - d * (3 * scale), d);
+        // From a plane of a float box, towards a vertex
+        const auto &node = bvh.nodes()[static_cast<size_t>(rng.uniform() * bvh.nodes().size())];
+        int c = static_cast<int>(rng.uniform() * 4);
+        if (node.child[c] != MeshBvh::kEmpty) {
+            Vec3 o = target + Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) * (3 * scale);
+            o[axis] = i % 2 ? node.lo[axis][c] : node.hi[axis][c];
+            if (o != target) rays.emplace_back(o, normalize(target - o));
+            // and along the plane
+            Vec3 along = normalize(target - o);
+            along[axis] = 0;
+            if (lengthSquared(along) > 0) rays.emplace_back(o, normalize(along));
+        }
+        // Grazing: along an edge of a triangle, from beyond its end
+        const auto &t = m.triangles[static_cast<size_t>(rng.uniform() * m.triangles.size())];
+        Vec3 e = m.positions[t[1]] - m.positions[t[0]];
+        if (lengthSquared(e) > 0) rays.emplace_back(m.positions[t[0]] - e * 2.0, normalize(e));
+        // Tiny direction components
+        Vec3 o = target - d * (3 * scale);
+        for (double tiny : {1e-30, -1e-300, 1e-300}) {
+            Vec3 dt = d;
+            dt[(axis + 1) % 3] = tiny;
+            dt[(axis + 2) % 3] = -tiny * 0.5;
+            rays.emplace_back(o, dt);
+            // off the vertex by a little, so the tiny component decides
+            Vec3 o2 = o;
+            o2[(axis + 1) % 3] += scale * 1e-9;
+            rays.emplace_back(o2, dt);
+        }
+    }
+    return rays;
+}
+
+TEST(MeshBvh, FloatNodeTestLosesNoHitOnStiffRaysAtEveryScale) {
+    for (double scale : {1e-6, 1.0, 1e6})
+        for (const Vec3 &offset : {Vec3(0), Vec3(1e5, -1e5, 1e5)}) {
+            SCOPED_TRACE(testing::Message() << "scale " << scale << ", offset " << offset.x);
+            auto m = troubleMesh(2, scale, offset);
+            TriangleMesh mesh(m);
+            int hits = 0;
+            expectSameAsBruteForce(mesh, testRays(*m, scale, offset, 150), &hits);
+            expectSameAsBruteForce(mesh, stiffRays(*m, mesh.bvh(), scale, 60), &hits);
+            EXPECT_GT(hits, 200);
+        }
+}
+
+TEST(MeshBvh, FloatNodeTestRoundsTheOriginOutwardPerPlane) {
+    // One triangle in the plane x = 1 and rays from just before that plane (1 - 1e-9, which
+    // rounds to the float 1) climbing to it over t = 1e-6 while entering the box in y: with the
+    // origin rounded to nearest, the x slab would be [0, 0] and the box missed
+    for (double sign : {1.0, -1.0}) {
+        ir::Mesh m;
+        m.positions = {Vec3(sign, 0, -1), Vec3(sign, 2, -1), Vec3(sign, 0, 1)};
+        m.triangles = {{0, 1, 2}};
+        TriangleMesh mesh(std::make_shared<ir::Mesh>(m));
+        Ray r(Vec3(sign * (1 - 1e-9), -0.5e-6, 0), normalize(Vec3(sign * 1e-3, 1, 0)));
+        Expected e = bruteClosest(mesh, r, 0, kInfinity);
+        ASSERT_TRUE(e.found);
+        TriangleMesh::Hit hit;
+        ASSERT_TRUE(mesh.closest(r, 0, kInfinity, &hit));
+        EXPECT_EQ(hit.t, e.t);
+    }
 }
 
 }  // namespace
