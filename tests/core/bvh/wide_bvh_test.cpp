@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <string>
 
-#include "core/bvh/mesh_bvh.h"
+#include "core/bvh/wide_bvh.h"
 #include "core/geometry/triangle_mesh.h"
 #include "core/math/rng.h"
 #include "support/mesh_builder.h"
@@ -108,18 +108,18 @@ void expectClosestMatchesBruteForce(double scale, const Vec3 &offset) {
     EXPECT_GT(hits, 1000);
 }
 
-TEST(MeshBvh, ClosestHitMatchesBruteForceWithDuplicateCoplanarAndDegenerateTriangles) {
+TEST(WideBvh, ClosestHitMatchesBruteForceWithDuplicateCoplanarAndDegenerateTriangles) {
     expectClosestMatchesBruteForce(1, Vec3(0));
 }
 
-TEST(MeshBvh, ClosestHitMatchesBruteForceFarFromTheOriginAtEveryScale) {
+TEST(WideBvh, ClosestHitMatchesBruteForceFarFromTheOriginAtEveryScale) {
     // Float boxes round outward: no hit is lost where a float's spacing is coarse
     expectClosestMatchesBruteForce(1e-6, Vec3(1e6, -3e5, 2e6));
     expectClosestMatchesBruteForce(1e6, Vec3(3e9, 0, -1e9));
     expectClosestMatchesBruteForce(1e-6, Vec3(0.5e-6, 0, 0));
 }
 
-TEST(MeshBvh, AllHitsAreEveryCrossingOfTheLine) {
+TEST(WideBvh, AllHitsAreEveryCrossingOfTheLine) {
     auto m = troubleMesh(3, 1, Vec3(0));
     TriangleMesh mesh(m);
     for (const Ray &r : testRays(*m, 1, Vec3(0), 600)) {
@@ -139,18 +139,18 @@ TEST(MeshBvh, AllHitsAreEveryCrossingOfTheLine) {
 
 /// Every triangle once in leaf order, leaves of 1..4 triangles, and each leaf's float box holds
 /// its triangles' double vertices.
-void expectWellFormed(const MeshBvh &bvh, const ir::Mesh &m) {
+void expectWellFormed(const WideBvh &bvh, const ir::Mesh &m) {
     std::vector<int> seen(m.triangles.size(), 0);
-    for (uint32_t t : bvh.triangleOrder()) ++seen.at(t);
+    for (uint32_t t : bvh.itemOrder()) ++seen.at(t);
     EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int s) { return s == 1; }));
     for (const auto &node : bvh.nodes())
-        for (int c = 0; c < MeshBvh::kWidth; ++c) {
+        for (int c = 0; c < WideBvh::kWidth; ++c) {
             uint32_t ref = node.child[c];
-            if (ref == MeshBvh::kEmpty || !(ref & MeshBvh::kLeaf)) continue;
-            uint32_t first = (ref & ~MeshBvh::kLeaf) >> 2, count = (ref & 3) + 1;
-            ASSERT_LE(first + count, bvh.triangleOrder().size());
+            if (ref == WideBvh::kEmpty || !(ref & WideBvh::kLeaf)) continue;
+            uint32_t first = (ref & ~WideBvh::kLeaf) >> 2, count = (ref & 3) + 1;
+            ASSERT_LE(first + count, bvh.itemOrder().size());
             for (uint32_t i = first; i < first + count; ++i)
-                for (uint32_t v : m.triangles[bvh.triangleOrder()[i]])
+                for (uint32_t v : m.triangles[bvh.itemOrder()[i]])
                     for (int a = 0; a < 3; ++a) {
                         ASSERT_LE(node.lo[a][c], m.positions[v][a]);
                         ASSERT_GE(node.hi[a][c], m.positions[v][a]);
@@ -158,13 +158,15 @@ void expectWellFormed(const MeshBvh &bvh, const ir::Mesh &m) {
         }
 }
 
-TEST(MeshBvh, SameTreeForAnyNumberOfBuildThreads) {
-    // Large enough for the parallel subtrees (more than 4096 triangles)
-    auto m = troubleMesh(5, 1e6, Vec3(1e7, 0, 0));
-    MeshBvh one(*m, 1), two(*m, 2), five(*m, 5);
+TEST(WideBvh, SameTreeForAnyNumberOfBuildThreads) {
+    // Large enough for the parallel subtrees (more than 4096 triangles) and the parallel item
+    // boxes and bins of the top levels (more than 65536)
+    auto m = troubleMesh(6, 1e6, Vec3(1e7, 0, 0));
+    ASSERT_GT(m->triangles.size(), 65536u);
+    WideBvh one(*m, 1), two(*m, 2), five(*m, 5);
     expectWellFormed(one, *m);
-    for (const MeshBvh *other : {&two, &five}) {
-        ASSERT_EQ(other->triangleOrder(), one.triangleOrder());
+    for (const WideBvh *other : {&two, &five}) {
+        ASSERT_EQ(other->itemOrder(), one.itemOrder());
         ASSERT_EQ(other->nodes().size(), one.nodes().size());
         EXPECT_EQ(other->depth(), one.depth());
         for (size_t i = 0; i < one.nodes().size(); ++i) {
@@ -176,9 +178,9 @@ TEST(MeshBvh, SameTreeForAnyNumberOfBuildThreads) {
     }
 }
 
-TEST(MeshBvh, SmallEmptyAndCoincidentMeshes) {
+TEST(WideBvh, SmallEmptyAndCoincidentMeshes) {
     ir::Mesh empty;
-    MeshBvh none(empty, 2);
+    WideBvh none(empty, 2);
     double t = kInfinity;
     int visits = 0;
     none.traverse(Ray(Vec3(0), Vec3(1, 0, 0)), 0, &t, [&](uint32_t, double *) { return ++visits, false; });
@@ -187,7 +189,7 @@ TEST(MeshBvh, SmallEmptyAndCoincidentMeshes) {
     ir::Mesh same;
     same.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
     same.triangles.assign(40, {0, 1, 2});
-    MeshBvh coincident(same, 1);
+    WideBvh coincident(same, 1);
     expectWellFormed(coincident, same);
     std::vector<uint32_t> visited;
     coincident.traverse(Ray(Vec3(0.2, 0.2, 1), Vec3(0, 0, -1)), 0, &t, [&](uint32_t tri, double *) {
@@ -241,7 +243,7 @@ void expectSameAsBruteForce(const TriangleMesh &mesh, const std::vector<Ray> &ra
 /// Rays the float node test must not lose: axis-parallel ones through vertices, rays starting
 /// exactly on the planes of the float boxes, rays grazing along edges, and rays whose
 /// direction has a component of 1e-30 or 1e-300 (a reciprocal beyond the float range).
-std::vector<Ray> stiffRays(const ir::Mesh &m, const MeshBvh &bvh, double scale, int count) {
+std::vector<Ray> stiffRays(const ir::Mesh &m, const WideBvh &bvh, double scale, int count) {
     Rng rng(11);
     std::vector<Ray> rays;
     auto vertex = [&] { return m.positions[static_cast<size_t>(rng.uniform() * m.positions.size())]; };
@@ -255,7 +257,7 @@ std::vector<Ray> stiffRays(const ir::Mesh &m, const MeshBvh &bvh, double scale, 
         // From a plane of a float box, towards a vertex
         const auto &node = bvh.nodes()[static_cast<size_t>(rng.uniform() * bvh.nodes().size())];
         int c = static_cast<int>(rng.uniform() * 4);
-        if (node.child[c] != MeshBvh::kEmpty) {
+        if (node.child[c] != WideBvh::kEmpty) {
             Vec3 o = target + Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) * (3 * scale);
             o[axis] = i % 2 ? node.lo[axis][c] : node.hi[axis][c];
             if (o != target) rays.emplace_back(o, normalize(target - o));
@@ -284,7 +286,7 @@ std::vector<Ray> stiffRays(const ir::Mesh &m, const MeshBvh &bvh, double scale, 
     return rays;
 }
 
-TEST(MeshBvh, FloatNodeTestLosesNoHitOnStiffRaysAtEveryScale) {
+TEST(WideBvh, FloatNodeTestLosesNoHitOnStiffRaysAtEveryScale) {
     for (double scale : {1e-6, 1.0, 1e6})
         for (const Vec3 &offset : {Vec3(0), Vec3(1e5, -1e5, 1e5)}) {
             SCOPED_TRACE(testing::Message() << "scale " << scale << ", offset " << offset.x);
@@ -297,7 +299,7 @@ TEST(MeshBvh, FloatNodeTestLosesNoHitOnStiffRaysAtEveryScale) {
         }
 }
 
-TEST(MeshBvh, FloatNodeTestRoundsTheOriginOutwardPerPlane) {
+TEST(WideBvh, FloatNodeTestRoundsTheOriginOutwardPerPlane) {
     // One triangle in the plane x = 1 and rays from just before that plane (1 - 1e-9, which
     // rounds to the float 1) climbing to it over t = 1e-6 while entering the box in y: with the
     // origin rounded to nearest, the x slab would be [0, 0] and the box missed

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
-// The BVH of a triangle mesh: four children per node with their boxes stored as floats rounded
+// A four-wide BVH over item boxes (the triangles of a mesh, the operands of a CSG node): four
+// children per node with their boxes stored as floats rounded
 // outward (so a box only ever grows, and no hit is lost), tested four at a time in float with
 // margins that make the test conservative (every box the exact ray meets is visited; rays that
-// do not fit in floats take a double-precision test); leaves of up to four triangles; binned
+// do not fit in floats take a double-precision test); leaves of up to four items; binned
 // SAH build, parallel below the top levels and identical for any number of threads.
 #pragma once
 
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "core/ir/mesh.h"
+#include "core/math/bounds3.h"
 #include "core/math/float_util.h"
 #include "core/math/ray.h"
 
@@ -21,12 +23,12 @@
 
 namespace rt {
 
-class MeshBvh {
+class WideBvh {
   public:
     static constexpr int kWidth = 4;
-    static constexpr int kMaxLeafTriangles = 4;
-    /// Triangles a mesh BVH can index (29 bits of a child reference).
-    static constexpr size_t kMaxTriangles = size_t{1} << 29;
+    static constexpr int kMaxLeafItems = 4;
+    /// Items a BVH can index (29 bits of a child reference).
+    static constexpr size_t kMaxItems = size_t{1} << 29;
 
     struct alignas(64) Node {
         float lo[3][kWidth];  ///< per axis, the lower bound of each child
@@ -39,19 +41,25 @@ class MeshBvh {
     static constexpr uint32_t kLeaf = 0x80000000u;
     static constexpr uint32_t kEmpty = 0xffffffffu;
 
-    MeshBvh() = default;
+    WideBvh() = default;
     /// threads: 0 for std::thread::hardware_concurrency(). The tree does not depend on it.
-    /// Throws std::length_error beyond kMaxTriangles.
-    explicit MeshBvh(const ir::Mesh &mesh, int threads = 0);
+    /// Throws std::length_error beyond kMaxItems.
+    /// Over the triangles of a mesh.
+    explicit WideBvh(const ir::Mesh &mesh, int threads = 0);
+    /// Over item boxes, which may be empty, infinite or beyond the float range: they are
+    /// rounded outward to floats, and their centres clamped to it.
+    explicit WideBvh(const std::vector<Bounds3> &items, int threads = 1);
 
     const std::vector<Node> &nodes() const { return nodes_; }
-    /// Triangle indices in leaf order.
-    const std::vector<uint32_t> &triangleOrder() const { return order_; }
+    /// Item (triangle) indices in leaf order.
+    const std::vector<uint32_t> &itemOrder() const { return order_; }
     size_t bytes() const { return nodes_.capacity() * sizeof(Node) + order_.capacity() * sizeof(uint32_t); }
     int depth() const { return depth_; }
 
-    /// Visits the triangles whose leaves the ray reaches within [tMin, *tMax], nearest boxes
-    /// first. visit(triangle, tMax) may lower *tMax and returns true to stop.
+    bool empty() const { return nodes_.empty(); }
+
+    /// Visits the items whose leaves the ray reaches within [tMin, *tMax], nearest boxes
+    /// first. visit(item, tMax) may lower *tMax and returns true to stop.
     template <typename Visit>
     void traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit) const;
 
@@ -59,7 +67,7 @@ class MeshBvh {
     /// Depth bound of the build; with at most three pushes a level it sizes the traversal stack.
     static constexpr int kMaxDepth = 64;
     static constexpr int kStackSize = 3 * kMaxDepth + 4;
-    friend class MeshBvhBuilder;
+    friend class WideBvhBuilder;
 
     /// The slab test of the four children of a node: the mask of those the ray meets within
     /// [tMin, tMax], and for each a float no greater than its near distance.
@@ -88,6 +96,8 @@ class MeshBvh {
     static constexpr float kMargin = 1.0f / (1 << 20);  ///< 16 float units
     static constexpr float kTiny = 1.17549435e-38f;       ///< the smallest normal float
 #endif
+    template <typename BoxOf>
+    void build(size_t n, BoxOf &&boxOf, int threads);
     template <typename Slabs, typename Visit>
     void walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit) const;
 
@@ -97,7 +107,7 @@ class MeshBvh {
 };
 
 template <typename Visit>
-void MeshBvh::traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit) const {
+void WideBvh::traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit) const {
     if (nodes_.empty()) return;
 #if defined(__SSE2__)
     FloatSlabs f;
@@ -107,7 +117,7 @@ void MeshBvh::traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit)
 }
 
 #if defined(__SSE2__)
-inline int MeshBvh::FloatSlabs::test(const Node &n, double tMin, double tMax, float tn[kWidth]) const {
+inline int WideBvh::FloatSlabs::test(const Node &n, double tMin, double tMax, float tn[kWidth]) const {
     __m128 t0 = _mm_set1_ps(static_cast<float>(tMin)), t1 = _mm_set1_ps(static_cast<float>(tMax));
     for (int a = 0; a < 3; ++a) {
         __m128 nearB = _mm_load_ps(nearHi[a] ? n.hi[a] : n.lo[a]);
@@ -133,11 +143,11 @@ inline int MeshBvh::FloatSlabs::test(const Node &n, double tMin, double tMax, fl
 }
 #endif
 
-inline MeshBvh::DoubleSlabs::DoubleSlabs(const Ray &ray)
+inline WideBvh::DoubleSlabs::DoubleSlabs(const Ray &ray)
     : o{ray.o.x, ray.o.y, ray.o.z}, inv{1 / ray.d.x, 1 / ray.d.y, 1 / ray.d.z},
       nearHi{inv[0] < 0, inv[1] < 0, inv[2] < 0} {}
 
-inline int MeshBvh::DoubleSlabs::test(const Node &n, double tMin, double tMax, float tn[kWidth]) const {
+inline int WideBvh::DoubleSlabs::test(const Node &n, double tMin, double tMax, float tn[kWidth]) const {
     // Far distances grow by their rounding error away from zero, as in Bvh::hitNode
     constexpr double kSlop = 2 * gamma(3);
     alignas(16) double t[4];
@@ -195,7 +205,7 @@ inline int MeshBvh::DoubleSlabs::test(const Node &n, double tMin, double tMax, f
 }
 
 template <typename Slabs, typename Visit>
-void MeshBvh::walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit) const {
+void WideBvh::walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit) const {
     struct Entry {
         uint32_t ref;
         float tNear;  ///< no greater than the child's near distance
