@@ -317,5 +317,69 @@ TEST(WideBvh, FloatNodeTestRoundsTheOriginOutwardPerPlane) {
     }
 }
 
+/// Whether the ray meets box b within [tMin, tMax], in double with the far distances grown by
+/// their rounding error (a NaN distance, the origin on the plane of a flat direction, is no
+/// constraint; an infinite one is not grown into a NaN): the boxes a traversal must visit.
+bool meets(const Bounds3 &b, const Ray &r, double tMin, double tMax) {
+    if (b.isEmpty()) return false;
+    double t0 = tMin, t1 = tMax;
+    for (int a = 0; a < 3; ++a) {
+        double inv = 1 / r.d[a];
+        double n = (b.min[a] - r.o[a]) * inv, f = (b.max[a] - r.o[a]) * inv;
+        if (n > f) std::swap(n, f);
+        if (std::isfinite(f)) f += 2 * gamma(3) * std::abs(f);
+        if (n > t0) t0 = n;
+        if (f < t1) t1 = f;
+    }
+    return t0 <= t1;
+}
+
+TEST(WideBvh, OverItemBoxesVisitsEveryBoxTheRayMeetsEvenEmptyInfiniteAndHugeOnes) {
+    Rng rng(3);
+    std::vector<Bounds3> boxes;
+    for (int i = 0; i < 3000; ++i) {
+        Vec3 c(rng.uniform() * 20 - 10, rng.uniform() * 20 - 10, rng.uniform() * 20 - 10);
+        Vec3 h(rng.uniform(), rng.uniform() * 0.1, rng.uniform() * 2);
+        Bounds3 b(c - h, c + h);
+        switch (i % 97) {
+            case 0: b = Bounds3(); break;            // empty
+            case 1: b = Bounds3::infinite(); break;  // unbounded
+            case 2: b.max.x = kInfinity; break;      // a half space
+            case 3: b.min.y = -1e300; break;         // beyond the float range
+            case 4: b = Bounds3(Vec3(1e39), Vec3(2e39)); break;
+            case 5: b = Bounds3(c, c); break;        // a point
+            default: break;
+        }
+        boxes.push_back(b);
+    }
+    WideBvh bvh(boxes, 2);
+    std::vector<int> seen(boxes.size(), 0);
+    for (uint32_t i : bvh.itemOrder()) ++seen.at(i);
+    EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int s) { return s == 1; }));
+    int met = 0;
+    for (int k = 0; k < 800; ++k) {
+        Vec3 o(rng.uniform() * 30 - 15, rng.uniform() * 30 - 15, rng.uniform() * 30 - 15);
+        Vec3 d(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5);
+        if (k % 4 == 1) d[k % 3] = 0;                   // flat directions
+        if (k % 4 == 2) o = boxes[k % boxes.size()].min;  // from a box corner
+        if (k % 8 == 3) d[(k + 1) % 3] = 1e-300;
+        if (k % 16 == 5) o = o * 1e31;                  // beyond the float range: the double test
+        if (lengthSquared(d) == 0) continue;
+        Ray r(o, d);
+        for (double tMin : {0.0, -kInfinity}) {
+            double tMax = k % 3 ? kInfinity : 7.5;
+            std::vector<char> visited(boxes.size(), 0);
+            double far = tMax;
+            bvh.traverse(r, tMin, &far, [&](uint32_t i, double *) { return visited[i] = 1, false; });
+            for (size_t i = 0; i < boxes.size(); ++i)
+                if (meets(boxes[i], r, tMin, tMax)) {
+                    ++met;
+                    ASSERT_TRUE(visited[i]) << "box " << i << ", ray " << k << ", tMin " << tMin << ", " << describe(r);
+                }
+        }
+    }
+    EXPECT_GT(met, 5000);
+}
+
 }  // namespace
 }  // namespace rt
