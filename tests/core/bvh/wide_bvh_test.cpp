@@ -119,22 +119,25 @@ TEST(WideBvh, ClosestHitMatchesBruteForceFarFromTheOriginAtEveryScale) {
     expectClosestMatchesBruteForce(1e-6, Vec3(0.5e-6, 0, 0));
 }
 
+/// allHits gives every crossing of the line that a brute-force loop finds.
+void expectAllHitsMatchBruteForce(const TriangleMesh &mesh, const Ray &r) {
+    std::vector<std::pair<double, uint32_t>> brute, bvh;
+    for (uint32_t tri = 0; tri < mesh.triangleCount(); ++tri) {
+        TriangleMesh::Hit h;
+        if (mesh.intersectTriangle(r, tri, &h)) brute.emplace_back(h.t, tri);
+    }
+    std::vector<TriangleMesh::Hit> hits;
+    mesh.allHits(r, hits);
+    for (const auto &h : hits) bvh.emplace_back(h.t, h.triangle);
+    std::sort(brute.begin(), brute.end());
+    std::sort(bvh.begin(), bvh.end());
+    ASSERT_EQ(bvh, brute);
+}
+
 TEST(WideBvh, AllHitsAreEveryCrossingOfTheLine) {
     auto m = troubleMesh(3, 1, Vec3(0));
     TriangleMesh mesh(m);
-    for (const Ray &r : testRays(*m, 1, Vec3(0), 600)) {
-        std::vector<std::pair<double, uint32_t>> brute, bvh;
-        for (uint32_t tri = 0; tri < mesh.triangleCount(); ++tri) {
-            TriangleMesh::Hit h;
-            if (mesh.intersectTriangle(r, tri, &h)) brute.emplace_back(h.t, tri);
-        }
-        std::vector<TriangleMesh::Hit> hits;
-        mesh.allHits(r, hits);
-        for (const auto &h : hits) bvh.emplace_back(h.t, h.triangle);
-        std::sort(brute.begin(), brute.end());
-        std::sort(bvh.begin(), bvh.end());
-        ASSERT_EQ(bvh, brute);
-    }
+    for (const Ray &r : testRays(*m, 1, Vec3(0), 600)) ASSERT_NO_FATAL_FAILURE(expectAllHitsMatchBruteForce(mesh, r));
 }
 
 /// Every triangle once in leaf order, leaves of 1..4 triangles, and each leaf's float box holds
@@ -226,17 +229,8 @@ void expectSameAsBruteForce(const TriangleMesh &mesh, const std::vector<Ray> &ra
             ASSERT_EQ(hit.triangle, e.triangle) << describe(r) << ", tMin " << tMin;
             ++*hits;
         }
-        std::vector<std::pair<double, uint32_t>> brute, bvh;
-        for (uint32_t tri = 0; tri < mesh.triangleCount(); ++tri) {
-            TriangleMesh::Hit h;
-            if (mesh.intersectTriangle(r, tri, &h)) brute.emplace_back(h.t, tri);
-        }
-        std::vector<TriangleMesh::Hit> all;
-        mesh.allHits(r, all);
-        for (const auto &h : all) bvh.emplace_back(h.t, h.triangle);
-        std::sort(brute.begin(), brute.end());
-        std::sort(bvh.begin(), bvh.end());
-        ASSERT_EQ(bvh, brute) << describe(r);
+        SCOPED_TRACE(describe(r));
+        ASSERT_NO_FATAL_FAILURE(expectAllHitsMatchBruteForce(mesh, r));
     }
 }
 
