@@ -82,13 +82,14 @@ struct Box {
 /// set keeps the exponent away from both denormals and infinities).
 struct Item {
     F4 lo, hi;
-    /// Twice the centre, spare lane 0 + 0; the bounds clamped to +-2^126 first, so the centre
-    /// of an infinite, empty or huge box is a finite float (a mesh's boxes are well within)
+    /// Twice the centre, spare lane 0 + 0, clamped to +-2^127: the centre of an infinite or
+    /// huge box is a finite float, and so is that of an empty box or one infinite both ways
+    /// (the NaN of inf - inf gives way to the second operand of max)
     F4 centroid() const {
         const F4 big = F4::of(kBig, kBig, kBig, kBig), small = F4::of(-kBig, -kBig, -kBig, -kBig);
-        return min(max(lo, small), big) + min(max(hi, small), big);
+        return min(max(lo + hi, small), big);
     }
-    static constexpr float kBig = 8.50705917e37f;  // 2^126
+    static constexpr float kBig = 1.70141183e38f;  // 2^127
     uint32_t index() const {
         float f[4];
         hi.store(f);
@@ -232,18 +233,22 @@ class WideBvhBuilder {
             // The top levels bin in parallel: boxes merge by min and max and counts by sums,
             // both exact, so the bins are the same for any number of threads
             // (the levels above the subtree tasks, which run one at a time)
-            bool top = depth <= kTaskDepth && n >= kParallelFrom;
-            std::vector<Bins> parts(top ? static_cast<size_t>(threads_) : 1);
-            parallelFor(r.begin, r.end, parts.size(), [&](size_t part, size_t begin, size_t end) {
-                binItems(begin, end, parts[part]);
-            });
-            Bins &merged = parts[0];
-            for (size_t p = 1; p < parts.size(); ++p)
-                for (int a = 0; a < 3; ++a)
-                    for (int k = 0; k < kBins; ++k) {
-                        merged.boxes[a][k].grow(parts[p].boxes[a][k]);
-                        merged.counts[a][k] += parts[p].counts[a][k];
-                    }
+            Bins merged;
+            if (depth <= kTaskDepth && n >= kParallelFrom && threads_ > 1) {
+                std::vector<Bins> parts(static_cast<size_t>(threads_));
+                parallelFor(r.begin, r.end, parts.size(), [&](size_t part, size_t begin, size_t end) {
+                    binItems(begin, end, parts[part]);
+                });
+                merged = parts[0];
+                for (size_t p = 1; p < parts.size(); ++p)
+                    for (int a = 0; a < 3; ++a)
+                        for (int k = 0; k < kBins; ++k) {
+                            merged.boxes[a][k].grow(parts[p].boxes[a][k]);
+                            merged.counts[a][k] += parts[p].counts[a][k];
+                        }
+            } else {
+                binItems(r.begin, r.end, merged);
+            }
             const auto &bins = merged.boxes;
             const auto &counts = merged.counts;
             for (int a = 0; a < 3; ++a) {
