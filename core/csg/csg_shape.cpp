@@ -40,7 +40,7 @@ int CsgShape::addOp(Op op, std::vector<int> children) {
         std::vector<Bounds3> bounds;
         for (size_t i = n.bvhFirst; i < n.children.size(); ++i)
             bounds.push_back(nodes_[n.children[i]].bounds);
-        n.bvh = std::make_unique<Bvh>(bounds);
+        n.bvh = std::make_unique<WideBvh>(bounds);
     }
     nodes_.push_back(std::move(n));
     return static_cast<int>(nodes_.size()) - 1;

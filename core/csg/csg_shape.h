@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-#include "core/bvh/bvh.h"
+#include "core/bvh/wide_bvh.h"
 #include "core/csg/span_ops.h"
 #include "core/geometry/shape.h"
 
@@ -54,7 +54,7 @@ class CsgShape final : public Shape {
         /// Unions and differences of many operands: a BVH over the bounds of the operands
         /// after `bvhFirst` (all of a union's, a difference's subtrahends), so a ray visits
         /// only those it reaches instead of testing every operand's bounds.
-        std::unique_ptr<Bvh> bvh;
+        std::unique_ptr<WideBvh> bvh;
         size_t bvhFirst = 0;
     };
 

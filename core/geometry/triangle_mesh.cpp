@@ -37,7 +37,7 @@ TriangleMesh::TriangleMesh(ir::MeshPtr mesh, int buildThreads) : mesh_(std::move
         if (!m.normals.empty())
             smooth_[i] = !(m.normals[t[0]] == m.normals[t[1]] && m.normals[t[1]] == m.normals[t[2]]);
     }
-    bvh_ = MeshBvh(m, buildThreads);
+    bvh_ = WideBvh(m, buildThreads);
     topology_ = ir::analyzeMesh(m);
 }
 

@@ -7,7 +7,7 @@
 #include <memory>
 #include <vector>
 
-#include "core/bvh/mesh_bvh.h"
+#include "core/bvh/wide_bvh.h"
 #include "core/geometry/shape.h"
 #include "core/ir/mesh.h"
 
@@ -35,7 +35,7 @@ class TriangleMesh {
     size_t triangleCount() const { return mesh_->triangles.size(); }
     /// Bytes held by the BVH and the derived data (not counting the shared ir::Mesh).
     size_t extraBytes() const;
-    const MeshBvh &bvh() const { return bvh_; }
+    const WideBvh &bvh() const { return bvh_; }
 
     /// Watertight ray-triangle test (Woop, Benthin and Wald 2013; pbrt-v3 section 3.6.2) for
     /// any t along the line, with a fill convention on edges and vertices: a ray through a
@@ -66,7 +66,7 @@ class TriangleMesh {
                    Hit *hit) const;
 
     ir::MeshPtr mesh_;
-    MeshBvh bvh_;
+    WideBvh bvh_;
     Bounds3 bounds_;
     ir::MeshTopology topology_;
     /// Per triangle: true when its vertex normals differ (POV-Ray shades only such triangles

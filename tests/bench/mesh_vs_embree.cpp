@@ -212,20 +212,20 @@ int run(int levels) {
                        static_cast<double>(tris);
 
     double cpu1 = 0, cpu2 = 0;
-    double build1 = bestWall(3, [&] { MeshBvh bvh(*mesh, 1); }, &cpu1);
-    double build2 = bestWall(3, [&] { MeshBvh bvh(*mesh, 2); }, &cpu2);
+    double build1 = bestWall(3, [&] { WideBvh bvh(*mesh, 1); }, &cpu1);
+    double build2 = bestWall(3, [&] { WideBvh bvh(*mesh, 2); }, &cpu2);
     auto tm = std::make_unique<TriangleMesh>(mesh);
     double bvhBytes = tm->extraBytes() / static_cast<double>(tris);
     {
         size_t leaves = 0, children = 0;
         for (const auto &n : tm->bvh().nodes())
             for (uint32_t c : n.child) {
-                children += c != MeshBvh::kEmpty;
-                leaves += c != MeshBvh::kEmpty && (c & MeshBvh::kLeaf);
+                children += c != WideBvh::kEmpty;
+                leaves += c != WideBvh::kEmpty && (c & WideBvh::kLeaf);
             }
         std::printf("scadray BVH: %zu nodes of %zu bytes, %.2f children a node, %zu leaves of %.2f triangles, "
                     "depth %d\n",
-                    tm->bvh().nodes().size(), sizeof(MeshBvh::Node),
+                    tm->bvh().nodes().size(), sizeof(WideBvh::Node),
                     children / static_cast<double>(tm->bvh().nodes().size()), leaves,
                     tris / static_cast<double>(leaves), tm->bvh().depth());
     }

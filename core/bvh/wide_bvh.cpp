@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
-// Binned SAH build of the four-wide mesh BVH. Triangle boxes are rounded outward to float once;
+// Binned SAH build of the four-wide BVH. Item boxes are rounded outward to float once;
 // each node splits its range in two by the SAH (16 bins on every axis) and splits its largest
 // child again until it has four. Below the top levels, subtrees are built by separate threads
 // into their own node arrays and appended in a fixed order, so the tree is the same for any
 // thread count.
-#include "core/bvh/mesh_bvh.h"
+#include "core/bvh/wide_bvh.h"
 
 #include <algorithm>
 #include <array>
@@ -78,12 +78,19 @@ struct Box {
     float upper(int axis) const { float f[4]; hi.store(f); return f[axis]; }
 };
 
-/// A triangle's box; the spare lanes hold 0 and the triangle index (as a normal float: bit 30
+/// An item's box; the spare lanes hold 0 and the item index (as a normal float: bit 30
 /// set keeps the exponent away from both denormals and infinities).
 struct Item {
     F4 lo, hi;
-    F4 centroid() const { return lo + hi; }  ///< twice the centre, spare lane 0 + 0
-    uint32_t triangle() const {
+    /// Twice the centre, spare lane 0 + 0, clamped to +-2^127: the centre of an infinite or
+    /// huge box is a finite float, and so is that of an empty box or one infinite both ways
+    /// (the NaN of inf - inf gives way to the second operand of max)
+    F4 centroid() const {
+        const F4 big = F4::of(kBig, kBig, kBig, kBig), small = F4::of(-kBig, -kBig, -kBig, -kBig);
+        return min(max(lo + hi, small), big);
+    }
+    static constexpr float kBig = 1.70141183e38f;  // 2^127
+    uint32_t index() const {
         float f[4];
         hi.store(f);
         uint32_t bits;
@@ -103,27 +110,29 @@ struct Range {
 
 }  // namespace
 
-class MeshBvhBuilder {
+class WideBvhBuilder {
   public:
     static constexpr int kBins = 16;
     static constexpr size_t kTasksFrom = 4096;
+    /// Nodes at this depth (the root is at 1) hand their interior children to subtree tasks.
+    static constexpr int kTaskDepth = 2;
     static constexpr uint32_t kAllAxesFrom = 64;
+    /// Item boxes and the bins of ranges from this size on are computed by all threads.
+    static constexpr size_t kParallelFrom = 65536;
 
-    MeshBvhBuilder(const ir::Mesh &mesh, MeshBvh &bvh, int threads) : bvh_(bvh), threads_(threads) {
-        size_t n = mesh.triangles.size();
+    /// boxOf(i, lo, hi) gives the double bounds of item i.
+    template <typename BoxOf>
+    WideBvhBuilder(size_t n, BoxOf &&boxOf, WideBvh &bvh, int threads) : bvh_(bvh), threads_(threads) {
         items_.resize(n);
-        parallelFor(n, [&](size_t begin, size_t end) {
+        parallelFor(0, n, n >= kParallelFrom ? static_cast<size_t>(threads) : 1, [&](size_t, size_t begin, size_t end) {
             for (size_t i = begin; i < end; ++i) {
-                const auto &t = mesh.triangles[i];
-                float lo[3], hi[3];
-                for (int a = 0; a < 3; ++a) {
-                    lo[a] = roundDown(std::min({mesh.positions[t[0]][a], mesh.positions[t[1]][a], mesh.positions[t[2]][a]}));
-                    hi[a] = roundUp(std::max({mesh.positions[t[0]][a], mesh.positions[t[1]][a], mesh.positions[t[2]][a]}));
-                }
+                double lo[3], hi[3];
+                boxOf(i, lo, hi);
                 uint32_t bits = static_cast<uint32_t>(i) | Item::kTag;
                 float tag;
                 std::memcpy(&tag, &bits, 4);
-                items_[i] = {F4::of(lo[0], lo[1], lo[2], 0), F4::of(hi[0], hi[1], hi[2], tag)};
+                items_[i] = {F4::of(roundDown(lo[0]), roundDown(lo[1]), roundDown(lo[2]), 0),
+                             F4::of(roundUp(hi[0]), roundUp(hi[1]), roundUp(hi[2]), tag)};
             }
         });
     }
@@ -136,12 +145,12 @@ class MeshBvhBuilder {
         std::vector<Pending> pending;
         // Subtrees below the second level are separate tasks whatever the thread count, so the
         // node layout is the same too
-        int taskDepth = items_.size() >= kTasksFrom ? 2 : -1;
+        int taskDepth = items_.size() >= kTasksFrom ? kTaskDepth : -1;
         int depth = fillNode(0, root, bvh_.nodes_, 1, taskDepth, &pending);
         bvh_.depth_ = std::max(bvh_.depth_, depth);
         runPending(pending);
         bvh_.order_.resize(items_.size());
-        for (size_t i = 0; i < items_.size(); ++i) bvh_.order_[i] = items_[i].triangle();
+        for (size_t i = 0; i < items_.size(); ++i) bvh_.order_[i] = items_[i].index();
     }
 
   private:
@@ -151,19 +160,25 @@ class MeshBvhBuilder {
         uint32_t node;
         int slot;
         int depth;
-        std::vector<MeshBvh::Node> nodes;
+        std::vector<WideBvh::Node> nodes;
         int maxDepth = 0;
     };
 
+    /// Per axis and bin, the box of the items whose centroid falls in it and their count.
+    struct Bins {
+        std::array<std::array<Box, kBins>, 3> boxes;
+        std::array<std::array<uint32_t, kBins>, 3> counts{};
+    };
+
+    /// f(part, begin, end) for `parts` consecutive chunks of [begin, end), one thread each.
     template <typename F>
-    void parallelFor(size_t n, F &&f) {
-        int t = n >= 65536 ? threads_ : 1;
-        if (t <= 1) return f(size_t{0}, n);
+    static void parallelFor(size_t begin, size_t end, size_t parts, F &&f) {
+        if (parts <= 1) return f(size_t{0}, begin, end);
         std::vector<std::thread> workers;
-        size_t chunk = (n + t - 1) / t;
-        for (int i = 1; i < t; ++i)
-            workers.emplace_back([&, i] { f(std::min(n, i * chunk), std::min(n, (i + 1) * chunk)); });
-        f(0, std::min(n, chunk));
+        size_t chunk = (end - begin + parts - 1) / parts;
+        auto run = [&](size_t i) { f(i, std::min(end, begin + i * chunk), std::min(end, begin + (i + 1) * chunk)); };
+        for (size_t i = 1; i < parts; ++i) workers.emplace_back(run, i);
+        run(0);
         for (auto &w : workers) w.join();
     }
 
@@ -192,7 +207,7 @@ class MeshBvhBuilder {
         r.centroids.lo.store(lo);
         r.centroids.hi.store(hi);
         // Past the depth bound, split by count only: the depth then grows as log4 of the items
-        bool sah = depth < MeshBvh::kMaxDepth - 16;
+        bool sah = depth < WideBvh::kMaxDepth - 16;
         // Small ranges, where the fixed cost of the bins dominates, bin on their longest axis only
         int longest = 0;
         for (int a = 1; a < 3; ++a)
@@ -202,19 +217,40 @@ class MeshBvhBuilder {
             if (sah && extent > 0 && (n >= kAllAxesFrom || a == longest)) scale[a] = kBins / extent * (1 - 1e-6f);
         }
         if (scale[0] > 0 || scale[1] > 0 || scale[2] > 0) {
-            std::array<std::array<Box, kBins>, 3> bins;
-            std::array<std::array<uint32_t, kBins>, 3> counts{};
             const F4 origin = r.centroids.lo, scale4 = F4::of(scale[0], scale[1], scale[2], 0);
             const F4 zero = F4::of(0, 0, 0, 0), last = F4::of(kBins - 1, kBins - 1, kBins - 1, 0);
-            for (uint32_t i = r.begin; i < r.end; ++i) {
-                const Item &it = items_[i];
-                int b[4];
-                min(max((it.centroid() - origin) * scale4, zero), last).storeInt(b);
-                for (int a = 0; a < 3; ++a) {
-                    ++counts[a][b[a]];
-                    bins[a][b[a]].grow(it.lo, it.hi);
+            auto binItems = [&](size_t begin, size_t end, Bins &out) {
+                for (size_t i = begin; i < end; ++i) {
+                    const Item &it = items_[i];
+                    int b[4];
+                    min(max((it.centroid() - origin) * scale4, zero), last).storeInt(b);
+                    for (int a = 0; a < 3; ++a) {
+                        ++out.counts[a][b[a]];
+                        out.boxes[a][b[a]].grow(it.lo, it.hi);
+                    }
                 }
+            };
+            // The top levels bin in parallel: boxes merge by min and max and counts by sums,
+            // both exact, so the bins are the same for any number of threads
+            // (the levels above the subtree tasks, which run one at a time)
+            Bins merged;
+            if (depth <= kTaskDepth && n >= kParallelFrom && threads_ > 1) {
+                std::vector<Bins> parts(static_cast<size_t>(threads_));
+                parallelFor(r.begin, r.end, parts.size(), [&](size_t part, size_t begin, size_t end) {
+                    binItems(begin, end, parts[part]);
+                });
+                merged = parts[0];
+                for (size_t p = 1; p < parts.size(); ++p)
+                    for (int a = 0; a < 3; ++a)
+                        for (int k = 0; k < kBins; ++k) {
+                            merged.boxes[a][k].grow(parts[p].boxes[a][k]);
+                            merged.counts[a][k] += parts[p].counts[a][k];
+                        }
+            } else {
+                binItems(r.begin, r.end, merged);
             }
+            const auto &bins = merged.boxes;
+            const auto &counts = merged.counts;
             for (int a = 0; a < 3; ++a) {
                 if (scale[a] == 0) continue;
                 std::array<float, kBins> rightArea{};
@@ -245,7 +281,7 @@ class MeshBvhBuilder {
         // Relative cost: a node visit (a cache miss, mostly) costs about one triangle test
         float area = r.box.halfArea();
         float splitCost = area > 0 && bestAxis >= 0 ? 1.0f + bestCost / area : INFINITY;
-        if (n <= static_cast<uint32_t>(MeshBvh::kMaxLeafTriangles) && splitCost >= n) {
+        if (n <= static_cast<uint32_t>(WideBvh::kMaxLeafItems) && splitCost >= n) {
             r.decision = Range::kLeaf;
             return;
         }
@@ -301,7 +337,7 @@ class MeshBvhBuilder {
 
     /// Fills node `index` of `nodes` with up to four children made from r (already measured),
     /// recursing into interior children; returns the depth reached.
-    int fillNode(uint32_t index, Range r, std::vector<MeshBvh::Node> &nodes, int depth, int taskDepth,
+    int fillNode(uint32_t index, Range r, std::vector<WideBvh::Node> &nodes, int depth, int taskDepth,
                  std::vector<Pending> *pending) {
         if (r.decision == Range::kUndecided) decide(r, depth);
         std::array<Range, 4> kids;
@@ -326,19 +362,19 @@ class MeshBvhBuilder {
             kids[best + 1] = right;
             ++count;
         }
-        MeshBvh::Node node;
+        WideBvh::Node node;
         for (int c = 0; c < 4; ++c) {
             for (int a = 0; a < 3; ++a) {
                 node.lo[a][c] = c < count ? kids[c].box.lower(a) : INFINITY;
                 node.hi[a][c] = c < count ? kids[c].box.upper(a) : -INFINITY;
             }
-            node.child[c] = MeshBvh::kEmpty;
+            node.child[c] = WideBvh::kEmpty;
         }
         int reached = depth;
         for (int c = 0; c < count; ++c) {
             const Range &k = kids[c];
             if (k.decision == Range::kLeaf) {
-                node.child[c] = MeshBvh::kLeaf | k.begin << 2 | (k.end - k.begin - 1);
+                node.child[c] = WideBvh::kLeaf | k.begin << 2 | (k.end - k.begin - 1);
             } else if (depth == taskDepth) {
                 pending->push_back({k, index, c, depth + 1, {}, 0});
             } else {
@@ -374,27 +410,67 @@ class MeshBvhBuilder {
             uint32_t base = static_cast<uint32_t>(nodes.size());
             for (auto &n : p.nodes)
                 for (auto &c : n.child)
-                    if (c != MeshBvh::kEmpty && !(c & MeshBvh::kLeaf)) c += base;
+                    if (c != WideBvh::kEmpty && !(c & WideBvh::kLeaf)) c += base;
             nodes.insert(nodes.end(), p.nodes.begin(), p.nodes.end());
             nodes[p.node].child[p.slot] = base;
             bvh_.depth_ = std::max(bvh_.depth_, p.maxDepth);
-            std::vector<MeshBvh::Node>().swap(p.nodes);
+            std::vector<WideBvh::Node>().swap(p.nodes);
         }
     }
 
-    MeshBvh &bvh_;
+    WideBvh &bvh_;
     int threads_;
     std::vector<Item> items_;
 };
 
-MeshBvh::MeshBvh(const ir::Mesh &mesh, int threads) {
-    if (mesh.triangles.size() >= kMaxTriangles)
-        throw std::length_error("a mesh BVH indexes at most 2^29 triangles");
-    if (mesh.triangles.empty()) return;
+#if defined(__SSE2__)
+bool WideBvh::FloatSlabs::init(const Ray &ray) {
+    for (int a = 0; a < 3; ++a) {
+        double o = ray.o[a], inv = 1 / ray.d[a];
+        if (!(std::abs(o) <= 1e30)) return false;
+        if (!std::isinf(inv) && !(std::abs(inv) >= 1e-30 && std::abs(inv) <= 1e30)) return false;
+        // For a positive direction the near distance (b - o) * inv is smallest for the largest
+        // origin: the float above o; the far distance is largest for the float below. A plane b
+        // is a float, so b - oNear has the sign of b - o or is zero (a NaN distance where inv
+        // is infinite, which the test ignores)
+        nearHi[a] = inv < 0;
+        float up = roundUp(o), down = roundDown(o);
+        oNear[a] = _mm_set1_ps(nearHi[a] ? down : up);
+        oFar[a] = _mm_set1_ps(nearHi[a] ? up : down);
+        this->inv[a] = _mm_set1_ps(static_cast<float>(inv));
+    }
+    return true;
+}
+#endif
+
+template <typename BoxOf>
+void WideBvh::build(size_t n, BoxOf &&boxOf, int threads) {
+    if (n >= kMaxItems) throw std::length_error("a BVH indexes at most 2^29 items (triangles or CSG operands)");
+    if (n == 0) return;
     if (threads <= 0) threads = std::max(1u, std::thread::hardware_concurrency());
-    MeshBvhBuilder builder(mesh, *this, threads);
+    WideBvhBuilder builder(n, boxOf, *this, threads);
     builder.build();
     nodes_.shrink_to_fit();
+}
+
+WideBvh::WideBvh(const ir::Mesh &mesh, int threads) {
+    build(mesh.triangles.size(), [&](size_t i, double lo[3], double hi[3]) {
+        const auto &t = mesh.triangles[i];
+        const Vec3 &p0 = mesh.positions[t[0]], &p1 = mesh.positions[t[1]], &p2 = mesh.positions[t[2]];
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = std::min({p0[a], p1[a], p2[a]});
+            hi[a] = std::max({p0[a], p1[a], p2[a]});
+        }
+    }, threads);
+}
+
+WideBvh::WideBvh(const std::vector<Bounds3> &items, int threads) {
+    build(items.size(), [&](size_t i, double lo[3], double hi[3]) {
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = items[i].min[a];
+            hi[a] = items[i].max[a];
+        }
+    }, threads);
 }
 
 }  // namespace rt

@@ -1,0 +1,283 @@
+// SPDX-License-Identifier: MIT
+// A four-wide BVH over item boxes (the triangles of a mesh, the operands of a CSG node): four
+// children per node with their boxes stored as floats rounded
+// outward (so a box only ever grows, and no hit is lost), tested four at a time in float with
+// margins that make the test conservative (every box the exact ray meets is visited; rays that
+// do not fit in floats take a double-precision test); leaves of up to four items; binned
+// SAH build, parallel below the top levels and identical for any number of threads.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "core/ir/mesh.h"
+#include "core/math/bounds3.h"
+#include "core/math/float_util.h"
+#include "core/math/ray.h"
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace rt {
+
+class WideBvh {
+  public:
+    static constexpr int kWidth = 4;
+    static constexpr int kMaxLeafItems = 4;
+    /// Items a BVH can index (29 bits of a child reference).
+    static constexpr size_t kMaxItems = size_t{1} << 29;
+
+    struct alignas(64) Node {
+        float lo[3][kWidth];  ///< per axis, the lower bound of each child
+        float hi[3][kWidth];
+        /// kLeaf | first << 2 | (count - 1), an interior node's index, or kEmpty
+        uint32_t child[kWidth];
+        // 16 bytes of padding: a node is two cache lines
+    };
+    static_assert(sizeof(Node) == 128);
+    static constexpr uint32_t kLeaf = 0x80000000u;
+    static constexpr uint32_t kEmpty = 0xffffffffu;
+
+    WideBvh() = default;
+    /// threads: 0 for std::thread::hardware_concurrency(). The tree does not depend on it.
+    /// Throws std::length_error beyond kMaxItems.
+    /// Over the triangles of a mesh.
+    explicit WideBvh(const ir::Mesh &mesh, int threads = 0);
+    /// Over item boxes, which may be empty, infinite or beyond the float range: they are
+    /// rounded outward to floats, and their centres clamped to it.
+    explicit WideBvh(const std::vector<Bounds3> &items, int threads = 1);
+
+    const std::vector<Node> &nodes() const { return nodes_; }
+    /// Item (triangle) indices in leaf order.
+    const std::vector<uint32_t> &itemOrder() const { return order_; }
+    size_t bytes() const { return nodes_.capacity() * sizeof(Node) + order_.capacity() * sizeof(uint32_t); }
+    int depth() const { return depth_; }
+
+    bool empty() const { return nodes_.empty(); }
+
+    /// Visits the items whose leaves the ray reaches within [tMin, *tMax], nearest boxes
+    /// first. visit(item, tMax) may lower *tMax and returns true to stop.
+    template <typename Visit>
+    void traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit) const;
+
+  private:
+    /// Depth bound of the build; with at most three pushes a level it sizes the traversal stack.
+    static constexpr int kMaxDepth = 64;
+    static constexpr int kStackSize = 3 * kMaxDepth + 4;
+    friend class WideBvhBuilder;
+
+    /// The slab test of the four children of a node: the mask of those the ray meets within
+    /// [tMin, tMax], and for each a float no greater than its near distance.
+    struct DoubleSlabs {
+        double o[3], inv[3];
+        int nearHi[3];  ///< the near plane of each axis: hi for a negative direction
+        explicit DoubleSlabs(const Ray &ray);
+        int test(const Node &n, double tMin, double tMax, float tn[kWidth]) const;
+    };
+#if defined(__SSE2__)
+    /// The same test in float, conservatively: it meets every child that the exact ray meets
+    /// within [tMin, tMax] (and so every child that DoubleSlabs meets), so the hits are the same.
+    /// The origin is rounded per plane in the direction that gives the smaller near distance and
+    /// the larger far one, so its rounding costs nothing per node; what is left is the rounding
+    /// of the reciprocal, of the subtraction and of the product (3 float units in all), covered
+    /// by kMargin with room for the margin's own rounding, and results in the denormal range,
+    /// covered by kTiny.
+    struct FloatSlabs {
+        __m128 oNear[3], oFar[3], inv[3];
+        int nearHi[3];
+        /// False where the ray does not fit in floats (an origin beyond 1e30, a direction
+        /// component beyond 1e30 or below 1e-30 and not zero): DoubleSlabs takes those rays.
+        bool init(const Ray &ray);
+        int test(const Node &n, double tMin, double tMax, float tn[kWidth]) const;
+    };
+    static constexpr float kMargin = 1.0f / (1 << 20);  ///< 16 float units
+    static constexpr float kTiny = 1.17549435e-38f;       ///< the smallest normal float
+#endif
+    template <typename BoxOf>
+    void build(size_t n, BoxOf &&boxOf, int threads);
+    template <typename Slabs, typename Visit>
+    void walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit) const;
+
+    std::vector<Node> nodes_;
+    std::vector<uint32_t> order_;
+    int depth_ = 0;
+};
+
+template <typename Visit>
+void WideBvh::traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit) const {
+    if (nodes_.empty()) return;
+#if defined(__SSE2__)
+    FloatSlabs f;
+    if (f.init(ray)) return walk(f, tMin, tMax, visit);
+#endif
+    walk(DoubleSlabs(ray), tMin, tMax, visit);
+}
+
+#if defined(__SSE2__)
+inline int WideBvh::FloatSlabs::test(const Node &n, double tMin, double tMax, float tn[kWidth]) const {
+    __m128 t0 = _mm_set1_ps(static_cast<float>(tMin)), t1 = _mm_set1_ps(static_cast<float>(tMax));
+    for (int a = 0; a < 3; ++a) {
+        __m128 nearB = _mm_load_ps(nearHi[a] ? n.hi[a] : n.lo[a]);
+        __m128 farB = _mm_load_ps(nearHi[a] ? n.lo[a] : n.hi[a]);
+        // maxps/minps return their second operand when either is NaN: a NaN distance (the
+        // origin's bound on the plane of a flat direction) leaves the interval as it was
+        t0 = _mm_max_ps(_mm_mul_ps(_mm_sub_ps(nearB, oNear[a]), inv[a]), t0);
+        t1 = _mm_min_ps(_mm_mul_ps(_mm_sub_ps(farB, oFar[a]), inv[a]), t1);
+    }
+    // A distance that overflowed stands for one beyond the largest float, not for infinity
+    const __m128 big = _mm_set1_ps(3.40282347e38f);
+    t0 = _mm_min_ps(t0, big);
+    t1 = _mm_max_ps(t1, _mm_sub_ps(_mm_setzero_ps(), big));
+    // Widen both ends by the relative margin and the absolute one. Both widenings are monotonic,
+    // so widening the maximum of the near distances (and tMin, rounded to nearest) equals the
+    // maximum of the widened ones
+    const __m128 down = _mm_set1_ps(1 - kMargin), up = _mm_set1_ps(1 + kMargin);
+    const __m128 tiny = _mm_set1_ps(kTiny);
+    t0 = _mm_sub_ps(_mm_min_ps(_mm_mul_ps(t0, down), _mm_mul_ps(t0, up)), tiny);
+    t1 = _mm_add_ps(_mm_max_ps(_mm_mul_ps(t1, down), _mm_mul_ps(t1, up)), tiny);
+    _mm_storeu_ps(tn, t0);
+    return _mm_movemask_ps(_mm_cmple_ps(t0, t1));
+}
+#endif
+
+inline WideBvh::DoubleSlabs::DoubleSlabs(const Ray &ray)
+    : o{ray.o.x, ray.o.y, ray.o.z}, inv{1 / ray.d.x, 1 / ray.d.y, 1 / ray.d.z},
+      nearHi{inv[0] < 0, inv[1] < 0, inv[2] < 0} {}
+
+inline int WideBvh::DoubleSlabs::test(const Node &n, double tMin, double tMax, float tn[kWidth]) const {
+    // Far distances grow by their rounding error away from zero, as in Bvh::hitNode
+    constexpr double kSlop = 2 * gamma(3);
+    alignas(16) double t[4];
+    int mask;
+#if defined(__SSE2__)
+    const __m128d slop = _mm_set1_pd(kSlop);
+    const __m128d absMask = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
+    __m128d t0a = _mm_set1_pd(tMin), t0b = t0a;
+    // The far distance is the nearest far plane grown by its rounding error, then capped at
+    // tMax: growing is monotonic, so growing the minimum equals the minimum of the grown
+    __m128d t1a = _mm_set1_pd(kInfinity), t1b = t1a;
+    for (int a = 0; a < 3; ++a) {
+        const __m128d oa = _mm_set1_pd(o[a]), iv = _mm_set1_pd(inv[a]);
+        __m128 nearF = _mm_load_ps(nearHi[a] ? n.hi[a] : n.lo[a]);
+        __m128 farF = _mm_load_ps(nearHi[a] ? n.lo[a] : n.hi[a]);
+        __m128d na = _mm_mul_pd(_mm_sub_pd(_mm_cvtps_pd(nearF), oa), iv);
+        __m128d nb = _mm_mul_pd(_mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(nearF, nearF)), oa), iv);
+        __m128d fa = _mm_mul_pd(_mm_sub_pd(_mm_cvtps_pd(farF), oa), iv);
+        __m128d fb = _mm_mul_pd(_mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(farF, farF)), oa), iv);
+        // maxpd/minpd return their second operand when either is NaN: a NaN distance
+        // (origin on the plane of a flat direction) leaves the interval as it was
+        t0a = _mm_max_pd(na, t0a);
+        t0b = _mm_max_pd(nb, t0b);
+        t1a = _mm_min_pd(fa, t1a);
+        t1b = _mm_min_pd(fb, t1b);
+    }
+    const __m128d tMaxV = _mm_set1_pd(tMax);
+    t1a = _mm_min_pd(_mm_add_pd(t1a, _mm_mul_pd(slop, _mm_and_pd(t1a, absMask))), tMaxV);
+    t1b = _mm_min_pd(_mm_add_pd(t1b, _mm_mul_pd(slop, _mm_and_pd(t1b, absMask))), tMaxV);
+    mask = _mm_movemask_pd(_mm_cmple_pd(t0a, t1a)) | _mm_movemask_pd(_mm_cmple_pd(t0b, t1b)) << 2;
+    _mm_store_pd(t, t0a);
+    _mm_store_pd(t + 2, t0b);
+#else
+    mask = 0;
+    for (int c = 0; c < 4; ++c) {
+        double t0 = tMin, t1 = tMax;
+        for (int a = 0; a < 3; ++a) {
+            double nearB = nearHi[a] ? n.hi[a][c] : n.lo[a][c];
+            double farB = nearHi[a] ? n.lo[a][c] : n.hi[a][c];
+            double tNear = (nearB - o[a]) * inv[a], tFar = (farB - o[a]) * inv[a];
+            tFar += kSlop * std::abs(tFar);
+            t0 = tNear > t0 ? tNear : t0;
+            t1 = tFar < t1 ? tFar : t1;
+        }
+        t[c] = t0;
+        if (t0 <= t1) mask |= 1 << c;
+    }
+#endif
+    // The stack keeps floats no greater than the near distances
+    for (int c = 0; c < 4; ++c) {
+        float f = static_cast<float>(t[c]);
+        tn[c] = static_cast<double>(f) > t[c] ? std::nextafter(f, -INFINITY) : f;
+    }
+    return mask;
+}
+
+template <typename Slabs, typename Visit>
+void WideBvh::walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit) const {
+    struct Entry {
+        uint32_t ref;
+        float tNear;  ///< no greater than the child's near distance
+    };
+    Entry stack[kStackSize];
+    int top = 0;
+    uint32_t current = 0;  // the root is always a node
+    auto push = [&](uint32_t ref, float tNear) {
+        stack[top++] = {ref, tNear};
+#if defined(__SSE2__)
+        if (!(ref & kLeaf)) {
+            const char *p = reinterpret_cast<const char *>(&nodes_[ref]);
+            _mm_prefetch(p, _MM_HINT_T0);
+            _mm_prefetch(p + 64, _MM_HINT_T0);
+        }
+#endif
+    };
+    while (true) {
+        if (current & kLeaf) {
+            uint32_t first = (current & ~kLeaf) >> 2, count = (current & 3) + 1;
+            for (uint32_t i = 0; i < count; ++i)
+                if (visit(order_[first + i], tMax)) return;
+        } else {
+            const Node &n = nodes_[current];
+            alignas(16) float tn[4];
+            int mask = slabs.test(n, tMin, *tMax, tn);
+            // Without the empty slots (an inverted infinite box still meets a ray with tMax = inf)
+#if defined(__SSE2__)
+            mask &= ~_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(
+                _mm_load_si128(reinterpret_cast<const __m128i *>(n.child)), _mm_set1_epi32(-1))));
+#else
+            for (int c = 0; c < 4; ++c)
+                if (n.child[c] == kEmpty) mask &= ~(1 << c);
+#endif
+            // Go on with the nearest child met and push the others, farthest first
+            if (mask != 0) {
+                int c0 = __builtin_ctz(mask);
+                mask &= mask - 1;
+                if (mask == 0) {
+                    current = n.child[c0];
+                    continue;
+                }
+                int c1 = __builtin_ctz(mask);
+                mask &= mask - 1;
+                if (mask == 0) {
+                    if (tn[c1] < tn[c0]) std::swap(c0, c1);
+                    push(n.child[c1], tn[c1]);
+                    current = n.child[c0];
+                    continue;
+                }
+                Entry hit[4] = {{n.child[c0], tn[c0]}, {n.child[c1], tn[c1]}};
+                int k = 2;
+                for (; mask != 0; mask &= mask - 1) hit[k++] = {n.child[__builtin_ctz(mask)], tn[__builtin_ctz(mask)]};
+                // Farthest first (insertion sort of at most four)
+                for (int i = 1; i < k; ++i) {
+                    Entry x = hit[i];
+                    int j = i;
+                    for (; j > 0 && hit[j - 1].tNear < x.tNear; --j) hit[j] = hit[j - 1];
+                    hit[j] = x;
+                }
+                for (int j = 0; j < k - 1; ++j) push(hit[j].ref, hit[j].tNear);
+                current = hit[k - 1].ref;
+                continue;
+            }
+        }
+        // Next: the nearest pushed entry still within reach
+        do {
+            if (top == 0) return;
+            --top;
+        } while (stack[top].tNear > *tMax);
+        current = stack[top].ref;
+    }
+}
+
+}  // namespace rt

@@ -1,0 +1,379 @@
+// SPDX-License-Identifier: MIT
+// The four-wide mesh BVH: the closest hit (t and triangle) and every crossing of the line are
+// those of a brute-force loop over all triangles, on meshes with duplicate, coplanar
+// overlapping and degenerate triangles, near the origin and far from it; the float boxes hold
+// their triangles' double vertices; the tree is the same for 1, 2 and 5 build threads.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "core/bvh/wide_bvh.h"
+#include "core/geometry/triangle_mesh.h"
+#include "core/math/rng.h"
+#include "support/mesh_builder.h"
+
+namespace rt {
+namespace {
+
+/// An icosphere plus trouble: every tenth triangle duplicated, coplanar overlapping triangles
+/// (the same plane, shifted within it), slivers with a repeated index, and zero-area triangles
+/// with three distinct collinear vertices; then scaled and moved.
+std::shared_ptr<ir::Mesh> troubleMesh(int levels, double scale, const Vec3 &offset) {
+    auto m = test::icosphere(levels, 1);
+    size_t n = m->triangles.size();
+    for (size_t i = 0; i < n; i += 10) m->triangles.push_back(m->triangles[i]);
+    for (size_t i = 5; i < n; i += 37) {
+        auto t = m->triangles[i];
+        Vec3 shift = (m->positions[t[1]] - m->positions[t[0]]) * 0.25;
+        uint32_t b = static_cast<uint32_t>(m->positions.size());
+        for (int k = 0; k < 3; ++k) m->positions.push_back(m->positions[t[k]] + shift);
+        m->triangles.push_back({b, b + 1, b + 2});
+    }
+    for (size_t i = 3; i < n; i += 53) {
+        auto t = m->triangles[i];
+        m->triangles.push_back({t[0], t[1], t[1]});
+        uint32_t b = static_cast<uint32_t>(m->positions.size());
+        Vec3 a = m->positions[t[0]], c = m->positions[t[2]];
+        m->positions.push_back(a);
+        m->positions.push_back((a + c) * 0.5);
+        m->positions.push_back(c);
+        m->triangles.push_back({b, b + 1, b + 2});
+    }
+    for (auto &p : m->positions) p = p * scale + offset;
+    return m;
+}
+
+struct Expected {
+    bool found = false;
+    double t = kInfinity;
+    uint32_t triangle = 0;
+};
+
+/// The closest hit by brute force, with TriangleMesh::closest's rules: tMin < t < tMax, t
+/// beyond its own rounding error, and of equal t the lowest triangle.
+Expected bruteClosest(const TriangleMesh &mesh, const Ray &r, double tMin, double tMax) {
+    Expected e;
+    for (uint32_t tri = 0; tri < mesh.triangleCount(); ++tri) {
+        TriangleMesh::Hit h;
+        if (!mesh.intersectTriangle(r, tri, &h) || !(h.t > tMin) || !(h.t < tMax) || h.t <= h.tError) continue;
+        if (h.t < e.t) {
+            e = {true, h.t, tri};
+        }
+    }
+    return e;
+}
+
+/// Rays from around the mesh at random points of it, at its vertices (ties between the
+/// triangles of a fan, and between duplicates) and at random directions.
+std::vector<Ray> testRays(const ir::Mesh &m, double scale, const Vec3 &offset, int count) {
+    Rng rng(5);
+    std::vector<Ray> rays;
+    for (int i = 0; i < count; ++i) {
+        Vec3 o = Vec3(rng.uniform() * 6 - 3, rng.uniform() * 6 - 3, rng.uniform() * 6 - 3) * scale + offset;
+        Vec3 target;
+        switch (i % 3) {
+        case 0: target = m.positions[static_cast<size_t>(rng.uniform() * m.positions.size())]; break;
+        case 1: target = Vec3(rng.uniform() * 2 - 1, rng.uniform() * 2 - 1, rng.uniform() * 2 - 1) * scale + offset; break;
+        default: target = o + Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5); break;
+        }
+        if (target == o) continue;
+        rays.emplace_back(o, normalize(target - o));
+    }
+    return rays;
+}
+
+void expectClosestMatchesBruteForce(double scale, const Vec3 &offset) {
+    auto m = troubleMesh(3, scale, offset);
+    TriangleMesh mesh(m);
+    int hits = 0;
+    for (const Ray &r : testRays(*m, scale, offset, 1500)) {
+        for (double tMin : {0.0, -kInfinity}) {
+            Expected e = bruteClosest(mesh, r, tMin, kInfinity);
+            TriangleMesh::Hit hit;
+            bool found = mesh.closest(r, tMin, kInfinity, &hit);
+            ASSERT_EQ(found, e.found);
+            if (found) {
+                ASSERT_EQ(hit.t, e.t);
+                ASSERT_EQ(hit.triangle, e.triangle);
+                ++hits;
+                // A bounded query ending at the hit finds nothing nearer
+                TriangleMesh::Hit nearer;
+                EXPECT_EQ(mesh.closest(r, tMin, e.t, &nearer), false);
+            }
+        }
+    }
+    EXPECT_GT(hits, 1000);
+}
+
+TEST(WideBvh, ClosestHitMatchesBruteForceWithDuplicateCoplanarAndDegenerateTriangles) {
+    expectClosestMatchesBruteForce(1, Vec3(0));
+}
+
+TEST(WideBvh, ClosestHitMatchesBruteForceFarFromTheOriginAtEveryScale) {
+    // Float boxes round outward: no hit is lost where a float's spacing is coarse
+    expectClosestMatchesBruteForce(1e-6, Vec3(1e6, -3e5, 2e6));
+    expectClosestMatchesBruteForce(1e6, Vec3(3e9, 0, -1e9));
+    expectClosestMatchesBruteForce(1e-6, Vec3(0.5e-6, 0, 0));
+}
+
+/// allHits gives every crossing of the line that a brute-force loop finds.
+void expectAllHitsMatchBruteForce(const TriangleMesh &mesh, const Ray &r) {
+    std::vector<std::pair<double, uint32_t>> brute, bvh;
+    for (uint32_t tri = 0; tri < mesh.triangleCount(); ++tri) {
+        TriangleMesh::Hit h;
+        if (mesh.intersectTriangle(r, tri, &h)) brute.emplace_back(h.t, tri);
+    }
+    std::vector<TriangleMesh::Hit> hits;
+    mesh.allHits(r, hits);
+    for (const auto &h : hits) bvh.emplace_back(h.t, h.triangle);
+    std::sort(brute.begin(), brute.end());
+    std::sort(bvh.begin(), bvh.end());
+    ASSERT_EQ(bvh, brute);
+}
+
+TEST(WideBvh, AllHitsAreEveryCrossingOfTheLine) {
+    auto m = troubleMesh(3, 1, Vec3(0));
+    TriangleMesh mesh(m);
+    for (const Ray &r : testRays(*m, 1, Vec3(0), 600)) ASSERT_NO_FATAL_FAILURE(expectAllHitsMatchBruteForce(mesh, r));
+}
+
+/// Every triangle once in leaf order, leaves of 1..4 triangles, and each leaf's float box holds
+/// its triangles' double vertices.
+void expectWellFormed(const WideBvh &bvh, const ir::Mesh &m) {
+    std::vector<int> seen(m.triangles.size(), 0);
+    for (uint32_t t : bvh.itemOrder()) ++seen.at(t);
+    EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int s) { return s == 1; }));
+    for (const auto &node : bvh.nodes())
+        for (int c = 0; c < WideBvh::kWidth; ++c) {
+            uint32_t ref = node.child[c];
+            if (ref == WideBvh::kEmpty || !(ref & WideBvh::kLeaf)) continue;
+            uint32_t first = (ref & ~WideBvh::kLeaf) >> 2, count = (ref & 3) + 1;
+            ASSERT_LE(first + count, bvh.itemOrder().size());
+            for (uint32_t i = first; i < first + count; ++i)
+                for (uint32_t v : m.triangles[bvh.itemOrder()[i]])
+                    for (int a = 0; a < 3; ++a) {
+                        ASSERT_LE(node.lo[a][c], m.positions[v][a]);
+                        ASSERT_GE(node.hi[a][c], m.positions[v][a]);
+                    }
+        }
+}
+
+TEST(WideBvh, SameTreeForAnyNumberOfBuildThreads) {
+    // Large enough for the parallel subtrees (more than 4096 triangles) and the parallel item
+    // boxes and bins of the top levels (more than 65536)
+    auto m = troubleMesh(6, 1e6, Vec3(1e7, 0, 0));
+    ASSERT_GT(m->triangles.size(), 65536u);
+    WideBvh one(*m, 1), two(*m, 2), five(*m, 5);
+    expectWellFormed(one, *m);
+    for (const WideBvh *other : {&two, &five}) {
+        ASSERT_EQ(other->itemOrder(), one.itemOrder());
+        ASSERT_EQ(other->nodes().size(), one.nodes().size());
+        EXPECT_EQ(other->depth(), one.depth());
+        for (size_t i = 0; i < one.nodes().size(); ++i) {
+            const auto &a = one.nodes()[i], &b = other->nodes()[i];
+            ASSERT_TRUE(std::equal(&a.lo[0][0], &a.lo[0][0] + 12, &b.lo[0][0]));
+            ASSERT_TRUE(std::equal(&a.hi[0][0], &a.hi[0][0] + 12, &b.hi[0][0]));
+            ASSERT_TRUE(std::equal(a.child, a.child + 4, b.child));
+        }
+    }
+}
+
+TEST(WideBvh, SmallEmptyAndCoincidentMeshes) {
+    ir::Mesh empty;
+    WideBvh none(empty, 2);
+    double t = kInfinity;
+    int visits = 0;
+    none.traverse(Ray(Vec3(0), Vec3(1, 0, 0)), 0, &t, [&](uint32_t, double *) { return ++visits, false; });
+    EXPECT_EQ(visits, 0);
+    // 40 copies of one triangle: all centroids coincide, split by count into leaves of <= 4
+    ir::Mesh same;
+    same.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+    same.triangles.assign(40, {0, 1, 2});
+    WideBvh coincident(same, 1);
+    expectWellFormed(coincident, same);
+    std::vector<uint32_t> visited;
+    coincident.traverse(Ray(Vec3(0.2, 0.2, 1), Vec3(0, 0, -1)), 0, &t, [&](uint32_t tri, double *) {
+        visited.push_back(tri);
+        return false;
+    });
+    EXPECT_EQ(visited.size(), 40u);
+    // The lowest index wins the tie among the copies
+    TriangleMesh mesh(std::make_shared<ir::Mesh>(same));
+    TriangleMesh::Hit hit;
+    ASSERT_TRUE(mesh.closest(Ray(Vec3(0.2, 0.2, 1), Vec3(0, 0, -1)), 0, kInfinity, &hit));
+    EXPECT_EQ(hit.triangle, 0u);
+    EXPECT_EQ(hit.t, 1);
+}
+
+std::string describe(const Ray &r) {
+    char s[200];
+    std::snprintf(s, sizeof s, "ray [%.17g, %.17g, %.17g] + t [%.17g, %.17g, %.17g]", r.o.x, r.o.y, r.o.z, r.d.x, r.d.y,
+                  r.d.z);
+    return s;
+}
+
+/// The closest hit of every ray (for tMin = 0 and -inf) and every crossing of the line are
+/// brute force's.
+void expectSameAsBruteForce(const TriangleMesh &mesh, const std::vector<Ray> &rays, int *hits) {
+    for (const Ray &r : rays) {
+        for (double tMin : {0.0, -kInfinity}) {
+            Expected e = bruteClosest(mesh, r, tMin, kInfinity);
+            TriangleMesh::Hit hit;
+            bool found = mesh.closest(r, tMin, kInfinity, &hit);
+            ASSERT_EQ(found, e.found) << describe(r) << ", tMin " << tMin;
+            if (!found) continue;
+            ASSERT_EQ(hit.t, e.t) << describe(r) << ", tMin " << tMin;
+            ASSERT_EQ(hit.triangle, e.triangle) << describe(r) << ", tMin " << tMin;
+            ++*hits;
+        }
+        SCOPED_TRACE(describe(r));
+        ASSERT_NO_FATAL_FAILURE(expectAllHitsMatchBruteForce(mesh, r));
+    }
+}
+
+/// Rays the float node test must not lose: axis-parallel ones through vertices, rays starting
+/// exactly on the planes of the float boxes, rays grazing along edges, and rays whose
+/// direction has a component of 1e-30 or 1e-300 (a reciprocal beyond the float range).
+std::vector<Ray> stiffRays(const ir::Mesh &m, const WideBvh &bvh, double scale, int count) {
+    Rng rng(11);
+    std::vector<Ray> rays;
+    auto vertex = [&] { return m.positions[static_cast<size_t>(rng.uniform() * m.positions.size())]; };
+    for (int i = 0; i < count; ++i) {
+        int axis = i % 3;
+        double sign = i % 2 ? 1 : -1;
+        Vec3 d(0), target = vertex();
+        d[axis] = sign;
+        // Axis-parallel, through a vertex (on the boxes' planes in the other two axes)
+        rays.emplace_back(target - d * (3 * scale), d);
+        // From a plane of a float box, towards a vertex
+        const auto &node = bvh.nodes()[static_cast<size_t>(rng.uniform() * bvh.nodes().size())];
+        int c = static_cast<int>(rng.uniform() * 4);
+        if (node.child[c] != WideBvh::kEmpty) {
+            Vec3 o = target + Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) * (3 * scale);
+            o[axis] = i % 2 ? node.lo[axis][c] : node.hi[axis][c];
+            if (o != target) rays.emplace_back(o, normalize(target - o));
+            // and along the plane
+            Vec3 along = normalize(target - o);
+            along[axis] = 0;
+            if (lengthSquared(along) > 0) rays.emplace_back(o, normalize(along));
+        }
+        // Grazing: along an edge of a triangle, from beyond its end
+        const auto &t = m.triangles[static_cast<size_t>(rng.uniform() * m.triangles.size())];
+        Vec3 e = m.positions[t[1]] - m.positions[t[0]];
+        if (lengthSquared(e) > 0) rays.emplace_back(m.positions[t[0]] - e * 2.0, normalize(e));
+        // Tiny direction components
+        Vec3 o = target - d * (3 * scale);
+        for (double tiny : {1e-30, -1e-300, 1e-300}) {
+            Vec3 dt = d;
+            dt[(axis + 1) % 3] = tiny;
+            dt[(axis + 2) % 3] = -tiny * 0.5;
+            rays.emplace_back(o, dt);
+            // off the vertex by a little, so the tiny component decides
+            Vec3 o2 = o;
+            o2[(axis + 1) % 3] += scale * 1e-9;
+            rays.emplace_back(o2, dt);
+        }
+    }
+    return rays;
+}
+
+TEST(WideBvh, FloatNodeTestLosesNoHitOnStiffRaysAtEveryScale) {
+    for (double scale : {1e-6, 1.0, 1e6})
+        for (const Vec3 &offset : {Vec3(0), Vec3(1e5, -1e5, 1e5)}) {
+            SCOPED_TRACE(testing::Message() << "scale " << scale << ", offset " << offset.x);
+            auto m = troubleMesh(2, scale, offset);
+            TriangleMesh mesh(m);
+            int hits = 0;
+            expectSameAsBruteForce(mesh, testRays(*m, scale, offset, 150), &hits);
+            expectSameAsBruteForce(mesh, stiffRays(*m, mesh.bvh(), scale, 60), &hits);
+            EXPECT_GT(hits, 200);
+        }
+}
+
+TEST(WideBvh, FloatNodeTestRoundsTheOriginOutwardPerPlane) {
+    // One triangle in the plane x = 1 and rays from just before that plane (1 - 1e-9, which
+    // rounds to the float 1) climbing to it over t = 1e-6 while entering the box in y: with the
+    // origin rounded to nearest, the x slab would be [0, 0] and the box missed
+    for (double sign : {1.0, -1.0}) {
+        ir::Mesh m;
+        m.positions = {Vec3(sign, 0, -1), Vec3(sign, 2, -1), Vec3(sign, 0, 1)};
+        m.triangles = {{0, 1, 2}};
+        TriangleMesh mesh(std::make_shared<ir::Mesh>(m));
+        Ray r(Vec3(sign * (1 - 1e-9), -0.5e-6, 0), normalize(Vec3(sign * 1e-3, 1, 0)));
+        Expected e = bruteClosest(mesh, r, 0, kInfinity);
+        ASSERT_TRUE(e.found);
+        TriangleMesh::Hit hit;
+        ASSERT_TRUE(mesh.closest(r, 0, kInfinity, &hit));
+        EXPECT_EQ(hit.t, e.t);
+    }
+}
+
+/// Whether the ray meets box b within [tMin, tMax], in double with the far distances grown by
+/// their rounding error (a NaN distance, the origin on the plane of a flat direction, is no
+/// constraint; an infinite one is not grown into a NaN): the boxes a traversal must visit.
+bool meets(const Bounds3 &b, const Ray &r, double tMin, double tMax) {
+    if (b.isEmpty()) return false;
+    double t0 = tMin, t1 = tMax;
+    for (int a = 0; a < 3; ++a) {
+        double inv = 1 / r.d[a];
+        double n = (b.min[a] - r.o[a]) * inv, f = (b.max[a] - r.o[a]) * inv;
+        if (n > f) std::swap(n, f);
+        if (std::isfinite(f)) f += 2 * gamma(3) * std::abs(f);
+        if (n > t0) t0 = n;
+        if (f < t1) t1 = f;
+    }
+    return t0 <= t1;
+}
+
+TEST(WideBvh, OverItemBoxesVisitsEveryBoxTheRayMeetsEvenEmptyInfiniteAndHugeOnes) {
+    Rng rng(3);
+    std::vector<Bounds3> boxes;
+    for (int i = 0; i < 3000; ++i) {
+        Vec3 c(rng.uniform() * 20 - 10, rng.uniform() * 20 - 10, rng.uniform() * 20 - 10);
+        Vec3 h(rng.uniform(), rng.uniform() * 0.1, rng.uniform() * 2);
+        Bounds3 b(c - h, c + h);
+        switch (i % 97) {
+            case 0: b = Bounds3(); break;            // empty
+            case 1: b = Bounds3::infinite(); break;  // unbounded
+            case 2: b.max.x = kInfinity; break;      // a half space
+            case 3: b.min.y = -1e300; break;         // beyond the float range
+            case 4: b = Bounds3(Vec3(1e39), Vec3(2e39)); break;
+            case 5: b = Bounds3(c, c); break;        // a point
+            default: break;
+        }
+        boxes.push_back(b);
+    }
+    WideBvh bvh(boxes, 2);
+    std::vector<int> seen(boxes.size(), 0);
+    for (uint32_t i : bvh.itemOrder()) ++seen.at(i);
+    EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int s) { return s == 1; }));
+    int met = 0;
+    for (int k = 0; k < 800; ++k) {
+        Vec3 o(rng.uniform() * 30 - 15, rng.uniform() * 30 - 15, rng.uniform() * 30 - 15);
+        Vec3 d(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5);
+        if (k % 4 == 1) d[k % 3] = 0;                   // flat directions
+        if (k % 4 == 2) o = boxes[k % boxes.size()].min;  // from a box corner
+        if (k % 8 == 3) d[(k + 1) % 3] = 1e-300;
+        if (k % 16 == 5) o = o * 1e31;                  // beyond the float range: the double test
+        if (lengthSquared(d) == 0) continue;
+        Ray r(o, d);
+        for (double tMin : {0.0, -kInfinity}) {
+            double tMax = k % 3 ? kInfinity : 7.5;
+            std::vector<char> visited(boxes.size(), 0);
+            double far = tMax;
+            bvh.traverse(r, tMin, &far, [&](uint32_t i, double *) { return visited[i] = 1, false; });
+            for (size_t i = 0; i < boxes.size(); ++i)
+                if (meets(boxes[i], r, tMin, tMax)) {
+                    ++met;
+                    ASSERT_TRUE(visited[i]) << "box " << i << ", ray " << k << ", tMin " << tMin << ", " << describe(r);
+                }
+        }
+    }
+    EXPECT_GT(met, 5000);
+}
+
+}  // namespace
+}  // namespace rt
