@@ -222,16 +222,15 @@ constexpr uint8_t kLeft = 1, kRight = 2, kAbove = 4, kBelow = 8;
 /// default.scad past `compare`'s margin.
 constexpr int kProbeAgreement = 1;
 
-/// The quadrants (column bit 0, row bit 1) of a pixel facing its one differing neighbour, or
-/// false where several neighbours differ (those pixels take all four at once).
-bool facingQuadrants(uint8_t sides, int &q0, int &q1) {
-    switch (sides) {
-    case kLeft: q0 = 0, q1 = 2; return true;
-    case kRight: q0 = 1, q1 = 3; return true;
-    case kAbove: q0 = 0, q1 = 1; return true;
-    case kBelow: q0 = 2, q1 = 3; return true;
-    default: return false;
-    }
+/// Bit q set for each quadrant q (column bit 0, row bit 1) of a pixel that faces one of the
+/// differing neighbours `sides`.
+int facingQuadrants(uint8_t sides) {
+    int mask = 0;
+    if (sides & kLeft) mask |= 1 << 0 | 1 << 2;
+    if (sides & kRight) mask |= 1 << 1 | 1 << 3;
+    if (sides & kAbove) mask |= 1 << 0 | 1 << 1;
+    if (sides & kBelow) mask |= 1 << 2 | 1 << 3;
+    return mask;
 }
 
 /// Pass 1: every pixel's centre. Marks the pixels to refine with 1 in result.pixelLevels.
@@ -359,29 +358,31 @@ void renderAdaptive(const Camera &camera, const WhittedIntegrator &integrator, c
                 cells[j] = cell;
                 hits[j] = hitKey(ctx.firstHit);
             };
-            // A pixel that differs from one neighbour only first takes the two samples of
-            // round 1 in the quadrants facing that neighbour. Where both saw the centre's
-            // primitive and display value, the contrast lies in the neighbour's box: the
-            // pixel keeps its centre (a checked pixel)
+            // A pixel first takes the samples of round 1 in the quadrants facing its differing
+            // neighbours (two, or three for neighbours on two adjacent sides). Where all saw the
+            // centre's primitive and display value, the contrast lies in the neighbours' boxes:
+            // the pixel keeps its centre (a checked pixel)
             int n = 0, k = 0;
-            int probe0, probe1;
-            if (facingQuadrants(first.sides[pixel], probe0, probe1)) {
+            int facing = facingQuadrants(first.sides[pixel]);
+            if (facing != 0xf) {
                 // quadrant q holds sample q ^ (round 1's scramble), as adaptiveCell places them
                 int scramble = static_cast<int>(mixBits(key ^ mixBits(1)) & 3);
-                probe0 ^= scramble;
-                probe1 ^= scramble;
-                sample(probe0);
-                sample(probe1);
-                auto flat = [&](int j) {
-                    return !samplesDiffer(hits[j], displayBytes(display[j]), first.hits[pixel],
-                                          first.display[pixel], kProbeAgreement);
-                };
-                if (flat(probe0) && flat(probe1)) {
-                    result.pixelChecked[pixel] = 1;
+                bool flat = true;
+                int probes = 0;
+                for (int q = 0; q < 4; ++q)
+                    if (facing >> q & 1) {
+                        int j = q ^ scramble;
+                        sample(j);
+                        ++probes;
+                        flat = flat && !samplesDiffer(hits[j], displayBytes(display[j]), first.hits[pixel],
+                                                      first.display[pixel], kProbeAgreement);
+                    }
+                if (flat) {
+                    result.pixelChecked[pixel] = static_cast<uint8_t>(probes);
                     continue;
                 }
-                for (int j = 0; j < 4; ++j)
-                    if (j != probe0 && j != probe1) sample(j);
+                for (int q = 0; q < 4; ++q)
+                    if (!(facing >> q & 1)) sample(q ^ scramble);
                 n = 4;
                 k = 1;
             }
@@ -408,10 +409,10 @@ void renderAdaptive(const Camera &camera, const WhittedIntegrator &integrator, c
     result.checkedPixels = 0;
     for (int pixel : refine) {
         int k = result.pixelLevels[pixel];
-        bool checked = result.pixelChecked[pixel];
+        int probes = result.pixelChecked[pixel];
         ++result.pixelsBySamples[k];
-        result.checkedPixels += checked;
-        result.samples += checked ? 2 : int64_t(1) << (2 * k);
+        result.checkedPixels += probes > 0;
+        result.samples += probes > 0 ? probes : int64_t(1) << (2 * k);
     }
 }
 
@@ -431,7 +432,7 @@ std::string describeSampling(const RenderResult &r) {
     for (size_t k = 0; k < r.pixelsBySamples.size(); ++k) {
         char part[96];
         if (k == 0)
-            std::snprintf(part, sizeof part, " 1: %.1f %%, 1+2: %.1f %%",
+            std::snprintf(part, sizeof part, " 1: %.1f %%, checked: %.1f %%",
                           100.0 * (r.pixelsBySamples[0] - r.checkedPixels) / pixels,
                           100.0 * r.checkedPixels / pixels);
         else

@@ -115,7 +115,13 @@ TEST(AdaptiveRender, SamePictureAsUniform64WithAFractionOfTheSamples) {
         EXPECT_LT(errorAdaptive, 0.5 * errorOne);
         // The histogram accounts for every pixel and every sample
         ASSERT_EQ(a.pixelsBySamples.size(), 4u);
-        int64_t pixels = 0, samples = w * h + 2 * a.checkedPixels;
+        int64_t pixels = 0, samples = w * h, checked = 0;
+        for (uint8_t probes : a.pixelChecked) {
+            EXPECT_TRUE(probes == 0 || probes == 2 || probes == 3) << int(probes);
+            samples += probes;
+            checked += probes > 0;
+        }
+        EXPECT_EQ(checked, a.checkedPixels);
         for (size_t k = 0; k < a.pixelsBySamples.size(); ++k) {
             pixels += a.pixelsBySamples[k];
             if (k) samples += a.pixelsBySamples[k] << (2 * k);
@@ -205,7 +211,10 @@ material(color="green") translate([2, -1, 0]) cube([1, 2, 1]);
             refinedPairs += refined(x, y) || refined(x + 1, y);
         }
     EXPECT_GT(contrasted, 20);
-    EXPECT_GT(refinedPairs, 0.9 * contrasted) << refinedPairs << " of " << contrasted;
+    // A pair is left unrefined where every probe of both pixels fell on its own pixel's side
+    // of the edge: for straight edges evenly spread between the centres, a third of the pairs,
+    // those where the edge covers little of the pixel it crosses
+    EXPECT_GT(refinedPairs, 0.6 * contrasted) << refinedPairs << " of " << contrasted;
     EXPECT_GT(a.checkedPixels, 0);
     // Most of the picture keeps its centre sample
     EXPECT_GT(a.pixelsBySamples[0], w * h / 2);
