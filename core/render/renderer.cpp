@@ -189,10 +189,14 @@ std::array<uint8_t, 3> displayBytes(const Rgb &d) {
 }
 
 /// 32-bit hash of the primitive a camera ray hit (null: the background).
-uint32_t hitKey(const LeafShape *hit) { return static_cast<uint32_t>(mixBits(reinterpret_cast<uintptr_t>(hit))); }
+uint32_t hitKey(const LeafShape *hit) {
+    return static_cast<uint32_t>(mixBits(reinterpret_cast<uintptr_t>(hit)));
+}
 
 /// The refinement threshold in the 1/255 steps of displayBytes.
-int thresholdBytes(const RenderOptions &opts) { return static_cast<int>(std::floor(opts.adaptiveThreshold * 255)); }
+int thresholdBytes(const RenderOptions &opts) {
+    return static_cast<int>(std::floor(opts.adaptiveThreshold * 255));
+}
 
 /// Whether two samples saw different primitives or display values more than `threshold` apart.
 bool samplesDiffer(uint32_t hitA, const std::array<uint8_t, 3> &a, uint32_t hitB,
@@ -233,7 +237,7 @@ int facingQuadrants(uint8_t sides) {
     return mask;
 }
 
-/// Pass 1: every pixel's centre. Marks the pixels to refine with 1 in result.pixelLevels.
+/// Pass 1: every pixel's centre; zeroes result.pixelLevels and finds the pixels to refine.
 FirstPass adaptiveFirstPass(const Camera &camera, const WhittedIntegrator &integrator,
                                    const RenderOptions &opts, int threads, RenderResult &result) {
     Tiles tiles(opts);
@@ -436,7 +440,8 @@ std::string describeSampling(const RenderResult &r) {
                           100.0 * (r.pixelsBySamples[0] - r.checkedPixels) / pixels,
                           100.0 * r.checkedPixels / pixels);
         else
-            std::snprintf(part, sizeof part, ", %d: %.1f %%", 1 << (2 * k), 100.0 * r.pixelsBySamples[k] / pixels);
+            std::snprintf(part, sizeof part, ", %d: %.1f %%", 1 << (2 * k),
+                          100.0 * r.pixelsBySamples[k] / pixels);
         s += part;
     }
     return s + "; " + buf;
