@@ -4,7 +4,8 @@
 # default (-s 1), the adaptive default and uniform -s REF, and prints per scene the render time
 # (CPU seconds of the render, all threads, without start-up, the best of REPEAT runs; CPU time
 # because other processes inflate wall time), the ratio of adaptive to 1 spp,
-# the mean samples per pixel, where the samples went, and `scadray compare` of adaptive and of
+# the mean samples per pixel, where the samples went (checked: pixels that kept
+# their centre after 2 or 3 probe samples), and `scadray compare` of adaptive and of
 # 1 spp against uniform REF spp (PASS/FAIL and the RMSE on the edge pixels compare masks, where
 # antialiasing shows). Prints figures; it is not a test.
 #
@@ -48,8 +49,8 @@ compare() {
 }
 
 echo "${W}x${H}, $THREADS threads, render CPU seconds, best of $REPEAT; adaptive options: ${AA:-defaults}"
-printf '%-22s %8s %8s %6s %6s %-34s %8s %-18s %-18s\n' scene "1spp s" "adapt s" ratio spp \
-    "pixels with 1 / 4 / 16 / 64 samples" "$REF spp s" "adaptive vs $REF" "1 spp vs $REF"
+printf '%-22s %8s %8s %6s %6s %-40s %8s %-18s %-18s\n' scene "1spp s" "adapt s" ratio spp \
+    "pixels with 1 / checked / 4 / 16 / 64 samples" "$REF spp s" "adaptive vs $REF" "1 spp vs $REF"
 for scene in "$@"; do
     name=$(basename "$scene" .scad)
     render one "$scene" -s 1
@@ -61,10 +62,10 @@ for scene in "$@"; do
     REPEAT=$saved
     spp=$(sed -n 's/^scadray: .*, adaptive \([0-9.]*\) spp.*/\1/p' "$tmp/adaptive.log")
     spread=$(sed -n 's/^plan: samples: adaptive, pixels by samples: \([^;]*\);.*/\1/p' "$tmp/adaptive.log" |
-        sed 's/[0-9]*: //g; s/ %//g; s/,/ \//g')
+        sed 's/[0-9a-z]*: //g; s/ %//g; s/,/ \//g')
     [ -n "$spp" ] || spp="uniform"
     t1=$(cat "$tmp/one.time") ta=$(cat "$tmp/adaptive.time")
     ratio=$(awk -v a="$ta" -v b="$t1" 'BEGIN { printf "%.2f", a / b }')
-    printf '%-22s %8s %8s %6s %6s %-34s %8s %-18s %-18s\n' "$name" "$t1" "$ta" "$ratio" "$spp" \
+    printf '%-22s %8s %8s %6s %6s %-40s %8s %-18s %-18s\n' "$name" "$t1" "$ta" "$ratio" "$spp" \
         "${spread:--}" "$(cat "$tmp/ref.time")" "$(compare adaptive)" "$(compare one)"
 done

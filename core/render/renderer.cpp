@@ -181,15 +181,72 @@ Rgb displayValue(const Rgb &c) {
     return d;
 }
 
-/// Pass 1: every pixel's centre. Marks the pixels to refine with 1 in result.pixelLevels and
-/// returns them in index order. Per pixel it keeps 8 bytes (the pages a pass touches are much
-/// of its cost): a 32-bit hash of the primitive hit, the display value in 1/255 steps, the mark.
-std::vector<int> adaptiveFirstPass(const Camera &camera, const WhittedIntegrator &integrator,
+/// Display value in 1/255 steps, as the refinement decisions compare them.
+std::array<uint8_t, 3> displayBytes(const Rgb &d) {
+    std::array<uint8_t, 3> b;
+    for (int ch = 0; ch < 3; ++ch) b[ch] = static_cast<uint8_t>(std::lround(d[ch] * 255));
+    return b;
+}
+
+/// 32-bit hash of the primitive a camera ray hit (null: the background).
+uint32_t hitKey(const LeafShape *hit) {
+    return static_cast<uint32_t>(mixBits(reinterpret_cast<uintptr_t>(hit)));
+}
+
+/// The refinement threshold in the 1/255 steps of displayBytes.
+int thresholdBytes(const RenderOptions &opts) {
+    return static_cast<int>(std::floor(opts.adaptiveThreshold * 255));
+}
+
+/// Whether two samples saw different primitives or display values more than `threshold` apart.
+bool samplesDiffer(uint32_t hitA, const std::array<uint8_t, 3> &a, uint32_t hitB,
+                   const std::array<uint8_t, 3> &b, int threshold) {
+    if (hitA != hitB) return true;
+    for (int ch = 0; ch < 3; ++ch)
+        if (std::abs(int(a[ch]) - int(b[ch])) > threshold) return true;
+    return false;
+}
+
+/// What pass 1 leaves for pass 2: per pixel 8 bytes (the pages a pass touches are much of its
+/// cost), the primitive hit and the display value of its centre sample, and the pixels to refine
+/// in index order.
+struct FirstPass {
+    std::vector<uint32_t> hits;
+    std::vector<std::array<uint8_t, 3>> display;
+    /// Per pixel, the sides (kLeft ...) of the neighbours that differ from it.
+    std::vector<uint8_t> sides;
+    std::vector<int> refine;
+};
+
+constexpr uint8_t kLeft = 1, kRight = 2, kAbove = 4, kBelow = 8;
+
+/// A checked pixel's probe samples must see the centre's primitive and its display value within
+/// this many 1/255 steps (the rounding of displayBytes). As loose as the refinement threshold,
+/// the centres kept inside refracted and reflected detail biased whole 8x8 tiles of
+/// default.scad past `compare`'s margin.
+constexpr int kProbeAgreement = 1;
+
+/// Bit q set for each quadrant q (column bit 0, row bit 1) of a pixel that faces one of the
+/// differing neighbours `sides`.
+int facingQuadrants(uint8_t sides) {
+    int mask = 0;
+    if (sides & kLeft) mask |= 1 << 0 | 1 << 2;
+    if (sides & kRight) mask |= 1 << 1 | 1 << 3;
+    if (sides & kAbove) mask |= 1 << 0 | 1 << 1;
+    if (sides & kBelow) mask |= 1 << 2 | 1 << 3;
+    return mask;
+}
+
+/// Pass 1: every pixel's centre; zeroes result.pixelLevels and finds the pixels to refine.
+FirstPass adaptiveFirstPass(const Camera &camera, const WhittedIntegrator &integrator,
                                    const RenderOptions &opts, int threads, RenderResult &result) {
     Tiles tiles(opts);
     int w = opts.width, h = opts.height;
-    std::vector<uint32_t> hits(size_t(w) * h);
-    std::vector<std::array<uint8_t, 3>> display(size_t(w) * h);
+    FirstPass first;
+    std::vector<uint32_t> &hits = first.hits;
+    std::vector<std::array<uint8_t, 3>> &display = first.display;
+    hits.resize(size_t(w) * h);
+    display.resize(size_t(w) * h);
     runJobs(threads, tiles.count, opts, 0, 0.5, result.stats, [&](int tile, TraceContext &ctx) {
         tiles.forPixels(opts, tile, [&](int x, int y) {
             size_t pixel = size_t(y) * w + x;
@@ -201,37 +258,33 @@ std::vector<int> adaptiveFirstPass(const Camera &camera, const WhittedIntegrator
             Rgb c = clampSample(integrator.li(camera.generateRay(x + 0.5, y + 0.5), ctx), opts);
             result.image.set(x, y, c);
             result.ties.set(x, y, Rgb(ctx.tie ? 1.0 : 0.0));
-            auto address = reinterpret_cast<uintptr_t>(ctx.firstHit);
-            hits[pixel] = static_cast<uint32_t>(mixBits(address));
-            Rgb d = displayValue(c);
-            for (int ch = 0; ch < 3; ++ch) display[pixel][ch] = static_cast<uint8_t>(std::lround(d[ch] * 255));
+            hits[pixel] = hitKey(ctx.firstHit);
+            display[pixel] = displayBytes(displayValue(c));
         });
     });
-    // Mark both pixels of each neighbouring pair that differ in colour or primitive
-    std::vector<uint8_t> &marked = result.pixelLevels;
-    marked.assign(size_t(w) * h, 0);
-    int threshold = static_cast<int>(std::floor(opts.adaptiveThreshold * 255));
-    auto differ = [&](size_t a, size_t b) {
-        if (hits[a] != hits[b]) return true;
-        for (int ch = 0; ch < 3; ++ch)
-            if (std::abs(int(display[a][ch]) - int(display[b][ch])) > threshold) return true;
-        return false;
-    };
-    auto pair = [&](size_t a, size_t b) {
-        if ((!marked[a] || !marked[b]) && differ(a, b)) marked[a] = marked[b] = 1;
+    // Mark both pixels of each neighbouring pair that differ in colour or primitive, each with
+    // the side the other lies on
+    std::vector<uint8_t> &sides = first.sides;
+    sides.assign(size_t(w) * h, 0);
+    result.pixelLevels.assign(size_t(w) * h, 0);
+    int threshold = thresholdBytes(opts);
+    auto pair = [&](size_t a, size_t b, uint8_t sideOfB, uint8_t sideOfA) {
+        if (samplesDiffer(hits[a], display[a], hits[b], display[b], threshold)) {
+            sides[a] |= sideOfB;
+            sides[b] |= sideOfA;
+        }
     };
     // Edge-sharing neighbours only: diagonal pairs added 7-9 % more samples on the example
     // scenes with no measurable change of the picture
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             size_t p = size_t(y) * w + x;
-            if (x + 1 < w) pair(p, p + 1);
-            if (y + 1 < h) pair(p, p + w);
+            if (x + 1 < w) pair(p, p + 1, kRight, kLeft);
+            if (y + 1 < h) pair(p, p + w, kBelow, kAbove);
         }
-    std::vector<int> refine;
-    for (size_t p = 0; p < marked.size(); ++p)
-        if (marked[p]) refine.push_back(static_cast<int>(p));
-    return refine;
+    for (size_t p = 0; p < sides.size(); ++p)
+        if (sides[p]) first.refine.push_back(static_cast<int>(p));
+    return first;
 }
 
 /// Cell (column, row) of a pixel's j-th adaptive sample in the 2^levels grid: base-4 digit l of
@@ -274,38 +327,75 @@ double adaptiveError(const std::vector<Rgb> &display, int k) {
 
 void renderAdaptive(const Camera &camera, const WhittedIntegrator &integrator, const RenderOptions &opts,
                     int threads, RenderResult &result) {
-    std::vector<int> refine = adaptiveFirstPass(camera, integrator, opts, threads, result);
+    FirstPass first = adaptiveFirstPass(camera, integrator, opts, threads, result);
+    const std::vector<int> &refine = first.refine;
     int levels = adaptiveLevels(opts.adaptiveMax);
     int side = 1 << levels;
+    result.pixelChecked.assign(result.pixelLevels.size(), 0);
     constexpr int kChunk = 32;
     int chunks = static_cast<int>((refine.size() + kChunk - 1) / kChunk);
     runJobs(threads, chunks, opts, 0.5, 1, result.stats, [&](int chunk, TraceContext &ctx) {
         std::vector<Rgb> values(opts.adaptiveMax), display(opts.adaptiveMax);
         std::vector<int> cells(opts.adaptiveMax);
+        std::vector<uint32_t> hits(opts.adaptiveMax);
         std::vector<int> byCell(size_t(side) * side);
         size_t end = std::min(refine.size(), size_t(chunk + 1) * kChunk);
         for (size_t i = size_t(chunk) * kChunk; i < end; ++i) {
             int pixel = refine[i], x = pixel % opts.width, y = pixel / opts.width;
             uint64_t key = mixBits(uint64_t(pixel) ^ mixBits(opts.seed ^ 0x5ca1ab1e0ddba11ULL));
-            int n = 0, k = 0, tied = 0;
-            do {
-                ++k;
-                for (int count = 1 << (2 * k); n < count; ++n) {
-                    int column, row;
-                    adaptiveCell(n, levels, key, column, row);
-                    int cell = row * side + column;
-                    // The cell's sample exactly as uniform sampling at adaptiveMax draws it
-                    ctx.rng = Rng::forSample(uint64_t(pixel), uint64_t(cell), opts.seed);
-                    double fx = (column + ctx.rng.uniform()) / side;
-                    double fy = (row + ctx.rng.uniform()) / side;
-                    ctx.tie = false;
-                    Rgb c = clampSample(integrator.li(camera.generateRay(x + fx, y + fy), ctx), opts);
-                    tied += ctx.tie;
-                    values[n] = c;
-                    display[n] = displayValue(c);
-                    cells[n] = cell;
+            int tied = 0;
+            // Sample j of the pixel: the cell's sample exactly as uniform sampling at
+            // adaptiveMax draws it
+            auto sample = [&](int j) {
+                int column, row;
+                adaptiveCell(j, levels, key, column, row);
+                int cell = row * side + column;
+                ctx.rng = Rng::forSample(uint64_t(pixel), uint64_t(cell), opts.seed);
+                double fx = (column + ctx.rng.uniform()) / side;
+                double fy = (row + ctx.rng.uniform()) / side;
+                ctx.tie = false;
+                ctx.firstHit = nullptr;
+                Rgb c = clampSample(integrator.li(camera.generateRay(x + fx, y + fy), ctx), opts);
+                tied += ctx.tie;
+                values[j] = c;
+                display[j] = displayValue(c);
+                cells[j] = cell;
+                hits[j] = hitKey(ctx.firstHit);
+            };
+            // A pixel first takes the samples of round 1 in the quadrants facing its differing
+            // neighbours (two, or three for neighbours on two adjacent sides). Where all saw the
+            // centre's primitive and display value, the contrast lies in the neighbours' boxes:
+            // the pixel keeps its centre (a checked pixel)
+            int n = 0, k = 0;
+            int facing = facingQuadrants(first.sides[pixel]);
+            if (facing != 0xf) {
+                // quadrant q holds sample q ^ (round 1's scramble), as adaptiveCell places them
+                int scramble = static_cast<int>(mixBits(key ^ mixBits(1)) & 3);
+                bool flat = true;
+                int probes = 0;
+                for (int q = 0; q < 4; ++q)
+                    if (facing >> q & 1) {
+                        int j = q ^ scramble;
+                        sample(j);
+                        ++probes;
+                        flat = flat && !samplesDiffer(hits[j], displayBytes(display[j]), first.hits[pixel],
+                                                      first.display[pixel], kProbeAgreement);
+                    }
+                if (flat) {
+                    result.pixelChecked[pixel] = static_cast<uint8_t>(probes);
+                    continue;
                 }
-            } while (k < levels && adaptiveError(display, k) >= opts.adaptiveTolerance);
+                for (int q = 0; q < 4; ++q)
+                    if (!(facing >> q & 1)) sample(q ^ scramble);
+                n = 4;
+                k = 1;
+            }
+            if (k == 0 || (k < levels && adaptiveError(display, k) >= opts.adaptiveTolerance)) {
+                do {
+                    ++k;
+                    for (int count = 1 << (2 * k); n < count; ++n) sample(n);
+                } while (k < levels && adaptiveError(display, k) >= opts.adaptiveTolerance);
+            }
             // Sum in cell order, as uniform sampling does
             std::fill(byCell.begin(), byCell.end(), -1);
             for (int j = 0; j < n; ++j) byCell[cells[j]] = j;
@@ -320,10 +410,13 @@ void renderAdaptive(const Camera &camera, const WhittedIntegrator &integrator, c
     result.pixelsBySamples.assign(levels + 1, 0);
     result.pixelsBySamples[0] = int64_t(opts.width) * opts.height - int64_t(refine.size());
     result.samples = int64_t(opts.width) * opts.height;
+    result.checkedPixels = 0;
     for (int pixel : refine) {
         int k = result.pixelLevels[pixel];
+        int probes = result.pixelChecked[pixel];
         ++result.pixelsBySamples[k];
-        result.samples += int64_t(1) << (2 * k);
+        result.checkedPixels += probes > 0;
+        result.samples += probes > 0 ? probes : int64_t(1) << (2 * k);
     }
 }
 
@@ -341,9 +434,14 @@ std::string describeSampling(const RenderResult &r) {
     double pixels = double(r.image.width()) * r.image.height();
     std::string s = "adaptive, pixels by samples:";
     for (size_t k = 0; k < r.pixelsBySamples.size(); ++k) {
-        char part[64];
-        std::snprintf(part, sizeof part, "%s %d: %.1f %%", k ? "," : "", 1 << (2 * k),
-                      100.0 * r.pixelsBySamples[k] / pixels);
+        char part[96];
+        if (k == 0)
+            std::snprintf(part, sizeof part, " 1: %.1f %%, checked: %.1f %%",
+                          100.0 * (r.pixelsBySamples[0] - r.checkedPixels) / pixels,
+                          100.0 * r.checkedPixels / pixels);
+        else
+            std::snprintf(part, sizeof part, ", %d: %.1f %%", 1 << (2 * k),
+                          100.0 * r.pixelsBySamples[k] / pixels);
         s += part;
     }
     return s + "; " + buf;

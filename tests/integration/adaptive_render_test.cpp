@@ -115,11 +115,19 @@ TEST(AdaptiveRender, SamePictureAsUniform64WithAFractionOfTheSamples) {
         EXPECT_LT(errorAdaptive, 0.5 * errorOne);
         // The histogram accounts for every pixel and every sample
         ASSERT_EQ(a.pixelsBySamples.size(), 4u);
-        int64_t pixels = 0, samples = w * h;
+        int64_t pixels = 0, samples = w * h, checked = 0;
+        for (uint8_t probes : a.pixelChecked) {
+            EXPECT_TRUE(probes == 0 || probes == 2 || probes == 3) << int(probes);
+            samples += probes;
+            checked += probes > 0;
+        }
+        EXPECT_EQ(checked, a.checkedPixels);
         for (size_t k = 0; k < a.pixelsBySamples.size(); ++k) {
             pixels += a.pixelsBySamples[k];
             if (k) samples += a.pixelsBySamples[k] << (2 * k);
         }
+        EXPECT_GT(a.checkedPixels, 0);
+        EXPECT_LE(a.checkedPixels, a.pixelsBySamples[0]);
         EXPECT_EQ(pixels, w * h);
         EXPECT_EQ(samples, a.samples);
         EXPECT_EQ(a.stats.camera, a.samples);
@@ -182,17 +190,32 @@ material(color="green") translate([2, -1, 0]) cube([1, 2, 1]);
     RenderOptions o;
     double threshold = o.adaptiveThreshold + 1.0 / 255;  // the renderer keeps 1/255 steps
     auto display = [&](int x, int y, int ch) { return std::sqrt(std::clamp(double(one.image.at(x, y)[ch]), 0.0, 1.0)); };
-    // Every pixel that differs from a neighbour beyond the threshold is refined
-    int contrasted = 0;
+    // Every pixel that differs from a neighbour beyond the threshold is refined or checked
+    // (two probe samples on the neighbour's side saw its centre's colour), and the contrast is
+    // refined on at least one side of nearly every such pair
+    auto examined = [&](int x, int y) {
+        size_t p = size_t(y) * w + x;
+        return a.pixelLevels[p] > 0 || a.pixelChecked[p];
+    };
+    auto refined = [&](int x, int y) { return a.pixelLevels[size_t(y) * w + x] > 0; };
+    int contrasted = 0, refinedPairs = 0;
     for (int y = 0; y < h; ++y)
-        for (int x = 0; x + 1 < w; ++x)
+        for (int x = 0; x + 1 < w; ++x) {
+            bool differs = false;
             for (int ch = 0; ch < 3; ++ch)
-                if (std::abs(display(x, y, ch) - display(x + 1, y, ch)) > threshold) {
-                    ++contrasted;
-                    EXPECT_GT(a.pixelLevels[size_t(y) * w + x], 0) << x << "," << y;
-                    EXPECT_GT(a.pixelLevels[size_t(y) * w + x + 1], 0) << x + 1 << "," << y;
-                }
+                differs |= std::abs(display(x, y, ch) - display(x + 1, y, ch)) > threshold;
+            if (!differs) continue;
+            ++contrasted;
+            EXPECT_TRUE(examined(x, y)) << x << "," << y;
+            EXPECT_TRUE(examined(x + 1, y)) << x + 1 << "," << y;
+            refinedPairs += refined(x, y) || refined(x + 1, y);
+        }
     EXPECT_GT(contrasted, 20);
+    // A pair is left unrefined where every probe of both pixels fell on its own pixel's side
+    // of the edge: for straight edges evenly spread between the centres, a third of the pairs,
+    // those where the edge covers little of the pixel it crosses
+    EXPECT_GT(refinedPairs, 0.6 * contrasted) << refinedPairs << " of " << contrasted;
+    EXPECT_GT(a.checkedPixels, 0);
     // Most of the picture keeps its centre sample
     EXPECT_GT(a.pixelsBySamples[0], w * h / 2);
     // The seam between the two green boxes: found as the column where the 1 spp picture's
@@ -200,9 +223,10 @@ material(color="green") translate([2, -1, 0]) cube([1, 2, 1]);
     RenderOptions noContrast;
     noContrast.adaptiveThreshold = 1;  // only primitive changes refine
     RenderResult seams = adaptive(*c.rs, w, h, noContrast);
-    int64_t refined = seams.pixelsBySamples[0];
-    EXPECT_LT(refined, w * h);
-    EXPECT_GT(w * h - refined, contrasted / 4);
+    int64_t examinedSeams = w * h - seams.pixelsBySamples[0] + seams.checkedPixels;
+    EXPECT_LT(examinedSeams, w * h);
+    EXPECT_GT(examinedSeams, contrasted / 4);
+    EXPECT_GT(w * h - seams.pixelsBySamples[0], 0);
 }
 
 TEST(AdaptiveRender, OptionsAreValidated) {
