@@ -72,6 +72,7 @@ int runRender(const RenderArgs &a) {
     ir::Scene scene = loadScene(a.scene.input, diag, lo);
     CompileOptions co;
     co.plan = !a.noPlan;
+    co.threads = a.threads;
     auto rs = RenderScene::compile(scene, diag, co);
     RenderPlan plan = makePlan(*rs);
     if (!a.samplesGiven) {

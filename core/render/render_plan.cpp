@@ -129,9 +129,11 @@ std::string describePlan(const RenderScene &scene, const ir::ImportStats &import
        << "\n";
     os << "  samples: ";
     if (render.adaptive)
-        os << "adaptive, each pixel's centre, then 4, 16 ... up to " << render.adaptiveMax
-           << " stratified samples where a neighbour differs by more than " << render.adaptiveThreshold
-           << " or saw another primitive, until the standard error is below "
+        os << "adaptive, each pixel's centre; where a neighbour differs by more than "
+           << render.adaptiveThreshold
+           << " or saw another primitive, first the samples facing it (the centre is kept where"
+              " they agree), then 4, 16 ... up to "
+           << render.adaptiveMax << " stratified samples until the standard error is below "
            << render.adaptiveTolerance;
     else
         os << render.samplesPerPixel << " per pixel";

@@ -194,7 +194,7 @@ class Compiler {
             throw SceneError(node.loc, "mesh reference is not in the scene (internal error)");
         auto &cached = meshes_[index];
         if (!cached) {
-            cached = std::make_shared<const TriangleMesh>(scene_.meshes[index]);
+            cached = std::make_shared<const TriangleMesh>(scene_.meshes[index], options_.threads);
             stats_.triangles += cached->triangleCount();
         }
         return cached;

@@ -20,6 +20,9 @@ struct CompileOptions {
     /// Off: unions are always span-merged, objects behind the camera are kept and CSG subtrees
     /// are never pruned, as a naive renderer would; for measuring and testing the plan.
     bool plan = true;
+    /// Threads that build the BVHs of triangle meshes (0: every core); `render -t` sets it, so
+    /// a render asked to use one core does not build on all of them. The trees do not depend on it.
+    int threads = 0;
 };
 
 struct CompileStats {
