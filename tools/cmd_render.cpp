@@ -27,6 +27,7 @@ struct RenderArgs {
     bool linear = false, quiet = false, plan = false, noPlan = false, noAa = false;
     bool samplesGiven = false;  ///< -s on the command line; else the plan chooses
     bool aaGiven = false;       ///< an --aa-* option: adaptive even where the plan would not be
+    bool aaToleranceGiven = false;
     int aaMax = 64;
     double aaThreshold = RenderOptions().adaptiveThreshold, aaTolerance = RenderOptions().adaptiveTolerance;
 };
@@ -78,6 +79,9 @@ int runRender(const RenderArgs &a) {
     if (!a.samplesGiven) {
         ro.samplesPerPixel = plan.defaultSamples;
         ro.adaptive = (plan.adaptive || a.aaGiven) && !a.noAa;
+        // Monte Carlo scenes: sampling adaptive to their noise, with a tolerance of its own
+        ro.adaptiveNoise = ro.adaptive && plan.monteCarlo;
+        if (ro.adaptiveNoise && !a.aaToleranceGiven) ro.adaptiveTolerance = kAdaptiveNoiseTolerance;
     }
     bool chosen = !a.samplesGiven && !a.aaGiven;  // else the user chose
     if (a.plan) std::fputs(describePlan(*rs, scene.stats, plan, ro, chosen).c_str(), stderr);
@@ -140,8 +144,8 @@ void addRenderCommand(CLI::App &app, std::function<int()> &action) {
               1, kMaxSamplesPerPixel);
     auto *aaMax = addNumber(*cmd, "--aa-max", args->aaMax,
                             "Adaptive antialiasing (the default of sharp scenes; any --aa-* option "
-                            "asks for it in Monte Carlo scenes too): most samples per pixel, 4, 16, "
-                            "64, 256, 1024 or 4096",
+                            "asks for it in Monte Carlo scenes too, adaptive to their noise): most "
+                            "samples per pixel, 4, 16, 64, 256, 1024 or 4096",
                             4, kMaxAdaptiveSamples);
     auto *aaThreshold = addNumber(*cmd, "--aa-threshold", args->aaThreshold,
                                   "Adaptive antialiasing: refine a pixel whose display value "
@@ -149,7 +153,8 @@ void addRenderCommand(CLI::App &app, std::function<int()> &action) {
                                   0.0, 1.0);
     auto *aaTolerance = addNumber(*cmd, "--aa-tolerance", args->aaTolerance,
                                   "Adaptive antialiasing: stop refining a pixel when the standard "
-                                  "error of its mean (display units) is below this (0: always --aa-max)",
+                                  "error of its mean (display units) is below this (0: always --aa-max; "
+                                  "Monte Carlo scenes: 0.02 unless given)",
                                   0.0, 1.0);
     auto *noAa = cmd->add_flag("--no-aa", args->noAa,
                                "No adaptive antialiasing: 1 sample per pixel (4 with Monte Carlo "
@@ -171,7 +176,8 @@ void addRenderCommand(CLI::App &app, std::function<int()> &action) {
     cmd->add_flag("-q,--quiet", args->quiet, "Only warnings and errors");
     cmd->callback([args, cmd, &action]() {
         args->samplesGiven = cmd->count("--samples") > 0;
-        args->aaGiven = cmd->count("--aa-max") + cmd->count("--aa-threshold") + cmd->count("--aa-tolerance") > 0;
+        args->aaToleranceGiven = cmd->count("--aa-tolerance") > 0;
+        args->aaGiven = cmd->count("--aa-max") + cmd->count("--aa-threshold") + args->aaToleranceGiven > 0;
         action = [args]() { return runRender(*args); };
     });
 }

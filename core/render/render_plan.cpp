@@ -43,7 +43,8 @@ RenderPlan makePlan(const RenderScene &scene) {
     plan.monteCarlo = u.glossy + u.frosted + jittered > 0;
     if (plan.monteCarlo) {
         plan.defaultSamples = 4;
-        plan.samplesReason = "Monte Carlo effects: 4 samples average their noise";
+        plan.samplesReason = "Monte Carlo effects: 4 samples average their noise (--aa-tolerance: "
+                             "more samples where the noise is larger)";
     } else {
         plan.defaultSamples = 1;
         plan.adaptive = true;
@@ -128,7 +129,10 @@ std::string describePlan(const RenderScene &scene, const ir::ImportStats &import
                                 : "off")
        << "\n";
     os << "  samples: ";
-    if (render.adaptive)
+    if (render.adaptive && render.adaptiveNoise)
+        os << "adaptive to Monte Carlo noise, every pixel 4, 16 ... up to " << render.adaptiveMax
+           << " stratified samples until the standard error is below " << render.adaptiveTolerance;
+    else if (render.adaptive)
         os << "adaptive, each pixel's centre; where a neighbour differs by more than "
            << render.adaptiveThreshold
            << " or saw another primitive, first the samples facing it (the centre is kept where"

@@ -19,7 +19,9 @@ struct RenderPlan {
     int defaultSamples = 1;
     /// Adaptive antialiasing when the user gives no sample count (sharp scenes): the centre of
     /// each pixel, more samples only where neighbours differ. Monte Carlo scenes keep
-    /// defaultSamples everywhere: their noise differs between all neighbours.
+    /// defaultSamples everywhere: their noise differs between all neighbours, and sampling
+    /// adaptive to noise (RenderOptions::adaptiveNoise, what `--aa-*` options ask for there)
+    /// measured no better than uniform sampling at the same mean count (README).
     bool adaptive = false;
     std::string samplesReason;
 };

@@ -327,14 +327,22 @@ double adaptiveError(const std::vector<Rgb> &display, int k) {
 
 void renderAdaptive(const Camera &camera, const WhittedIntegrator &integrator, const RenderOptions &opts,
                     int threads, RenderResult &result) {
-    FirstPass first = adaptiveFirstPass(camera, integrator, opts, threads, result);
+    // Monte Carlo noise: every pixel from round 1 on, with no centre pass
+    FirstPass first;
+    if (opts.adaptiveNoise) {
+        result.pixelLevels.assign(size_t(opts.width) * opts.height, 0);
+        first.refine.resize(result.pixelLevels.size());
+        for (size_t p = 0; p < first.refine.size(); ++p) first.refine[p] = static_cast<int>(p);
+    } else {
+        first = adaptiveFirstPass(camera, integrator, opts, threads, result);
+    }
     const std::vector<int> &refine = first.refine;
     int levels = adaptiveLevels(opts.adaptiveMax);
     int side = 1 << levels;
     result.pixelChecked.assign(result.pixelLevels.size(), 0);
     constexpr int kChunk = 32;
     int chunks = static_cast<int>((refine.size() + kChunk - 1) / kChunk);
-    runJobs(threads, chunks, opts, 0.5, 1, result.stats, [&](int chunk, TraceContext &ctx) {
+    runJobs(threads, chunks, opts, opts.adaptiveNoise ? 0 : 0.5, 1, result.stats, [&](int chunk, TraceContext &ctx) {
         std::vector<Rgb> values(opts.adaptiveMax), display(opts.adaptiveMax);
         std::vector<int> cells(opts.adaptiveMax);
         std::vector<uint32_t> hits(opts.adaptiveMax);
@@ -367,7 +375,7 @@ void renderAdaptive(const Camera &camera, const WhittedIntegrator &integrator, c
             // centre's primitive and display value, the contrast lies in the neighbours' boxes:
             // the pixel keeps its centre (a checked pixel)
             int n = 0, k = 0;
-            int facing = facingQuadrants(first.sides[pixel]);
+            int facing = opts.adaptiveNoise ? 0xf : facingQuadrants(first.sides[pixel]);
             if (facing != 0xf) {
                 // quadrant q holds sample q ^ (round 1's scramble), as adaptiveCell places them
                 int scramble = static_cast<int>(mixBits(key ^ mixBits(1)) & 3);
@@ -409,7 +417,7 @@ void renderAdaptive(const Camera &camera, const WhittedIntegrator &integrator, c
     });
     result.pixelsBySamples.assign(levels + 1, 0);
     result.pixelsBySamples[0] = int64_t(opts.width) * opts.height - int64_t(refine.size());
-    result.samples = int64_t(opts.width) * opts.height;
+    result.samples = opts.adaptiveNoise ? 0 : int64_t(opts.width) * opts.height;
     result.checkedPixels = 0;
     for (int pixel : refine) {
         int k = result.pixelLevels[pixel];
@@ -432,16 +440,18 @@ std::string describeSampling(const RenderResult &r) {
     std::snprintf(buf, sizeof buf, "%.2f per pixel", meanSamplesPerPixel(r));
     if (r.pixelsBySamples.empty()) return buf;
     double pixels = double(r.image.width()) * r.image.height();
+    // Sampling adaptive to noise has no centre-only pixels: it starts at 4
+    bool noise = r.pixelsBySamples[0] == 0;
     std::string s = "adaptive, pixels by samples:";
-    for (size_t k = 0; k < r.pixelsBySamples.size(); ++k) {
+    for (size_t k = noise ? 1 : 0; k < r.pixelsBySamples.size(); ++k) {
         char part[96];
         if (k == 0)
             std::snprintf(part, sizeof part, " 1: %.1f %%, checked: %.1f %%",
                           100.0 * (r.pixelsBySamples[0] - r.checkedPixels) / pixels,
                           100.0 * r.checkedPixels / pixels);
         else
-            std::snprintf(part, sizeof part, ", %d: %.1f %%", 1 << (2 * k),
-                          100.0 * r.pixelsBySamples[k] / pixels);
+            std::snprintf(part, sizeof part, "%s %d: %.1f %%", k == (noise ? 1u : 0u) ? "" : ",",
+                          1 << (2 * k), 100.0 * r.pixelsBySamples[k] / pixels);
         s += part;
     }
     return s + "; " + buf;

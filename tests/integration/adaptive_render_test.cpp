@@ -271,6 +271,49 @@ TEST(AdaptiveRender, PlanChoosesAdaptiveForSharpScenesAndSaysWhereSamplesWent) {
     // Monte Carlo scenes keep uniform sampling
     Compiled mc = loadScene("montecarlo/glossy.scad");
     EXPECT_FALSE(makePlan(*mc.rs).adaptive);
+    o.adaptiveNoise = true;
+    o.adaptiveTolerance = kAdaptiveNoiseTolerance;
+    text = describePlan(*mc.rs, mc.scene.stats, makePlan(*mc.rs), o, false);
+    EXPECT_NE(text.find("samples: adaptive to Monte Carlo noise, every pixel 4, 16 ... up to 64 stratified "
+                        "samples until the standard error is below 0.02 (given)"),
+              std::string::npos)
+        << text;
+}
+
+// Sampling adaptive to Monte Carlo noise: every pixel starts from the 4 cells of round 1 and
+// goes on while its error estimate is above the tolerance; the samples are uniform sampling's
+TEST(AdaptiveRender, NoiseModeRefinesEveryPixelFromFourSamplesWithUniformSamplingsSamples) {
+    Compiled c = loadScene("montecarlo/glossy.scad");
+    const int w = 32, h = 24;
+    RenderOptions o;
+    o.adaptiveNoise = true;
+    o.adaptiveMax = 16;
+    o.adaptiveTolerance = 0;  // every pixel to the maximum: exactly uniform 16
+    RenderResult all = adaptive(*c.rs, w, h, o), sixteen = uniform(*c.rs, w, h, 16);
+    EXPECT_TRUE(samePixels(all.image, sixteen.image));
+    EXPECT_EQ(all.samples, int64_t(w) * h * 16);
+    EXPECT_EQ(all.pixelsBySamples[2], int64_t(w) * h);
+    // At the noise tolerance pixels stop at 4 where the estimate allows and go on where not;
+    // each is the mean of 4 stratified samples or exactly uniform 16's pixel
+    o.adaptiveTolerance = kAdaptiveNoiseTolerance;
+    RenderResult a = adaptive(*c.rs, w, h, o);
+    EXPECT_EQ(a.pixelsBySamples[0], 0);
+    EXPECT_GT(a.pixelsBySamples[1], 0);
+    EXPECT_GT(a.pixelsBySamples[2], 0);
+    EXPECT_EQ(a.pixelsBySamples[1] + a.pixelsBySamples[2], int64_t(w) * h);
+    EXPECT_EQ(a.samples, a.pixelsBySamples[1] * 4 + a.pixelsBySamples[2] * 16);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            if (a.pixelLevels[size_t(y) * w + x] == 2) EXPECT_TRUE(a.image.at(x, y) == sixteen.image.at(x, y));
+    EXPECT_EQ(describeSampling(a).rfind("adaptive, pixels by samples: 4: ", 0), 0u) << describeSampling(a);
+    // The same picture for any thread count and tile size
+    for (auto [threads, tile] : {std::pair{1, 16}, std::pair{3, 5}}) {
+        o.threads = threads;
+        o.tileSize = tile;
+        RenderResult r = adaptive(*c.rs, w, h, o);
+        EXPECT_TRUE(samePixels(a.image, r.image)) << threads << " threads, tile " << tile;
+        EXPECT_EQ(a.pixelLevels, r.pixelLevels);
+    }
 }
 
 }  // namespace

@@ -192,6 +192,15 @@ TEST_F(Cli, PlanIsPrintedBeforeRendering) {
     EXPECT_NE(mc.err.find(", 4 spp,"), std::string::npos) << mc.err;
     CliRun given = run("render --plan -s 2 -W 16 -H 12 " + scene("montecarlo/glossy.scad") + " -o " + out);
     EXPECT_NE(given.err.find("samples: 2 per pixel (given)"), std::string::npos) << given.err;
+    // --aa-* there asks for sampling adaptive to the noise, at its own tolerance unless given
+    CliRun noise = run("render --plan --aa-max 16 -W 16 -H 12 " + scene("montecarlo/glossy.scad") + " -o " + out);
+    EXPECT_NE(noise.err.find("adaptive to Monte Carlo noise, every pixel 4, 16 ... up to 16 stratified samples "
+                             "until the standard error is below 0.02 (given)"),
+              std::string::npos)
+        << noise.err;
+    EXPECT_NE(noise.err.find("\nplan: samples: adaptive, pixels by samples: 4: "), std::string::npos) << noise.err;
+    CliRun loose = run("render --plan --aa-tolerance 0.5 -W 16 -H 12 " + scene("montecarlo/glossy.scad") + " -o " + out);
+    EXPECT_NE(loose.err.find("until the standard error is below 0.5 (given)"), std::string::npos) << loose.err;
     // Without the plan nothing is left out
     CliRun naive = run("render --plan --no-plan -W 16 -H 12 " + scene("print_plate.scad") + " -o " + out);
     EXPECT_NE(naive.err.find("plan (disabled"), std::string::npos) << naive.err;
