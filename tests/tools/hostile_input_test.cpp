@@ -30,21 +30,16 @@
 #include "core/system/temp_file.h"
 #include "tools/cli_common.h"
 
+#include "support/temp_dir_test.h"
+
 namespace rt {
 namespace {
 
 namespace fs = std::filesystem;
 
-class Hostile : public ::testing::Test {
+class Hostile : public test::TempDirTest {
   protected:
-    void SetUp() override {
-        dir = fs::temp_directory_path() /
-              (std::string("scadray_hostile_") +
-               ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-    }
-    void TearDown() override { fs::remove_all(dir); }
+    Hostile() : TempDirTest("scadray_hostile_") {}
 
     struct Run {
         int exitCode;
@@ -85,7 +80,6 @@ class Hostile : public ::testing::Test {
         for (size_t p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
         return n;
     }
-    fs::path dir;
 };
 
 // ---- 1. Warning floods ----------------------------------------------------------------------

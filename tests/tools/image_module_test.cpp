@@ -12,6 +12,8 @@
 #include <sstream>
 #include <string>
 
+#include "support/temp_dir_test.h"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -52,18 +54,14 @@ TEST(ImageModule, NeitherScadrayNorRtCoreLinksOpenImageIO) {
     EXPECT_EQ(self.find("libOpenImageIO"), std::string::npos) << self;
 }
 
-class ImageModuleCli : public ::testing::Test {
+class ImageModuleCli : public rt::test::TempDirTest {
   protected:
+    ImageModuleCli() : TempDirTest("scadray_image_module_") {}
     void SetUp() override {
-        dir = fs::temp_directory_path() /
-              ("scadray_image_module_" + std::to_string(::getpid()) + "_" +
-               ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir);
-        fs::create_directories(dir);
+        TempDirTest::SetUp();
         scene = (dir / "cube.scad").string();
         std::ofstream(scene) << "cube(1);\n";
     }
-    void TearDown() override { fs::remove_all(dir); }
 
     /// Exit code and stderr of scadray run with `env` before it.
     std::pair<int, std::string> run(const std::string &env, const std::string &args) {
@@ -72,7 +70,6 @@ class ImageModuleCli : public ::testing::Test {
         int status = std::system(cmd.c_str());
         return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "stderr")};
     }
-    fs::path dir;
     std::string scene;
 };
 

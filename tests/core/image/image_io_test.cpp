@@ -7,21 +7,16 @@
 
 #include "core/image/image_io.h"
 
+#include "support/temp_dir_test.h"
+
 namespace rt {
 namespace {
 
 namespace fs = std::filesystem;
 
-class ImageIo : public ::testing::Test {
+class ImageIo : public test::TempDirTest {
   protected:
-    void SetUp() override {
-        dir = fs::temp_directory_path() /
-              ("scadray_image_io_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-               "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-    }
-    void TearDown() override { fs::remove_all(dir); }
+    ImageIo() : TempDirTest("scadray_image_io_") {}
 
     static Image gradient() {
         Image img(17, 5);
@@ -29,7 +24,6 @@ class ImageIo : public ::testing::Test {
             for (int x = 0; x < 17; ++x) img.set(x, y, Rgb(x / 16.0, y / 4.0, 0.5));
         return img;
     }
-    fs::path dir;
 };
 
 TEST(Srgb, MatchesTheStandardCurve) {

@@ -13,21 +13,16 @@
 
 #include "core/image/image_io.h"
 
+#include "support/temp_dir_test.h"
+
 namespace rt {
 namespace {
 
 namespace fs = std::filesystem;
 
-class ImageLimits : public ::testing::Test {
+class ImageLimits : public test::TempDirTest {
   protected:
-    void SetUp() override {
-        dir = fs::temp_directory_path() /
-              ("scadray_image_limits_" + std::to_string(::getpid()) + "_" +
-               ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-    }
-    void TearDown() override { fs::remove_all(dir); }
+    ImageLimits() : TempDirTest("scadray_image_limits_") {}
 
     std::string write(const std::string &name, const std::vector<unsigned char> &bytes) {
         std::string path = (dir / name).string();
@@ -47,7 +42,6 @@ class ImageLimits : public ::testing::Test {
         ADD_FAILURE() << path << " was read";
         return "";
     }
-    fs::path dir;
 };
 
 uint32_t crc32(const unsigned char *p, size_t n) {

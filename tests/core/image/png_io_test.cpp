@@ -16,22 +16,16 @@
 
 #include "core/image/image_io.h"
 
+#include "support/temp_dir_test.h"
+
 namespace rt {
 namespace {
 
 namespace fs = std::filesystem;
 
-class PngIo : public ::testing::Test {
+class PngIo : public test::TempDirTest {
   protected:
-    void SetUp() override {
-        dir = fs::temp_directory_path() /
-              ("scadray_png_io_" + std::to_string(::getpid()) + "_" +
-               ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-    }
-    void TearDown() override { fs::remove_all(dir); }
-    fs::path dir;
+    PngIo() : TempDirTest("scadray_png_io_") {}
 };
 
 /// What a test PNG declares besides its pixels.
