@@ -450,7 +450,7 @@ std::string describeSampling(const RenderResult &r) {
                           100.0 * (r.pixelsBySamples[0] - r.checkedPixels) / pixels,
                           100.0 * r.checkedPixels / pixels);
         else
-            std::snprintf(part, sizeof part, "%s %d: %.1f %%", k == (noise ? 1u : 0u) ? "" : ",",
+            std::snprintf(part, sizeof part, "%s %d: %.1f %%", noise && k == 1 ? "" : ",",
                           1 << (2 * k), 100.0 * r.pixelsBySamples[k] / pixels);
         s += part;
     }
