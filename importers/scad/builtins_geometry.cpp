@@ -481,8 +481,11 @@ const std::unordered_map<Symbol, Evaluator::ModuleHandler, SymbolHash>
         add("linear_extrude", &Evaluator::moduleLinearExtrude);
         add("rotate_extrude", &Evaluator::moduleRotateExtrude);
         add("offset", &Evaluator::moduleOffset);
-        for (const char *name : {"minkowski", "resize", "surface", "text", "projection"})
-            add(name, &Evaluator::moduleUnsupported);
+        add("text", &Evaluator::moduleText);
+        add("surface", &Evaluator::moduleSurface);
+        add("resize", &Evaluator::moduleResize);
+        add("minkowski", &Evaluator::moduleMinkowski);
+        add("projection", &Evaluator::moduleProjection);
         return t;
     }();
     return kTable;

@@ -345,6 +345,17 @@ class Evaluator {
     ir::NodePtr importGltfFile(const std::string &path, const ModuleInstantiation &inst);
     int addMesh(ir::Mesh mesh);
 
+    // text() (builtins_text.cpp)
+    ir::NodePtr moduleText(const ModuleInstantiation &inst, const FramePtr &f);
+
+    // 2D file formats and height maps: import() of .dxf/.svg, surface() (builtins_import2d.cpp)
+    ir::NodePtr moduleSurface(const ModuleInstantiation &inst, const FramePtr &f);
+
+    // resize(), minkowski(), projection() (builtins_3d_ops.cpp)
+    ir::NodePtr moduleResize(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr moduleMinkowski(const ModuleInstantiation &inst, const FramePtr &f);
+    ir::NodePtr moduleProjection(const ModuleInstantiation &inst, const FramePtr &f);
+
     // Metadata modules (builtins_metadata.cpp)
     ir::NodePtr instantiateMetadata(Symbol name, const ModuleInstantiation &inst,
                                     const FramePtr &f);
