@@ -452,6 +452,44 @@ std::vector<Vec3> primitivePoints(const Node &n, const Scene &scene) {
     return std::get<PolytopePrim>(n.shape).vertices;
 }
 
+}  // namespace
+
+PolytopePrim openscadPolyhedron(const Node &n, const Scene &scene) {
+    auto fromMesh = [](const Mesh &m) {
+        PolytopePrim p;
+        p.vertices = m.positions;
+        for (const auto &t : m.triangles)
+            p.faces.push_back({static_cast<int>(t[0]), static_cast<int>(t[1]), static_cast<int>(t[2])});
+        return p;
+    };
+    auto meshAt = [&](int index) -> const Mesh * {
+        return index >= 0 && index < static_cast<int>(scene.meshes.size()) ? scene.meshes[index].get()
+                                                                           : nullptr;
+    };
+    if (const auto *b = std::get_if<BoxPrim>(&n.shape)) {
+        PolytopePrim p;
+        for (int i = 0; i < 8; ++i) p.vertices.push_back(Bounds3(b->min, b->max).corner(i));
+        p.faces = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
+        return p;
+    }
+    if (auto round = roundPolytope(n)) return std::move(*round);
+    if (const auto *l = std::get_if<LathePrim>(&n.shape))
+        return fromMesh(openscadRevolve(l->outlines, l->angle, l->fragments));
+    if (const auto *t = std::get_if<TorusPrim>(&n.shape))
+        return fromMesh(openscadRevolve({t->facetOutline}, t->angle, t->fragments));
+    if (const auto *m = std::get_if<MeshPrim>(&n.shape)) {
+        const Mesh *mesh = meshAt(m->mesh);
+        return mesh ? fromMesh(*mesh) : PolytopePrim{};
+    }
+    if (const auto *p = std::get_if<PrismPrim>(&n.shape)) {
+        if (const Mesh *mesh = meshAt(p->mesh)) return fromMesh(*mesh);
+        return prismPolytope(*p);
+    }
+    return std::get<PolytopePrim>(n.shape);
+}
+
+namespace {
+
 /// True for a subtree that is one convex solid: a box, sphere, cylinder, polytope (a hull) or
 /// prism of a convex outline under transforms, or an intersection of such.
 bool isConvexSolid(const Node &n) {
@@ -564,7 +602,8 @@ HullResult clipHull(const PolytopePrim &poly, const FacePlane &plane) {
 
 class HullGatherer {
   public:
-    HullGatherer(const Scene &scene, DiagnosticSink &diag) : scene_(scene), diag_(diag) {}
+    HullGatherer(const Scene &scene, DiagnosticSink &diag, const char *op)
+        : scene_(scene), diag_(diag), op_(op) {}
 
     /// Appends n's points in its parent's coordinates; false once there are too many.
     bool gather(const Node &n, const Mat4 &parentFromNode, std::vector<Vec3> &out) {
@@ -591,9 +630,9 @@ class HullGatherer {
         size_t count = primitivePointCount(n, scene_);
         total_ += count;
         if (total_ > kMaxHullPoints) {
-            diag_.warning(n.loc, "hull(): this part gives " + std::to_string(count) +
+            diag_.warning(n.loc, std::string(op_) + ": this part gives " + std::to_string(count) +
                                      " points, more than the " + std::to_string(kMaxHullPoints) +
-                                     " a hull may have; the hull is left out");
+                                     " it may take; its result is left out");
             return false;
         }
         for (const Vec3 &p : primitivePoints(n, scene_))
@@ -622,9 +661,10 @@ class HullGatherer {
             }
         }
         if (!convex)
-            diag_.warning(n.loc, "hull() of an intersection() whose operands are not all single "
-                                 "convex solids: hulled as the intersection of the operands' "
-                                 "hulls, which can be larger than OpenSCAD's");
+            diag_.warning(n.loc, std::string(op_) +
+                                     " of an intersection() whose operands are not all single "
+                                     "convex solids: taken as the intersection of the operands' "
+                                     "hulls, which can be larger than OpenSCAD's");
         if (cut) out.insert(out.end(), cut->polytope.vertices.begin(), cut->polytope.vertices.end());
         return true;
     }
@@ -642,23 +682,119 @@ class HullGatherer {
         for (size_t i = 1; i < n.children.size(); ++i)
             markMaybeInside(*n.children[i], parentFromNode, corners, scene_, maybeInside);
         if (std::find(maybeInside.begin(), maybeInside.end(), 1) != maybeInside.end())
-            diag_.warning(n.loc, "hull() of a difference() that cuts corners of its first "
-                                 "operand's hull: hulled as the first operand alone, which can "
-                                 "be larger than OpenSCAD's hull of the difference");
+            diag_.warning(n.loc, std::string(op_) +
+                                     " of a difference() that cuts corners of its first "
+                                     "operand's hull: taken as the first operand's hull, which "
+                                     "can be larger than OpenSCAD's result");
         out.insert(out.end(), corners.begin(), corners.end());
         return true;
     }
 
     const Scene &scene_;
     DiagnosticSink &diag_;
+    const char *op_;
     size_t total_ = 0;
+};
+
+/// Whether the mesh's surface is that of its convex hull: every triangle lies in the plane of
+/// a hull face (within the hull's tolerance), which holds for a closed convex mesh only.
+bool meshIsConvex(const Mesh &mesh, const HullResult &hull) {
+    std::vector<FacePlane> planes = polytopePlanes(hull.polytope);
+    double tol = 4 * hullTolerance(hull.polytope.vertices);
+    for (const auto &t : mesh.triangles) {
+        bool onSomeFace = false;
+        for (const FacePlane &pl : planes) {
+            bool on = true;
+            for (uint32_t i : t)
+                if (std::abs(dot(pl.normal, mesh.positions[i]) - pl.offset) > tol) on = false;
+            if (on) {
+                onSomeFace = true;
+                break;
+            }
+        }
+        if (!onSomeFace) return false;
+    }
+    return true;
+}
+
+class ConvexPartGatherer {
+  public:
+    ConvexPartGatherer(const Scene &scene, DiagnosticSink &diag, const char *op)
+        : scene_(scene), diag_(diag), op_(op), points_(scene, diag, op) {}
+
+    bool gather(const Node &n, const Mat4 &parentFromNode, std::vector<std::vector<Vec3>> &out) {
+        switch (n.kind) {
+            case NodeKind::Group:
+            case NodeKind::Union:
+                for (const auto &c : n.children)
+                    if (!gather(*c, parentFromNode, out)) return false;
+                return true;
+            case NodeKind::Transform:
+                for (const auto &c : n.children)
+                    if (!gather(*c, parentFromNode * n.matrix, out)) return false;
+                return true;
+            case NodeKind::Intersection:
+                if (!isConvexSolid(n)) return unsupported(n, "an intersection() of non-convex operands");
+                return onePart(n, parentFromNode, out);
+            case NodeKind::Difference: return unsupported(n, "a difference()");
+            case NodeKind::Primitive: break;
+        }
+        if (isConvexSolid(n)) return onePart(n, parentFromNode, out);
+        if (const auto *m = std::get_if<MeshPrim>(&n.shape)) {
+            if (m->mesh < 0 || m->mesh >= static_cast<int>(scene_.meshes.size())) return true;
+            std::vector<Vec3> pts;
+            if (!points_.gather(n, Mat4(), pts)) return false;
+            HullResult h = convexHull(pts);
+            if (h.kind != HullKind::Solid) return true;
+            if (!meshIsConvex(*scene_.meshes[m->mesh], h))
+                return unsupported(n, "a non-convex polyhedron or mesh");
+            for (Vec3 &p : h.polytope.vertices) p = parentFromNode.transformPoint(p);
+            out.push_back(std::move(h.polytope.vertices));
+            return true;
+        }
+        return unsupported(n, std::holds_alternative<PrismPrim>(n.shape)
+                                  ? "an extrusion of a non-convex outline"
+                                  : "a solid of revolution");
+    }
+
+    bool complete() const { return complete_; }
+
+  private:
+    bool onePart(const Node &n, const Mat4 &parentFromNode, std::vector<std::vector<Vec3>> &out) {
+        std::vector<Vec3> pts;
+        if (!points_.gather(n, parentFromNode, pts)) return false;
+        if (!pts.empty()) out.push_back(std::move(pts));
+        return true;
+    }
+
+    bool unsupported(const Node &n, const std::string &what) {
+        diag_.warning(n.loc, std::string(op_) + " of " + what +
+                                 " is not supported yet (OpenSCAD splits it into convex parts); "
+                                 "left out");
+        complete_ = false;
+        return true;
+    }
+
+    const Scene &scene_;
+    DiagnosticSink &diag_;
+    const char *op_;
+    HullGatherer points_;
+    bool complete_ = true;
 };
 
 }  // namespace
 
 bool gatherHullPoints(const Node &node, const Scene &scene, DiagnosticSink &diag,
-                      std::vector<Vec3> &out) {
-    return HullGatherer(scene, diag).gather(node, Mat4(), out);
+                      std::vector<Vec3> &out, const char *op) {
+    return HullGatherer(scene, diag, op).gather(node, Mat4(), out);
+}
+
+bool gatherConvexParts(const Node &node, const Scene &scene, DiagnosticSink &diag,
+                       std::vector<std::vector<Vec3>> &out, bool *complete, const char *op) {
+    ConvexPartGatherer g(scene, diag, op);
+    bool ok = g.gather(node, Mat4(), out);
+    if (complete) *complete = g.complete();
+    return ok;
 }
 
 }  // namespace rt::ir

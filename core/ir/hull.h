@@ -56,8 +56,26 @@ constexpr size_t kMaxHullPoints = 20'000'000;
 /// mesh vertices; polytope vertices. Unions are exact. An intersection of convex operands is
 /// clipped exactly; a difference is exact when the subtracted parts miss every vertex of the
 /// first operand's hull. Other cases are approximated with a warning at the CSG node. Returns
-/// false (after a warning) when there are more than kMaxHullPoints.
+/// false (after a warning) when there are more than kMaxHullPoints. `op` names the operation
+/// in warnings (resize() takes its bounding box from the same points).
 bool gatherHullPoints(const Node &node, const Scene &scene, DiagnosticSink &diag,
-                      std::vector<Vec3> &out);
+                      std::vector<Vec3> &out, const char *op = "hull()");
+
+/// A primitive as OpenSCAD 2021.01 tessellates it, in its own coordinates: box corners; spheres,
+/// cylinders and cones from the node's $fn/$fa/$fs; tori and lathes as its rotate_extrude
+/// mesh; meshes and non-convex prisms as their triangles; polytopes and convex prisms as their
+/// faces. Each face is planar; their orientation is not specified.
+PolytopePrim openscadPolyhedron(const Node &primitive, const Scene &scene);
+
+/// Convex parts whose union is OpenSCAD's geometry of the subtree `node`, each as the points
+/// whose hull it is (in the coordinates of node's parent), for minkowski(), which distributes
+/// over unions: boxes, spheres, cylinders, polytopes and convex prisms as gatherHullPoints
+/// takes them, convex polyhedra and meshes, intersections of convex operands, all under
+/// transforms and unions. Anything else (a difference, a non-convex mesh or extrusion, a solid
+/// of revolution) is left out with a warning at its node naming it, and *complete is set to
+/// false. Returns false (after a warning) when there are more than kMaxHullPoints.
+bool gatherConvexParts(const Node &node, const Scene &scene, DiagnosticSink &diag,
+                       std::vector<std::vector<Vec3>> &out, bool *complete,
+                       const char *op = "minkowski()");
 
 }  // namespace rt::ir

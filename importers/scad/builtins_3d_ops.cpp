@@ -1,18 +1,236 @@
 // SPDX-License-Identifier: MIT
+// resize(), minkowski() and projection(): operations OpenSCAD 2021.01 applies to the evaluated
+// geometry of their children (GeometryEvaluator), here computed from the same tessellated
+// points (ir::gatherHullPoints, ir::gatherConvexParts) and Clipper polygon sets.
+#include <algorithm>
+#include <cmath>
+#include <array>
+#include <limits>
+#include <optional>
+#include <string>
+
+#include "core/ir/hull.h"
+#include "importers/scad/clipper2d.h"
 #include "importers/scad/evaluator.h"
+#include "importers/scad/projection.h"
 
 namespace rt::scad {
 
+namespace {
+
+/// Most convex parts a 3D minkowski() builds (the product of its operands' part counts):
+/// each part is a hull of pairwise sums, so this bounds the work and the primitives made.
+constexpr size_t kMaxMinkowskiParts = 100'000;
+
+/// 2021.01's resize scale per axis (CGALUtils / PolySet / Polygon2d resize): an axis with a
+/// positive new size is scaled to it; one without, when `autosize` is set for it, takes the
+/// scale of the axis with the largest new size; the rest keep 1. Sizes that are not positive
+/// (0, negative, NaN) count as not given [verified with 2021.01: resize([-10, 5, 0],
+/// auto = true) scales x by 5/4].
+std::array<double, 3> resizeScale(const double newsize[3], const bool autosize[3],
+                                  const double size[3], int dims) {
+    std::array<double, 3> scale{1, 1, 1};
+    int largest = 0;
+    for (int i = 0; i < dims; ++i) {
+        if (newsize[i] > 0 && size[i] > 0) scale[i] = newsize[i] / size[i];
+        if (newsize[i] > newsize[largest]) largest = i;
+    }
+    double autoscale = newsize[largest] > 0 && size[largest] > 0 ? newsize[largest] / size[largest] : 1;
+    for (int i = 0; i < dims; ++i)
+        if (autosize[i] && !(newsize[i] > 0)) scale[i] = autoscale;
+    return scale;
+}
+
+}  // namespace
+
 ir::NodePtr Evaluator::moduleResize(const ModuleInstantiation &inst, const FramePtr &f) {
-    return moduleUnsupported(inst, f);
+    FramePtr dollars = makeFrame(nullptr);
+    BoundArgs a = bindBuiltin(inst, {"newsize", "auto", "convexity"}, f, dollars.get());
+    FrameGuard g(dyn_, dollars.get());
+    // 2021.01 (cgaladv.cc): up to three numbers of a vector (anything else counts as 0);
+    // `auto` as one bool for every axis or a vector of truthy values
+    double newsize[3] = {0, 0, 0};
+    if (a[0].isVector()) {
+        const auto &v = a[0].toVector();
+        for (size_t i = 0; i < 3 && i < v.size(); ++i)
+            if (v[i].isNumber()) newsize[i] = v[i].toNumber();
+    }
+    bool autosize[3] = {false, false, false};
+    if (a[1].isVector()) {
+        const auto &v = a[1].toVector();
+        for (size_t i = 0; i < 3 && i < v.size(); ++i) autosize[i] = v[i].toBool();
+    } else if (a[1].isBool()) {
+        autosize[0] = autosize[1] = autosize[2] = a[1].boolValue();
+    }
+
+    ir::NodePtr children = newNode(ir::NodeKind::Group, inst.loc);
+    instantiateChildren(inst, f, children->children);
+    int dims = dimensionOf(*children);
+    if (dims == 0) return children;
+
+    // The bounding box of what OpenSCAD evaluates: the Clipper polygon set in 2D, the
+    // tessellated points in 3D
+    double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    if (dims == 2) {
+        clipper2d::PolygonSet set = evaluate2d(*children);
+        if (set.empty()) return newNode(ir::NodeKind::Group, inst.loc);
+        lo[0] = lo[1] = std::numeric_limits<double>::infinity();
+        hi[0] = hi[1] = -lo[0];
+        for (const Outline &o : set.outlines)
+            for (Vec2 p : o) {
+                lo[0] = std::min(lo[0], p.x), hi[0] = std::max(hi[0], p.x);
+                lo[1] = std::min(lo[1], p.y), hi[1] = std::max(hi[1], p.y);
+            }
+    } else {
+        warnIgnored2d(*children);
+        std::vector<Vec3> points;
+        if (!ir::gatherHullPoints(*children, scene_, diag_, points, "resize()"))
+            return newNode(ir::NodeKind::Group, inst.loc);
+        if (points.empty()) return children;
+        Bounds3 b;
+        for (const Vec3 &p : points) b = unionBounds(b, p);
+        for (int i = 0; i < 3; ++i) lo[i] = b.min[i], hi[i] = b.max[i];
+    }
+    double size[3];
+    for (int i = 0; i < 3; ++i) size[i] = hi[i] - lo[i];
+    for (int i = 0; i < dims; ++i)
+        if (newsize[i] > 0 && !(size[i] > 0))
+            warn(inst.loc, "Resize in direction " + std::to_string(i) + " has no effect");
+    std::array<double, 3> s = resizeScale(newsize, autosize, size, dims);
+    if (!std::isfinite(s[0] * s[1] * s[2]) || s[0] * s[1] * s[2] == 0) {
+        // An infinite new size (or one so small its scale underflows) flattens or blows up
+        // the geometry: OpenSCAD's result has no volume
+        warn(inst.loc, "resize(" + a[0].toEchoString() + ") scales by [" + formatNumber(s[0]) + ", " +
+                           formatNumber(s[1]) + ", " + formatNumber(s[2]) +
+                           "], which leaves no finite volume; left out");
+        return newNode(ir::NodeKind::Group, inst.loc);
+    }
+    // Scaled about the origin, not the box's corner
+    ir::NodePtr node = newNode(ir::NodeKind::Transform, inst.loc);
+    node->matrix = Mat4::scale(Vec3(s[0], s[1], s[2]));
+    node->children = std::move(children->children);
+    return node;
 }
 
 ir::NodePtr Evaluator::moduleMinkowski(const ModuleInstantiation &inst, const FramePtr &f) {
-    return moduleUnsupported(inst, f);
+    FramePtr dollars = makeFrame(nullptr);
+    bindBuiltin(inst, {"convexity"}, f, dollars.get());
+    FrameGuard g(dyn_, dollars.get());
+    // The children are only a source of points, as under hull()
+    ir::NodePtr children = newNode(ir::NodeKind::Group, inst.loc);
+    ++hullDepth_;
+    try {
+        instantiateChildren(inst, f, children->children);
+    } catch (...) {
+        --hullDepth_;
+        throw;
+    }
+    --hullDepth_;
+    int dims = dimensionOf(*children);
+    if (dims == 0) return newNode(ir::NodeKind::Group, inst.loc);
+
+    if (dims == 2) {
+        // 2021.01: the 2D children with geometry, each as its polygon set, folded by
+        // ClipperUtils::applyMinkowski (3D children ignored with OpenSCAD's warnings)
+        std::vector<clipper2d::PolygonSet> operands;
+        for (const ir::Node *c : children2d(*children, true))
+            if (std::optional<clipper2d::PolygonSet> set = polygons2d(*c, nullptr))
+                operands.push_back(std::move(*set));
+        if (operands.empty()) return newNode(ir::NodeKind::Group, inst.loc);
+        clipper2d::PolygonSet result =
+            withClipper(inst.loc, [&] { return clipper2d::minkowski(operands); });
+        if (result.empty()) return newNode(ir::NodeKind::Group, inst.loc);
+        Shape2d s;
+        s.kind = Shape2dKind::Polygon;
+        s.outlines = std::move(result.outlines);
+        s.evaluated = true;
+        s.sanitized = result.sanitized;
+        return shape2dNode(std::move(s), inst);
+    }
+
+    // 3D: the sum distributes over unions, and the sum of two convex parts is the hull of the
+    // pairwise sums of their points (OpenSCAD's minkowski3 does the same on its convex parts)
+    warnIgnored2d(*children);
+    std::vector<std::vector<Vec3>> sum;
+    bool first = true;
+    for (const auto &c : children->children) {
+        if (dimensionOf(*c) != 3) continue;
+        std::vector<std::vector<Vec3>> parts;
+        bool complete = true;
+        if (!ir::gatherConvexParts(*c, scene_, diag_, parts, &complete))
+            return newNode(ir::NodeKind::Group, inst.loc);
+        if (parts.empty()) continue;  // an empty child is passed over, as in 2021.01
+        if (first) {
+            sum = std::move(parts);
+            first = false;
+            continue;
+        }
+        if (sum.size() * parts.size() > kMaxMinkowskiParts) {
+            warn(inst.loc, "minkowski(): " + std::to_string(sum.size()) + " x " +
+                               std::to_string(parts.size()) + " convex parts would be summed, more "
+                               "than the " + std::to_string(kMaxMinkowskiParts) +
+                               " allowed; left out");
+            return newNode(ir::NodeKind::Group, inst.loc);
+        }
+        std::vector<std::vector<Vec3>> next;
+        for (const auto &p : sum)
+            for (const auto &q : parts) {
+                if (p.size() * q.size() > ir::kMaxHullPoints) {
+                    warn(inst.loc, "minkowski(): a sum of " + std::to_string(p.size()) + " and " +
+                                       std::to_string(q.size()) + " points is more than the " +
+                                       std::to_string(ir::kMaxHullPoints) +
+                                       " a hull may have; left out");
+                    return newNode(ir::NodeKind::Group, inst.loc);
+                }
+                std::vector<Vec3> pts;
+                pts.reserve(p.size() * q.size());
+                for (const Vec3 &a : p)
+                    for (const Vec3 &b : q) pts.push_back(a + b);
+                ir::HullResult h = ir::convexHull(pts);
+                if (h.kind == ir::HullKind::Solid) next.push_back(std::move(h.polytope.vertices));
+            }
+        sum = std::move(next);
+    }
+    ir::NodePtr result = newNode(ir::NodeKind::Union, inst.loc);
+    for (auto &pts : sum) {
+        // A single part may still be flat (a sum of flat children): no volume to draw
+        ir::HullResult h = ir::convexHull(pts);
+        if (h.kind != ir::HullKind::Solid) continue;
+        ir::NodePtr n = primitive(std::move(h.polytope), inst, f);
+        n->fragments = ir::Fragments{};  // fixed points: no $fn/$fa/$fs (nor --facets) applies
+        result->children.push_back(std::move(n));
+    }
+    if (result->children.size() == 1) return std::move(result->children[0]);
+    if (result->children.empty()) result->kind = ir::NodeKind::Group;
+    return result;
 }
 
 ir::NodePtr Evaluator::moduleProjection(const ModuleInstantiation &inst, const FramePtr &f) {
-    return moduleUnsupported(inst, f);
+    FramePtr dollars = makeFrame(nullptr);
+    BoundArgs a = bindBuiltin(inst, {"cut", "convexity"}, f, dollars.get());
+    FrameGuard g(dyn_, dollars.get());
+    bool cut = a[0].isBool() && a[0].boolValue();  // 2021.01: only a boolean sets the mode
+    ir::NodePtr children = newNode(ir::NodeKind::Group, inst.loc);
+    instantiateChildren(inst, f, children->children);
+    if (contentsOf(*children) & 1)
+        warn(inst.loc, "projection(): its 2D children are ignored, as in OpenSCAD, which "
+                       "projects 3D geometry only");
+    if (!(contentsOf(*children) & 2)) return newNode(ir::NodeKind::Group, inst.loc);
+    clipper2d::PolygonSet result = withClipper(inst.loc, [&] {
+        return cut ? projectCut(*children, scene_) : projectShadow(*children, scene_);
+    });
+    if (result.empty()) {
+        if (cut && backgroundDepth_ == 0)
+            warn(inst.loc, "projection(cut = true): the children do not meet the plane z = 0, "
+                           "so the cut is empty (OpenSCAD: \"Projection() failed.\")");
+        return newNode(ir::NodeKind::Group, inst.loc);
+    }
+    Shape2d s;
+    s.kind = Shape2dKind::Polygon;
+    s.outlines = std::move(result.outlines);
+    s.evaluated = true;
+    s.sanitized = result.sanitized;
+    return shape2dNode(std::move(s), inst);
 }
 
 }  // namespace rt::scad

@@ -146,6 +146,68 @@ PolygonSet offset(const PolygonSet &p, double delta, JoinType join, double miter
     return fromTree(result);
 }
 
+namespace {
+
+/// The quads swept by `poly` (placed at each corner of the closed path `path`) along each
+/// edge of `path`, each turned counter-clockwise.
+void convolve(const Path &poly, const Path &path, Paths &quads) {
+    size_t n = path.size(), m = poly.size();
+    if (n == 0 || m == 0) return;
+    auto at = [&](size_t i, size_t j) {
+        return IntPoint(path[i % n].X + poly[j % m].X, path[i % n].Y + poly[j % m].Y);
+    };
+    for (size_t i = 0; i < n; ++i)
+        for (size_t j = 0; j < m; ++j) {
+            Path quad{at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)};
+            if (!ClipperLib::Orientation(quad)) ClipperLib::ReversePath(quad);
+            quads.push_back(std::move(quad));
+        }
+}
+
+/// `a` translated to the first point of every positive (counter-clockwise) path of `b`.
+void placeAtComponents(const Paths &a, const Paths &b, Paths &out) {
+    for (const Path &component : b) {
+        if (component.empty() || !ClipperLib::Orientation(component)) continue;
+        for (const Path &path : a) {
+            Path moved = path;
+            for (IntPoint &p : moved) {
+                p.X += component[0].X;
+                p.Y += component[0].Y;
+            }
+            out.push_back(std::move(moved));
+        }
+    }
+}
+
+}  // namespace
+
+PolygonSet minkowski(const std::vector<PolygonSet> &operands) {
+    if (operands.empty()) return {};
+    if (operands.size() == 1) return operands[0];
+    Paths lhs = toPaths(operands[0]);
+    ClipperLib::Clipper clipper;
+    for (size_t i = 1; i < operands.size(); ++i) {
+        Paths rhs = toPaths(operands[i]);
+        Paths terms;
+        for (const Path &r : rhs)
+            for (const Path &l : lhs) convolve(l, r, terms);
+        placeAtComponents(lhs, rhs, terms);
+        placeAtComponents(rhs, lhs, terms);
+        clipper.Clear();
+        try {
+            clipper.AddPaths(terms, ClipperLib::ptSubject, true);
+        } catch (const ClipperLib::clipperException &) {
+            throw RangeError("a 2D Minkowski sum reaches beyond the range of OpenSCAD's 2D "
+                             "geometry (|x| <= 7e13)");
+        }
+        if (i + 1 != operands.size())
+            clipper.Execute(ClipperLib::ctUnion, lhs, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    }
+    PolyTree result;
+    clipper.Execute(ClipperLib::ctUnion, result, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    return fromTree(result);
+}
+
 std::vector<Region> regions(const PolygonSet &p) {
     // Sanitized outlines are non-zero filled (holes run clockwise); others even-odd
     // Strictly simple: an outline that touches itself at a corner (a crossing of the

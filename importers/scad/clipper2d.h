@@ -62,6 +62,13 @@ enum class JoinType { Round, Miter, Square };
 PolygonSet offset(const PolygonSet &p, double delta, JoinType join, double miterLimit,
                   double arcTolerance);
 
+/// ClipperUtils::applyMinkowski: the Minkowski sum folded over the operands (one operand is
+/// returned as it is). Each pair of outlines is convolved into quads (one per edge of one and
+/// corner of the other, without Clipper's own union of them, for robustness as 2021.01 does),
+/// a copy of each operand is placed at a point of every positive outline of the other (so
+/// a sum that swallows a hole is filled), and everything is united with non-zero filling.
+PolygonSet minkowski(const std::vector<PolygonSet> &operands);
+
 /// The regions of a polygon set (filled even-odd, or non-zero once sanitized) with their
 /// holes, all outlines counter-clockwise and strictly simple (an outline touching itself at
 /// a corner is split there), nested as Clipper's PolyTree nests them: outlines that only

@@ -1,0 +1,272 @@
+// SPDX-License-Identifier: MIT
+#include "importers/scad/projection.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "core/ir/hull.h"
+#include "core/ir/scene_ir.h"
+#include "core/math/bounds3.h"
+
+namespace rt::scad {
+
+namespace {
+
+using clipper2d::BoolOp;
+using clipper2d::PolygonSet;
+
+/// A primitive of the tree with its faces in the tree's root coordinates.
+struct Leaf {
+    const ir::Node *node = nullptr;
+    ir::PolytopePrim mesh;
+    Bounds3 bounds;
+};
+
+void collectLeaves(const ir::Node &n, const Mat4 &rootFromNode, const ir::Scene &scene,
+                   std::vector<Leaf> &out) {
+    if (n.kind == ir::NodeKind::Primitive) {
+        Leaf leaf;
+        leaf.node = &n;
+        leaf.mesh = ir::openscadPolyhedron(n, scene);
+        for (Vec3 &v : leaf.mesh.vertices) {
+            v = rootFromNode.transformPoint(v);
+            leaf.bounds = unionBounds(leaf.bounds, v);
+        }
+        out.push_back(std::move(leaf));
+        return;
+    }
+    Mat4 m = n.kind == ir::NodeKind::Transform ? rootFromNode * n.matrix : rootFromNode;
+    for (const auto &c : n.children) collectLeaves(*c, m, scene, out);
+}
+
+/// The plane dot(normal, p) = offset.
+struct Plane {
+    Vec3 normal;
+    double offset = 0;
+};
+
+/// Newell's normal of a planar face (not normalised).
+Vec3 faceNormal(const std::vector<Vec3> &v, const std::vector<int> &face) {
+    Vec3 n(0, 0, 0);
+    for (size_t i = 0; i < face.size(); ++i) {
+        const Vec3 &a = v[face[i]], &b = v[face[(i + 1) % face.size()]];
+        n.x += (a.y - b.y) * (a.z + b.z);
+        n.y += (a.z - b.z) * (a.x + b.x);
+        n.z += (a.x - b.x) * (a.y + b.y);
+    }
+    return n;
+}
+
+/// Whether the plane meets the box (closed).
+bool planeMeetsBox(const Plane &pl, const Bounds3 &b) {
+    if (b.isEmpty()) return false;
+    double lo = INFINITY, hi = -INFINITY;
+    for (int i = 0; i < 8; ++i) {
+        double s = dot(pl.normal, b.corner(i)) - pl.offset;
+        lo = std::min(lo, s);
+        hi = std::max(hi, s);
+    }
+    return lo <= 0 && hi >= 0;
+}
+
+/// The loops where the plane cuts the mesh's faces, as points (x, y). A vertex on the plane
+/// counts as above it when onPlaneAbove, else as below (a consistent rule, so every face
+/// meets the plane in pairs of crossings and the loops close). A crossing on an edge is
+/// computed from the edge's lower-numbered end, so the two faces sharing the edge agree on it.
+std::vector<Outline> sliceLoops(const ir::PolytopePrim &mesh, const Plane &pl, bool onPlaneAbove) {
+    const auto &v = mesh.vertices;
+    std::vector<double> s(v.size());
+    std::vector<char> above(v.size());
+    for (size_t i = 0; i < v.size(); ++i) {
+        s[i] = dot(pl.normal, v[i]) - pl.offset;
+        above[i] = onPlaneAbove ? s[i] >= 0 : s[i] > 0;
+    }
+    std::unordered_map<uint64_t, int> ids;
+    std::vector<Vec3> points;
+    std::vector<std::vector<int>> adjacent;
+    auto crossing = [&](int a, int b) {
+        if (a > b) std::swap(a, b);
+        uint64_t key = static_cast<uint64_t>(a) << 32 | static_cast<uint32_t>(b);
+        auto [it, inserted] = ids.try_emplace(key, static_cast<int>(points.size()));
+        if (inserted) {
+            double t = s[a] / (s[a] - s[b]);
+            points.push_back(v[a] + (v[b] - v[a]) * t);
+            adjacent.emplace_back();
+        }
+        return it->second;
+    };
+    auto link = [&](int a, int b) {
+        if (a == b) return;
+        adjacent[a].push_back(b);
+        adjacent[b].push_back(a);
+    };
+    std::vector<int> cut;
+    for (const auto &face : mesh.faces) {
+        cut.clear();
+        for (size_t k = 0; k < face.size(); ++k) {
+            int a = face[k], b = face[(k + 1) % face.size()];
+            if (above[a] != above[b]) cut.push_back(crossing(a, b));
+        }
+        if (cut.size() == 2) {
+            link(cut[0], cut[1]);
+        } else if (cut.size() > 2) {
+            // A non-convex face: its crossings in order along the line where it meets the
+            // plane, paired from the first
+            Vec3 along = cross(pl.normal, faceNormal(v, face));
+            std::sort(cut.begin(), cut.end(), [&](int p, int q) {
+                return dot(along, points[p]) < dot(along, points[q]);
+            });
+            for (size_t k = 0; k + 1 < cut.size(); k += 2) link(cut[k], cut[k + 1]);
+        }
+    }
+    // Walk the loops (every crossing of a closed mesh has two neighbours; anything else, from
+    // an open or non-manifold mesh, ends the walk, and an open chain is closed as it is)
+    std::vector<Outline> loops;
+    std::vector<char> seen(points.size(), 0);
+    for (size_t start = 0; start < points.size(); ++start) {
+        if (seen[start] || adjacent[start].empty()) continue;
+        Outline loop;
+        int prev = -1, cur = static_cast<int>(start);
+        while (cur >= 0 && !seen[cur]) {
+            seen[cur] = 1;
+            loop.push_back({points[cur].x, points[cur].y});
+            int next = -1;
+            for (int n : adjacent[cur])
+                if (n != prev && !seen[n]) {
+                    next = n;
+                    break;
+                }
+            prev = cur;
+            cur = next;
+        }
+        if (loop.size() >= 3) loops.push_back(std::move(loop));
+    }
+    return loops;
+}
+
+/// The section of a closed solid with the plane: the even-odd fill of its loops, with points
+/// on the plane counted as inside (the union of both rules for them).
+PolygonSet section(const Leaf &leaf, const Plane &pl) {
+    if (!planeMeetsBox(pl, leaf.bounds)) return {};
+    PolygonSet above{sliceLoops(leaf.mesh, pl, true), false};
+    PolygonSet below{sliceLoops(leaf.mesh, pl, false), false};
+    if (above.empty() && below.empty()) return {};
+    return clipper2d::apply({above, below}, BoolOp::Union);
+}
+
+/// The tree evaluated over polygon sets: each primitive is the set `sets` gives it.
+PolygonSet evaluate(const ir::Node &n, const std::unordered_map<const ir::Node *, PolygonSet> &sets) {
+    if (n.kind == ir::NodeKind::Primitive) {
+        auto it = sets.find(&n);
+        return it == sets.end() ? PolygonSet{} : it->second;
+    }
+    std::vector<PolygonSet> operands;
+    operands.reserve(n.children.size());
+    for (const auto &c : n.children) operands.push_back(evaluate(*c, sets));
+    if (operands.empty()) return {};
+    switch (n.kind) {
+        case ir::NodeKind::Intersection:
+            for (const PolygonSet &p : operands)
+                if (p.empty()) return {};
+            return operands.size() == 1 ? operands[0] : clipper2d::apply(operands, BoolOp::Intersection);
+        case ir::NodeKind::Difference:
+            if (operands[0].empty()) return {};
+            return clipper2d::apply(operands, BoolOp::Difference);
+        default: {
+            operands.erase(std::remove_if(operands.begin(), operands.end(),
+                                          [](const PolygonSet &p) { return p.empty(); }),
+                           operands.end());
+            if (operands.empty()) return {};
+            if (operands.size() == 1) return operands[0];
+            return clipper2d::apply(operands, BoolOp::Union);
+        }
+    }
+}
+
+/// A face's projection on z = 0, or nothing for a vertical face (no area).
+bool projectedFace(const ir::PolytopePrim &mesh, const std::vector<int> &face, PolygonSet &out) {
+    Vec3 n = faceNormal(mesh.vertices, face);
+    if (!(std::abs(n.z) > 1e-12 * length(n))) return false;
+    Outline o;
+    for (int i : face) o.push_back({mesh.vertices[i].x, mesh.vertices[i].y});
+    out = PolygonSet{{std::move(o)}, false};
+    return true;
+}
+
+/// The shadow of a difference or intersection subtree: the parts of its primitives' faces on
+/// the result's boundary, projected.
+void boundaryShadow(const ir::Node &tree, const Mat4 &rootFromTree, const ir::Scene &scene,
+                    std::vector<PolygonSet> &out) {
+    std::vector<Leaf> leaves;
+    collectLeaves(tree, rootFromTree, scene, leaves);
+    std::unordered_map<const ir::Node *, PolygonSet> sets;
+    for (const Leaf &p : leaves)
+        for (const auto &face : p.mesh.faces) {
+            PolygonSet projected;
+            if (!projectedFace(p.mesh, face, projected)) continue;
+            Vec3 n = faceNormal(p.mesh.vertices, face);
+            Plane pl{n, 0};
+            for (int i : face) pl.offset += dot(n, p.mesh.vertices[i]);
+            pl.offset /= static_cast<double>(face.size());
+            sets.clear();
+            for (const Leaf &q : leaves)
+                if (&q != &p) sets[q.node] = section(q, pl);
+            sets[p.node] = clipper2d::sanitize(projected);
+            PolygonSet with = evaluate(tree, sets);
+            sets[p.node] = PolygonSet{};
+            PolygonSet without = evaluate(tree, sets);
+            // Where the primitive's presence changes the result, the face is on its boundary
+            if (!with.empty()) out.push_back(clipper2d::apply({with, without}, BoolOp::Difference));
+            if (!without.empty()) out.push_back(clipper2d::apply({without, with}, BoolOp::Difference));
+        }
+}
+
+void shadow(const ir::Node &n, const Mat4 &rootFromNode, const ir::Scene &scene,
+            std::vector<PolygonSet> &out) {
+    switch (n.kind) {
+        case ir::NodeKind::Group:
+        case ir::NodeKind::Union:
+            for (const auto &c : n.children) shadow(*c, rootFromNode, scene, out);
+            return;
+        case ir::NodeKind::Transform:
+            for (const auto &c : n.children) shadow(*c, rootFromNode * n.matrix, scene, out);
+            return;
+        case ir::NodeKind::Intersection:
+        case ir::NodeKind::Difference: boundaryShadow(n, rootFromNode, scene, out); return;
+        case ir::NodeKind::Primitive: break;
+    }
+    ir::PolytopePrim mesh = ir::openscadPolyhedron(n, scene);
+    for (Vec3 &v : mesh.vertices) v = rootFromNode.transformPoint(v);
+    for (const auto &face : mesh.faces) {
+        PolygonSet projected;
+        if (projectedFace(mesh, face, projected)) out.push_back(std::move(projected));
+    }
+}
+
+}  // namespace
+
+clipper2d::PolygonSet projectCut(const ir::Node &root, const ir::Scene &scene) {
+    std::vector<Leaf> leaves;
+    collectLeaves(root, Mat4(), scene, leaves);
+    const Plane z0{Vec3(0, 0, 1), 0};
+    std::unordered_map<const ir::Node *, PolygonSet> sets;
+    for (const Leaf &leaf : leaves) sets[leaf.node] = section(leaf, z0);
+    return evaluate(root, sets);
+}
+
+clipper2d::PolygonSet projectShadow(const ir::Node &root, const ir::Scene &scene) {
+    std::vector<PolygonSet> parts;
+    shadow(root, Mat4(), scene, parts);
+    // Faces come in any orientation: each is made counter-clockwise before the union
+    for (PolygonSet &p : parts)
+        if (!p.sanitized) p = clipper2d::sanitize(p);
+    parts.erase(std::remove_if(parts.begin(), parts.end(), [](const PolygonSet &p) { return p.empty(); }),
+                parts.end());
+    if (parts.empty()) return {};
+    return clipper2d::apply(parts, BoolOp::Union);
+}
+
+}  // namespace rt::scad

@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: MIT
+// OpenSCAD 2021.01's projection() of a 3D node tree onto the XY plane, as Clipper polygon sets:
+// the slice at z = 0 (cut = true) and the shadow (cut = false), both computed from the
+// primitives as OpenSCAD tessellates them, without building the CSG result's mesh.
+#pragma once
+
+#include "core/ir/node.h"
+#include "importers/scad/clipper2d.h"
+
+namespace rt::ir {
+struct Scene;
+}
+
+namespace rt::scad {
+
+/// The cross-section of the solid `root` (its own coordinates) with the plane z = 0. Each
+/// primitive is sliced as a closed solid (a face lying in the plane belongs to the section, as
+/// in OpenSCAD, whose CGAL slice of cube(1) at its bottom face is the unit square), and the
+/// sections are combined by the tree's unions, intersections and differences in Clipper.
+clipper2d::PolygonSet projectCut(const ir::Node &root, const ir::Scene &scene);
+
+/// The shadow of the solid `root` on z = 0 (OpenSCAD: the union of the projections of every face
+/// of the evaluated mesh). Unions are the union of their operands' shadows; a primitive is the
+/// union of its faces; a difference or intersection is the union, over every face of its
+/// primitives that is not vertical, of the part of that face on the result's boundary: where
+/// the tree evaluated with the face's primitive present differs from the tree evaluated
+/// without it, every other primitive being its section in the face's plane. Exact for solids
+/// in general position; faces of different primitives in one plane count as touching.
+clipper2d::PolygonSet projectShadow(const ir::Node &root, const ir::Scene &scene);
+
+}  // namespace rt::scad
