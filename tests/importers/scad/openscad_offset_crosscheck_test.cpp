@@ -21,29 +21,6 @@ namespace fs = std::filesystem;
 /// by one grid step fails where coordinates are below 1.
 constexpr double kDigits = 6e-6;
 
-/// World points of every primitive (circles already faceted as OpenSCAD facets them).
-std::vector<Vec3> worldPoints(const ir::Scene &scene) {
-    std::vector<Vec3> out;
-    for (const auto &p : primitives(*scene.root)) {
-        std::vector<Vec3> local;
-        if (const auto *b = std::get_if<ir::BoxPrim>(&p.node->shape)) {
-            for (int i = 0; i < 8; ++i)
-                local.push_back(Vec3(i & 1 ? b->max.x : b->min.x, i & 2 ? b->max.y : b->min.y,
-                                     i & 4 ? b->max.z : b->min.z));
-        } else if (const auto *poly = std::get_if<ir::PolytopePrim>(&p.node->shape)) {
-            local = poly->vertices;
-        } else if (const auto *prism = std::get_if<ir::PrismPrim>(&p.node->shape)) {
-            local = ir::prismPoints(*prism);
-        } else if (const auto *mp = std::get_if<ir::MeshPrim>(&p.node->shape)) {
-            local = scene.meshes[mp->mesh]->positions;
-        } else {
-            ADD_FAILURE() << "unexpected primitive";
-        }
-        for (const Vec3 &v : local) out.push_back(p.worldFromObject.transformPoint(v));
-    }
-    return out;
-}
-
 void expectCoveredWithin(const std::vector<Vec3> &a, const std::vector<Vec3> &b,
                          const char *what) {
     for (const Vec3 &v : a) {
