@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <functional>
 #include <numeric>
 #include <optional>
 #include <unordered_map>
@@ -719,8 +720,9 @@ bool meshIsConvex(const Mesh &mesh, const HullResult &hull) {
 
 class ConvexPartGatherer {
   public:
-    ConvexPartGatherer(const Scene &scene, DiagnosticSink &diag, const char *op)
-        : scene_(scene), diag_(diag), op_(op), points_(scene, diag, op) {}
+    using Solid = std::function<void(const Node &, const Mat4 &)>;
+    ConvexPartGatherer(const Scene &scene, DiagnosticSink &diag, const char *op, const Solid &solid)
+        : scene_(scene), points_(scene, diag, op), solid_(solid) {}
 
     bool gather(const Node &n, const Mat4 &parentFromNode, std::vector<std::vector<Vec3>> &out) {
         switch (n.kind) {
@@ -734,9 +736,10 @@ class ConvexPartGatherer {
                     if (!gather(*c, parentFromNode * n.matrix, out)) return false;
                 return true;
             case NodeKind::Intersection:
-                if (!isConvexSolid(n)) return unsupported(n, "an intersection() of non-convex operands");
-                return onePart(n, parentFromNode, out);
-            case NodeKind::Difference: return unsupported(n, "a difference()");
+                if (isConvexSolid(n)) return onePart(n, parentFromNode, out);
+                solid_(n, parentFromNode);
+                return true;
+            case NodeKind::Difference: solid_(n, parentFromNode); return true;
             case NodeKind::Primitive: break;
         }
         if (isConvexSolid(n)) return onePart(n, parentFromNode, out);
@@ -746,18 +749,15 @@ class ConvexPartGatherer {
             if (!points_.gather(n, Mat4(), pts)) return false;
             HullResult h = convexHull(pts);
             if (h.kind != HullKind::Solid) return true;
-            if (!meshIsConvex(*scene_.meshes[m->mesh], h))
-                return unsupported(n, "a non-convex polyhedron or mesh");
-            for (Vec3 &p : h.polytope.vertices) p = parentFromNode.transformPoint(p);
-            out.push_back(std::move(h.polytope.vertices));
-            return true;
+            if (meshIsConvex(*scene_.meshes[m->mesh], h)) {
+                for (Vec3 &p : h.polytope.vertices) p = parentFromNode.transformPoint(p);
+                out.push_back(std::move(h.polytope.vertices));
+                return true;
+            }
         }
-        return unsupported(n, std::holds_alternative<PrismPrim>(n.shape)
-                                  ? "an extrusion of a non-convex outline"
-                                  : "a solid of revolution");
+        solid_(n, parentFromNode);
+        return true;
     }
-
-    bool complete() const { return complete_; }
 
   private:
     bool onePart(const Node &n, const Mat4 &parentFromNode, std::vector<std::vector<Vec3>> &out) {
@@ -767,19 +767,9 @@ class ConvexPartGatherer {
         return true;
     }
 
-    bool unsupported(const Node &n, const std::string &what) {
-        diag_.warning(n.loc, std::string(op_) + " of " + what +
-                                 " is not supported yet (OpenSCAD splits it into convex parts); "
-                                 "left out");
-        complete_ = false;
-        return true;
-    }
-
     const Scene &scene_;
-    DiagnosticSink &diag_;
-    const char *op_;
     HullGatherer points_;
-    bool complete_ = true;
+    const Solid &solid_;
 };
 
 }  // namespace
@@ -790,11 +780,9 @@ bool gatherHullPoints(const Node &node, const Scene &scene, DiagnosticSink &diag
 }
 
 bool gatherConvexParts(const Node &node, const Scene &scene, DiagnosticSink &diag,
-                       std::vector<std::vector<Vec3>> &out, bool *complete, const char *op) {
-    ConvexPartGatherer g(scene, diag, op);
-    bool ok = g.gather(node, Mat4(), out);
-    if (complete) *complete = g.complete();
-    return ok;
+                       std::vector<std::vector<Vec3>> &out,
+                       const std::function<void(const Node &, const Mat4 &)> &solid, const char *op) {
+    return ConvexPartGatherer(scene, diag, op, solid).gather(node, Mat4(), out);
 }
 
 }  // namespace rt::ir

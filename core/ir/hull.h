@@ -2,6 +2,7 @@
 // Convex hulls (quickhull) of point sets, and the points OpenSCAD 2021.01 hulls for a node tree.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "core/ir/diagnostics.h"
@@ -71,11 +72,12 @@ PolytopePrim openscadPolyhedron(const Node &primitive, const Scene &scene);
 /// whose hull it is (in the coordinates of node's parent), for minkowski(), which distributes
 /// over unions: boxes, spheres, cylinders, polytopes and convex prisms as gatherHullPoints
 /// takes them, convex polyhedra and meshes, intersections of convex operands, all under
-/// transforms and unions. Anything else (a difference, a non-convex mesh or extrusion, a solid
-/// of revolution) is left out with a warning at its node naming it, and *complete is set to
-/// false. Returns false (after a warning) when there are more than kMaxHullPoints.
+/// transforms and unions. Every other subtree (a difference, a non-convex intersection, mesh or
+/// extrusion, a solid of revolution) is passed to `solid` with its placement instead. Returns
+/// false (after a warning) when there are more than kMaxHullPoints.
 bool gatherConvexParts(const Node &node, const Scene &scene, DiagnosticSink &diag,
-                       std::vector<std::vector<Vec3>> &out, bool *complete,
+                       std::vector<std::vector<Vec3>> &out,
+                       const std::function<void(const Node &, const Mat4 &)> &solid,
                        const char *op = "minkowski()");
 
 }  // namespace rt::ir

@@ -22,6 +22,12 @@ namespace {
 /// each part is a hull of pairwise sums, so this bounds the work and the primitives made.
 constexpr size_t kMaxMinkowskiParts = 100'000;
 
+/// Gives every primitive of the subtree the material.
+void recolour(ir::Node &n, int material) {
+    if (n.kind == ir::NodeKind::Primitive) n.material = material;
+    for (auto &c : n.children) recolour(*c, material);
+}
+
 /// 2021.01's resize scale per axis (CGALUtils / PolySet / Polygon2d resize): an axis with a
 /// positive new size is scaled to it; one without, when `autosize` is set for it, takes the
 /// scale of the axis with the largest new size; the rest keep 1. Sizes that are not positive
@@ -148,53 +154,112 @@ ir::NodePtr Evaluator::moduleMinkowski(const ModuleInstantiation &inst, const Fr
         return shape2dNode(std::move(s), inst);
     }
 
-    // 3D: the sum distributes over unions, and the sum of two convex parts is the hull of the
-    // pairwise sums of their points (OpenSCAD's minkowski3 does the same on its convex parts)
+    // 3D: the sum distributes over unions; the sum of two convex parts is the hull of the
+    // pairwise sums of their points (OpenSCAD's minkowski3 does the same on its convex parts).
+    // A part that is not convex (a solid S: a difference, a non-convex mesh, ...) sums with a
+    // convex part K as S moved by a point of K together with the hulls of K and each convex
+    // piece of S's boundary: a point of S + K whose copy of -K meets S's boundary is in one of
+    // those hulls, and one whose copy lies inside S is in the moved S.
     warnIgnored2d(*children);
-    std::vector<std::vector<Vec3>> sum;
+    struct Part {
+        const ir::Node *solid = nullptr;  ///< a solid, placed by `placement`; null: convex
+        Mat4 placement;
+        /// A convex part: one piece, the points it is the hull of; a solid: convex pieces that
+        /// lie in it and cover its boundary
+        std::vector<std::vector<Vec3>> pieces;
+    };
+    auto partsOf = [&](const ir::Node &c, std::vector<Part> &out) {
+        std::vector<std::vector<Vec3>> convex;
+        std::vector<Part> solids;
+        bool ok = ir::gatherConvexParts(c, scene_, diag_, convex, [&](const ir::Node &n, const Mat4 &m) {
+            Part p;
+            p.solid = &n;
+            p.placement = m;
+            p.pieces = withClipper(n.loc, [&] { return solidBoundary(n, m, scene_); });
+            if (!p.pieces.empty()) solids.push_back(std::move(p));
+        });
+        for (auto &pts : convex) out.push_back(Part{nullptr, Mat4(), {std::move(pts)}});
+        for (auto &p : solids) out.push_back(std::move(p));
+        return ok;
+    };
+    auto tooMany = [&](size_t count) {
+        warn(inst.loc, "minkowski(): " + std::to_string(count) + " convex parts would be summed, "
+                           "more than the " + std::to_string(kMaxMinkowskiParts) + " allowed; left out");
+    };
+    auto hullOfSums = [&](const std::vector<Vec3> &p, const std::vector<Vec3> &q,
+                          std::vector<Part> &out) {
+        if (p.size() * q.size() > ir::kMaxHullPoints) {
+            warn(inst.loc, "minkowski(): a sum of " + std::to_string(p.size()) + " and " +
+                               std::to_string(q.size()) + " points is more than the " +
+                               std::to_string(ir::kMaxHullPoints) + " a hull may have; left out");
+            return false;
+        }
+        std::vector<Vec3> pts;
+        pts.reserve(p.size() * q.size());
+        for (const Vec3 &a : p)
+            for (const Vec3 &b : q) pts.push_back(a + b);
+        ir::HullResult h = ir::convexHull(pts);
+        if (h.kind == ir::HullKind::Solid) out.push_back(Part{nullptr, Mat4(), {std::move(h.polytope.vertices)}});
+        return true;
+    };
+    auto moved = [](const Part &s, const Vec3 &by) {
+        Part p;
+        p.solid = s.solid;
+        p.placement = Mat4::translate(by) * s.placement;
+        for (const auto &piece : s.pieces) {
+            p.pieces.push_back(piece);
+            for (Vec3 &v : p.pieces.back()) v = v + by;
+        }
+        return p;
+    };
+    std::vector<Part> sum;
     bool first = true;
     for (const auto &c : children->children) {
         if (dimensionOf(*c) != 3) continue;
-        std::vector<std::vector<Vec3>> parts;
-        bool complete = true;
-        if (!ir::gatherConvexParts(*c, scene_, diag_, parts, &complete))
-            return newNode(ir::NodeKind::Group, inst.loc);
+        std::vector<Part> parts;
+        if (!partsOf(*c, parts)) return newNode(ir::NodeKind::Group, inst.loc);
         if (parts.empty()) continue;  // an empty child is passed over, as in 2021.01
         if (first) {
             sum = std::move(parts);
             first = false;
             continue;
         }
-        if (sum.size() * parts.size() > kMaxMinkowskiParts) {
-            warn(inst.loc, "minkowski(): " + std::to_string(sum.size()) + " x " +
-                               std::to_string(parts.size()) + " convex parts would be summed, more "
-                               "than the " + std::to_string(kMaxMinkowskiParts) +
-                               " allowed; left out");
+        // How many hulls the next sum makes, before making any
+        size_t count = 0;
+        for (const Part &a : sum)
+            for (const Part &b : parts)
+                count += a.pieces.size() * b.pieces.size();
+        if (count > kMaxMinkowskiParts) {
+            tooMany(count);
             return newNode(ir::NodeKind::Group, inst.loc);
         }
-        std::vector<std::vector<Vec3>> next;
-        for (const auto &p : sum)
-            for (const auto &q : parts) {
-                if (p.size() * q.size() > ir::kMaxHullPoints) {
-                    warn(inst.loc, "minkowski(): a sum of " + std::to_string(p.size()) + " and " +
-                                       std::to_string(q.size()) + " points is more than the " +
-                                       std::to_string(ir::kMaxHullPoints) +
-                                       " a hull may have; left out");
-                    return newNode(ir::NodeKind::Group, inst.loc);
-                }
-                std::vector<Vec3> pts;
-                pts.reserve(p.size() * q.size());
-                for (const Vec3 &a : p)
-                    for (const Vec3 &b : q) pts.push_back(a + b);
-                ir::HullResult h = ir::convexHull(pts);
-                if (h.kind == ir::HullKind::Solid) next.push_back(std::move(h.polytope.vertices));
+        std::vector<Part> next;
+        for (const Part &a : sum)
+            for (const Part &b : parts) {
+                if (a.solid) next.push_back(moved(a, b.pieces[0][0]));
+                if (b.solid) next.push_back(moved(b, a.pieces[0][0]));
+                for (const auto &p : a.pieces)
+                    for (const auto &q : b.pieces)
+                        if (!hullOfSums(p, q, next)) return newNode(ir::NodeKind::Group, inst.loc);
             }
         sum = std::move(next);
     }
     ir::NodePtr result = newNode(ir::NodeKind::Union, inst.loc);
-    for (auto &pts : sum) {
+    int material = resolveMaterial(inst.loc);
+    for (Part &p : sum) {
+        if (p.solid) {
+            // The solid itself, moved, in the minkowski()'s material (as OpenSCAD's result is
+            // one object)
+            ir::NodePtr placed = newNode(ir::NodeKind::Transform, inst.loc);
+            placed->matrix = p.placement;
+            ir::NodePtr copy = p.solid->clone();
+            recolour(*copy, material);
+            placed->children.push_back(std::move(copy));
+            result->children.push_back(std::move(placed));
+            continue;
+        }
         // A single part may still be flat (a sum of flat children): no volume to draw
-        ir::HullResult h = ir::convexHull(pts);
+        ir::HullResult h = ir::convexHull(p.pieces[0]);
         if (h.kind != ir::HullKind::Solid) continue;
         ir::NodePtr n = primitive(std::move(h.polytope), inst, f);
         n->fragments = ir::Fragments{};  // fixed points: no $fn/$fa/$fs (nor --facets) applies

@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
 #include "core/ir/hull.h"
+#include "core/ir/revolved_mesh.h"
 #include "core/ir/scene_ir.h"
 #include "core/math/bounds3.h"
 
@@ -72,11 +74,13 @@ bool planeMeetsBox(const Plane &pl, const Bounds3 &b) {
     return lo <= 0 && hi >= 0;
 }
 
-/// The loops where the plane cuts the mesh's faces, as points (x, y). A vertex on the plane
+/// The loops where the plane cuts the mesh's faces, as points map(p) in the plane. A vertex on the plane
 /// counts as above it when onPlaneAbove, else as below (a consistent rule, so every face
 /// meets the plane in pairs of crossings and the loops close). A crossing on an edge is
 /// computed from the edge's lower-numbered end, so the two faces sharing the edge agree on it.
-std::vector<Outline> sliceLoops(const ir::PolytopePrim &mesh, const Plane &pl, bool onPlaneAbove) {
+template <typename Map>
+std::vector<Outline> sliceLoops(const ir::PolytopePrim &mesh, const Plane &pl, bool onPlaneAbove,
+                                const Map &map) {
     const auto &v = mesh.vertices;
     std::vector<double> s(v.size());
     std::vector<char> above(v.size());
@@ -132,7 +136,7 @@ std::vector<Outline> sliceLoops(const ir::PolytopePrim &mesh, const Plane &pl, b
         int prev = -1, cur = static_cast<int>(start);
         while (cur >= 0 && !seen[cur]) {
             seen[cur] = 1;
-            loop.push_back({points[cur].x, points[cur].y});
+            loop.push_back(map(points[cur]));
             int next = -1;
             for (int n : adjacent[cur])
                 if (n != prev && !seen[n]) {
@@ -149,10 +153,11 @@ std::vector<Outline> sliceLoops(const ir::PolytopePrim &mesh, const Plane &pl, b
 
 /// The section of a closed solid with the plane: the even-odd fill of its loops, with points
 /// on the plane counted as inside (the union of both rules for them).
-PolygonSet section(const Leaf &leaf, const Plane &pl) {
+template <typename Map>
+PolygonSet section(const Leaf &leaf, const Plane &pl, const Map &map) {
     if (!planeMeetsBox(pl, leaf.bounds)) return {};
-    PolygonSet above{sliceLoops(leaf.mesh, pl, true), false};
-    PolygonSet below{sliceLoops(leaf.mesh, pl, false), false};
+    PolygonSet above{sliceLoops(leaf.mesh, pl, true, map), false};
+    PolygonSet below{sliceLoops(leaf.mesh, pl, false, map), false};
     if (above.empty() && below.empty()) return {};
     return clipper2d::apply({above, below}, BoolOp::Union);
 }
@@ -186,42 +191,76 @@ PolygonSet evaluate(const ir::Node &n, const std::unordered_map<const ir::Node *
     }
 }
 
-/// A face's projection on z = 0, or nothing for a vertical face (no area).
-bool projectedFace(const ir::PolytopePrim &mesh, const std::vector<int> &face, PolygonSet &out) {
-    Vec3 n = faceNormal(mesh.vertices, face);
-    if (!(std::abs(n.z) > 1e-12 * length(n))) return false;
+/// Projection on z = 0: the plane coordinates of a point are its x and y.
+struct TopView {
+    Vec2 operator()(const Vec3 &p) const { return {p.x, p.y}; }
+};
+
+/// An orthonormal frame of a face's plane, scaled so that the solid's extent spans about 2^30
+/// of Clipper's 2^-16 grid steps (a relative precision near 1e-14, whatever the model's size).
+struct PlaneFrame {
+    Vec3 origin, u, v;
+    double scale = 1;
+    Vec2 operator()(const Vec3 &p) const {
+        Vec3 d = p - origin;
+        return {dot(d, u) * scale, dot(d, v) * scale};
+    }
+    Vec3 back(Vec2 q) const { return origin + u * (q.x / scale) + v * (q.y / scale); }
+};
+
+/// The face's outline in plane coordinates, or nothing when it has no area there.
+template <typename Map>
+bool mappedFace(const ir::PolytopePrim &mesh, const std::vector<int> &face, const Map &map,
+                PolygonSet &out) {
     Outline o;
-    for (int i : face) o.push_back({mesh.vertices[i].x, mesh.vertices[i].y});
-    out = PolygonSet{{std::move(o)}, false};
-    return true;
+    for (int i : face) o.push_back(map(mesh.vertices[i]));
+    if (!(std::abs(twiceSignedArea(o)) > 0)) return false;
+    out = clipper2d::sanitize(PolygonSet{{std::move(o)}, false});
+    return !out.empty();
 }
 
-/// The shadow of a difference or intersection subtree: the parts of its primitives' faces on
-/// the result's boundary, projected.
-void boundaryShadow(const ir::Node &tree, const Mat4 &rootFromTree, const ir::Scene &scene,
-                    std::vector<PolygonSet> &out) {
+/// For every face of the tree's primitives (frameOf(mesh, face) gives its plane's map, or
+/// nothing to pass it over), the part of it on the boundary of the tree's solid, in plane
+/// coordinates: where the tree, evaluated in the face's plane with every other primitive as
+/// its section there, changes when the face's primitive is taken away.
+template <typename FrameOf, typename Visit>
+void boundaryParts(const ir::Node &tree, const Mat4 &rootFromTree, const ir::Scene &scene,
+                   const FrameOf &frameOf, const Visit &visit) {
     std::vector<Leaf> leaves;
     collectLeaves(tree, rootFromTree, scene, leaves);
     std::unordered_map<const ir::Node *, PolygonSet> sets;
     for (const Leaf &p : leaves)
         for (const auto &face : p.mesh.faces) {
-            PolygonSet projected;
-            if (!projectedFace(p.mesh, face, projected)) continue;
+            auto frame = frameOf(p.mesh, face);
+            if (!frame) continue;
+            PolygonSet mapped;
+            if (!mappedFace(p.mesh, face, *frame, mapped)) continue;
             Vec3 n = faceNormal(p.mesh.vertices, face);
             Plane pl{n, 0};
             for (int i : face) pl.offset += dot(n, p.mesh.vertices[i]);
             pl.offset /= static_cast<double>(face.size());
             sets.clear();
             for (const Leaf &q : leaves)
-                if (&q != &p) sets[q.node] = section(q, pl);
-            sets[p.node] = clipper2d::sanitize(projected);
+                if (&q != &p) sets[q.node] = section(q, pl, *frame);
+            sets[p.node] = mapped;
             PolygonSet with = evaluate(tree, sets);
             sets[p.node] = PolygonSet{};
             PolygonSet without = evaluate(tree, sets);
-            // Where the primitive's presence changes the result, the face is on its boundary
-            if (!with.empty()) out.push_back(clipper2d::apply({with, without}, BoolOp::Difference));
-            if (!without.empty()) out.push_back(clipper2d::apply({without, with}, BoolOp::Difference));
+            if (!with.empty()) visit(*frame, clipper2d::apply({with, without}, BoolOp::Difference));
+            if (!without.empty()) visit(*frame, clipper2d::apply({without, with}, BoolOp::Difference));
         }
+}
+
+/// The shadow of a difference or intersection subtree: the parts of its primitives' faces on
+/// the result's boundary, projected (vertical faces have no area there).
+void boundaryShadow(const ir::Node &tree, const Mat4 &rootFromTree, const ir::Scene &scene,
+                    std::vector<PolygonSet> &out) {
+    auto topView = [](const ir::PolytopePrim &, const std::vector<int> &) {
+        return std::optional<TopView>(TopView{});
+    };
+    boundaryParts(tree, rootFromTree, scene, topView, [&](const TopView &, PolygonSet part) {
+        if (!part.empty()) out.push_back(std::move(part));
+    });
 }
 
 void shadow(const ir::Node &n, const Mat4 &rootFromNode, const ir::Scene &scene,
@@ -242,7 +281,7 @@ void shadow(const ir::Node &n, const Mat4 &rootFromNode, const ir::Scene &scene,
     for (Vec3 &v : mesh.vertices) v = rootFromNode.transformPoint(v);
     for (const auto &face : mesh.faces) {
         PolygonSet projected;
-        if (projectedFace(mesh, face, projected)) out.push_back(std::move(projected));
+        if (mappedFace(mesh, face, TopView{}, projected)) out.push_back(std::move(projected));
     }
 }
 
@@ -253,20 +292,71 @@ clipper2d::PolygonSet projectCut(const ir::Node &root, const ir::Scene &scene) {
     collectLeaves(root, Mat4(), scene, leaves);
     const Plane z0{Vec3(0, 0, 1), 0};
     std::unordered_map<const ir::Node *, PolygonSet> sets;
-    for (const Leaf &leaf : leaves) sets[leaf.node] = section(leaf, z0);
+    for (const Leaf &leaf : leaves) sets[leaf.node] = section(leaf, z0, TopView{});
     return evaluate(root, sets);
 }
 
 clipper2d::PolygonSet projectShadow(const ir::Node &root, const ir::Scene &scene) {
     std::vector<PolygonSet> parts;
     shadow(root, Mat4(), scene, parts);
-    // Faces come in any orientation: each is made counter-clockwise before the union
-    for (PolygonSet &p : parts)
-        if (!p.sanitized) p = clipper2d::sanitize(p);
     parts.erase(std::remove_if(parts.begin(), parts.end(), [](const PolygonSet &p) { return p.empty(); }),
                 parts.end());
     if (parts.empty()) return {};
     return clipper2d::apply(parts, BoolOp::Union);
+}
+
+std::vector<std::vector<Vec3>> solidBoundary(const ir::Node &node, const Mat4 &rootFromNode,
+                                             const ir::Scene &scene) {
+    std::vector<std::vector<Vec3>> out;
+    if (node.kind != ir::NodeKind::Difference && node.kind != ir::NodeKind::Intersection) {
+        // Every face of the primitives: a face inside a union is still inside the solid
+        std::vector<Leaf> leaves;
+        collectLeaves(node, rootFromNode, scene, leaves);
+        for (const Leaf &leaf : leaves)
+            for (const auto &face : leaf.mesh.faces) {
+                std::vector<Vec3> pts;
+                for (int i : face) pts.push_back(leaf.mesh.vertices[i]);
+                out.push_back(std::move(pts));
+            }
+        return out;
+    }
+    Bounds3 extent;
+    {
+        std::vector<Leaf> leaves;
+        collectLeaves(node, rootFromNode, scene, leaves);
+        for (const Leaf &leaf : leaves) extent = unionBounds(extent, leaf.bounds);
+    }
+    if (extent.isEmpty()) return out;
+    double size = std::max(length(extent.diagonal()), 1e-300);
+    double scale = std::ldexp(1.0, 30 - std::ilogb(size) - 1);
+    auto frameOf = [&](const ir::PolytopePrim &mesh, const std::vector<int> &face) {
+        Vec3 n = faceNormal(mesh.vertices, face);
+        if (!(length(n) > 0)) return std::optional<PlaneFrame>();
+        n = normalize(n);
+        Vec3 axis = std::abs(n.x) <= std::abs(n.y) && std::abs(n.x) <= std::abs(n.z) ? Vec3(1, 0, 0)
+                    : std::abs(n.y) <= std::abs(n.z)                           ? Vec3(0, 1, 0)
+                                                                               : Vec3(0, 0, 1);
+        PlaneFrame f;
+        f.origin = mesh.vertices[face[0]];
+        f.u = normalize(cross(n, axis));
+        f.v = cross(n, f.u);
+        f.scale = scale;
+        return std::optional<PlaneFrame>(f);
+    };
+    boundaryParts(node, rootFromNode, scene, frameOf, [&](const PlaneFrame &f, const PolygonSet &part) {
+        std::vector<ir::ProfileOutline> outlines;
+        for (const Outline &o : part.outlines) {
+            ir::ProfileOutline po;
+            for (Vec2 q : o) po.push_back({q.x, q.y});
+            outlines.push_back(std::move(po));
+        }
+        for (const auto &t : ir::triangulateProfile(outlines)) {
+            std::vector<Vec3> tri;
+            for (const auto &[k, i] : t) tri.push_back(f.back({outlines[k][i].r, outlines[k][i].z}));
+            out.push_back(std::move(tri));
+        }
+    });
+    return out;
 }
 
 }  // namespace rt::scad

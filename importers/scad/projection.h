@@ -4,6 +4,8 @@
 // primitives as OpenSCAD tessellates them, without building the CSG result's mesh.
 #pragma once
 
+#include <vector>
+
 #include "core/ir/node.h"
 #include "importers/scad/clipper2d.h"
 
@@ -27,5 +29,13 @@ clipper2d::PolygonSet projectCut(const ir::Node &root, const ir::Scene &scene);
 /// without it, every other primitive being its section in the face's plane. Exact for solids
 /// in general position; faces of different primitives in one plane count as touching.
 clipper2d::PolygonSet projectShadow(const ir::Node &root, const ir::Scene &scene);
+
+/// Convex polygons (root coordinates, the node placed by rootFromNode) that lie in the solid
+/// `node` and cover its boundary, for minkowski(): every face of its primitives (a face inside
+/// a union is still inside the solid), or for a difference or an intersection the parts of its
+/// primitives' faces on the result's boundary, computed as for the shadow in each face's own
+/// plane (scaled to Clipper's full range) and triangulated.
+std::vector<std::vector<Vec3>> solidBoundary(const ir::Node &node, const Mat4 &rootFromNode,
+                                             const ir::Scene &scene);
 
 }  // namespace rt::scad

@@ -1,6 +1,7 @@
 // resize(), minkowski() and projection(): a resized faceted sphere, a box rounded by a
 // Minkowski sum with a sphere, a 2D frame rounded by a circle and extruded, and the shadow
-// and section of a drilled ball extruded into plates, over a floor, two lights.
+// and section of a drilled ball extruded into plates, a rounded plate with a bore, over a floor,
+// two lights.
 use <../scadray.scad>
 
 camera(location=[0, -30, 20], look_at=[0, 0, 1.5], fov=50);
@@ -37,3 +38,13 @@ material(color="steelblue", specular=0.3) translate([-6, 6, 0.01]) linear_extrud
     projection() rotate([8, 5, 0]) drilled();
 material(color="orchid", specular=0.3) translate([5, 6, 0.01]) linear_extrude(1.2)
     projection(cut=true) rotate([30, 0, 0]) drilled();
+
+// A rounded plate with a bore: a non-convex operand, summed as the plate moved by a point of
+// the sphere and the hulls of the sphere with each convex piece of the plate's boundary
+material(color="slategray", phong=0.4) translate([10.5, 2, 0.4]) minkowski() {
+    difference() {
+        cube([4, 3, 0.6]);
+        translate([2, 1.5, -1]) cylinder(r=0.8, h=3, $fn=10);
+    }
+    sphere(r=0.4, $fn=8);
+}

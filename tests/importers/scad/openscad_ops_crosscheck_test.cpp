@@ -107,6 +107,37 @@ TEST(MinkowskiCrossCheck, UnionsSumPartByPart) {
     EXPECT_LT(length(t.min - o.min) + length(t.max - o.max), 1e-5);
 }
 
+TEST(MinkowskiCrossCheck, NonConvexSumsSpanOpenScadsBox) {
+    if (!haveOpenScad()) GTEST_SKIP() << "openscad is not on PATH; cross-check skipped";
+    // A plate with a hole and an L-shaped extrusion: OpenSCAD splits them into convex parts;
+    // ours are the moved solid and hulls of its boundary pieces, and the hulls reach as far as
+    // the sum does (an extreme point of the sum is a boundary point plus one of the sphere)
+    const char *cases[] = {
+        "minkowski() { difference() { cube([10, 10, 1]); translate([5, 5, -1]) "
+        "cylinder(r=2, h=3, $fn=12); } sphere(0.5, $fn=8); }",
+        "minkowski() { linear_extrude(1) polygon([[0,0],[4,0],[4,1],[1,1],[1,4],[0,4]]); "
+        "sphere(0.3, $fn=8); }",
+    };
+    fs::path dir = scratchDir("minkowski_nonconvex");
+    for (const char *src : cases) {
+        SCOPED_TRACE(src);
+        ir::Mesh theirs = openscadOff(src, dir);
+        ASSERT_FALSE(theirs.positions.empty());
+        Imported ours = importText(src);
+        EXPECT_TRUE(ours.warnings().empty()) << ours.warnings().front();
+        Bounds3 o;
+        for (const auto &p : primitives(*ours.scene.root))
+            if (const auto *poly = std::get_if<ir::PolytopePrim>(&p.node->shape))
+                for (const Vec3 &v : poly->vertices) o = unionBounds(o, p.worldFromObject.transformPoint(v));
+        Bounds3 t = boundsOf(theirs.positions);
+        for (int a = 0; a < 3; ++a) {  // OFF's 6 digits
+            EXPECT_NEAR(o.min[a], t.min[a], 1e-5 * std::max(1.0, std::abs(t.min[a]))) << "axis " << a;
+            EXPECT_NEAR(o.max[a], t.max[a], 1e-5 * std::max(1.0, std::abs(t.max[a]))) << "axis " << a;
+        }
+    }
+    fs::remove_all(dir);
+}
+
 /// The outline edges of the scene's prisms, in the plane.
 std::vector<std::pair<Vec3, Vec3>> prismEdges(const ir::Scene &scene) {
     std::vector<std::pair<Vec3, Vec3>> out;

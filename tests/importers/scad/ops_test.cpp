@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/ir/facets.h"
+#include "core/ir/material.h"
 #include "importers/scad/test_support.h"
 
 namespace rt::scad::test {
@@ -81,16 +82,33 @@ TEST(ScadMinkowski, DistributesOverUnions) {
     EXPECT_EQ(r.scene.root->children.at(0)->kind, ir::NodeKind::Union);
 }
 
-TEST(ScadMinkowski, NonConvexOperandsAreNamedInAWarning) {
-    Imported r = importText("minkowski() {\n  difference() { cube(4); cube(2); }\n  sphere(1);\n}");
-    Diagnostic w = r.warning("minkowski() of a difference()");
-    EXPECT_EQ(w.loc.line, 2);
-    EXPECT_EQ(w.loc.col, 3);
-    Imported l = importText(
-        "minkowski() { polyhedron([[0,0,0],[2,0,0],[2,1,0],[1,1,0],[1,2,0],[0,2,0],"
-        "[0,0,1],[2,0,1],[2,1,1],[1,1,1],[1,2,1],[0,2,1]], [[5,4,3,2,1,0],[6,7,8,9,10,11],"
-        "[0,1,7,6],[1,2,8,7],[2,3,9,8],[3,4,10,9],[4,5,11,10],[5,0,6,11]]); cube(1); }");
-    EXPECT_TRUE(l.hasWarning("non-convex polyhedron")) << (l.warnings().empty() ? "" : l.warnings()[0]);
+TEST(ScadMinkowski, NonConvexOperandIsMovedAndItsBoundarySwept) {
+    // A cube with a bore plus a small cube: the drilled cube moved by a corner of the small
+    // one, and one hull per convex piece of its boundary (its faces, cut by the bore)
+    Imported r = importText(
+        "color(\"red\") minkowski() {\n  color(\"blue\") difference() { cube(4); "
+        "translate([2, 2, -1]) cylinder(r=1, h=6, $fn=8); }\n  cube(0.5);\n}");
+    EXPECT_TRUE(r.warnings().empty()) << r.warnings().front();
+    const ir::Node &u = *r.scene.root->children.at(0)->children.at(0);  // under color()
+    ASSERT_EQ(u.kind, ir::NodeKind::Union);
+    size_t polytopes = 0, moved = 0;
+    for (const auto &c : u.children) {
+        if (c->kind == ir::NodeKind::Transform) {
+            ++moved;
+            EXPECT_EQ(c->children.at(0)->kind, ir::NodeKind::Difference);
+        } else if (std::holds_alternative<ir::PolytopePrim>(c->shape)) {
+            ++polytopes;
+        }
+    }
+    EXPECT_EQ(moved, 1u);
+    // 6 cube faces (4 sides whole, top and bottom triangulated around the bore) and 8 bore walls
+    EXPECT_GT(polytopes, 14u);
+    // The moved copy is drawn in the minkowski()'s colour, not its child's
+    for (const auto &p : primitives(u))
+        EXPECT_EQ(r.scene.materials.at(p.node->material).color, Rgb(1, 0, 0));
+    Bounds3 b = worldBounds(r);
+    EXPECT_NEAR(b.max.x, 4.5, 1e-12);
+    EXPECT_NEAR(b.min.x, 0, 1e-12);
 }
 
 TEST(ScadMinkowski, TwoDimensionalSumIsAPolygon) {
