@@ -123,15 +123,7 @@ ir::NodePtr Evaluator::moduleMinkowski(const ModuleInstantiation &inst, const Fr
     bindBuiltin(inst, {"convexity"}, f, dollars.get());
     FrameGuard g(dyn_, dollars.get());
     // The children are only a source of points, as under hull()
-    ir::NodePtr children = newNode(ir::NodeKind::Group, inst.loc);
-    ++hullDepth_;
-    try {
-        instantiateChildren(inst, f, children->children);
-    } catch (...) {
-        --hullDepth_;
-        throw;
-    }
-    --hullDepth_;
+    ir::NodePtr children = pointSourceChildren(inst, f);
     int dims = dimensionOf(*children);
     if (dims == 0) return newNode(ir::NodeKind::Group, inst.loc);
 
@@ -143,15 +135,8 @@ ir::NodePtr Evaluator::moduleMinkowski(const ModuleInstantiation &inst, const Fr
             if (std::optional<clipper2d::PolygonSet> set = polygons2d(*c, nullptr))
                 operands.push_back(std::move(*set));
         if (operands.empty()) return newNode(ir::NodeKind::Group, inst.loc);
-        clipper2d::PolygonSet result =
-            withClipper(inst.loc, [&] { return clipper2d::minkowski(operands); });
-        if (result.empty()) return newNode(ir::NodeKind::Group, inst.loc);
-        Shape2d s;
-        s.kind = Shape2dKind::Polygon;
-        s.outlines = std::move(result.outlines);
-        s.evaluated = true;
-        s.sanitized = result.sanitized;
-        return shape2dNode(std::move(s), inst);
+        return polygonSetNode(withClipper(inst.loc, [&] { return clipper2d::minkowski(operands); }),
+                              inst);
     }
 
     // 3D: the sum distributes over unions; the sum of two convex parts is the hull of the
@@ -290,12 +275,7 @@ ir::NodePtr Evaluator::moduleProjection(const ModuleInstantiation &inst, const F
                            "so the cut is empty (OpenSCAD: \"Projection() failed.\")");
         return newNode(ir::NodeKind::Group, inst.loc);
     }
-    Shape2d s;
-    s.kind = Shape2dKind::Polygon;
-    s.outlines = std::move(result.outlines);
-    s.evaluated = true;
-    s.sanitized = result.sanitized;
-    return shape2dNode(std::move(s), inst);
+    return polygonSetNode(std::move(result), inst);
 }
 
 }  // namespace rt::scad

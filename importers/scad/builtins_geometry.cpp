@@ -397,15 +397,7 @@ ir::NodePtr Evaluator::moduleHull(const ModuleInstantiation &inst, const FramePt
     bindBuiltin(inst, {}, f, dollars.get());
     FrameGuard g(dyn_, dollars.get());
     // The children are only a source of points; their tree is dropped afterwards
-    ir::NodePtr children = newNode(ir::NodeKind::Group, inst.loc);
-    ++hullDepth_;
-    try {
-        instantiateChildren(inst, f, children->children);
-    } catch (...) {
-        --hullDepth_;
-        throw;
-    }
-    --hullDepth_;
+    ir::NodePtr children = pointSourceChildren(inst, f);
     // OpenSCAD's hull takes the dimension of its first child with geometry; the other
     // dimension's children are ignored with its warnings
     if (dimensionOf(*children) == 2) return hull2d(*children, inst);
@@ -430,6 +422,19 @@ ir::NodePtr Evaluator::moduleHull(const ModuleInstantiation &inst, const FramePt
                            " points are " + ir::hullKindName(hull.kind) +
                            ", so the hull has no volume; left out");
     return newNode(ir::NodeKind::Group, inst.loc);
+}
+
+ir::NodePtr Evaluator::pointSourceChildren(const ModuleInstantiation &inst, const FramePtr &f) {
+    ir::NodePtr children = newNode(ir::NodeKind::Group, inst.loc);
+    ++hullDepth_;
+    try {
+        instantiateChildren(inst, f, children->children);
+    } catch (...) {
+        --hullDepth_;
+        throw;
+    }
+    --hullDepth_;
+    return children;
 }
 
 ir::NodePtr Evaluator::skipUnsupported(const SourceLoc &loc, const std::string &what) {

@@ -117,12 +117,16 @@ ir::NodePtr Evaluator::moduleOffset(const ModuleInstantiation &inst, const Frame
     clipper2d::PolygonSet result = withClipper(inst.loc, [&] {
         return clipper2d::offset(input, delta, join, kOffsetMiterLimit, arcTolerance);
     });
-    if (result.empty()) return newNode(ir::NodeKind::Group, inst.loc);
+    return polygonSetNode(std::move(result), inst);
+}
+
+ir::NodePtr Evaluator::polygonSetNode(clipper2d::PolygonSet set, const ModuleInstantiation &inst) {
+    if (set.empty()) return newNode(ir::NodeKind::Group, inst.loc);
     Shape2d s;
     s.kind = Shape2dKind::Polygon;
-    s.outlines = std::move(result.outlines);
+    s.outlines = std::move(set.outlines);
     s.evaluated = true;
-    s.sanitized = true;
+    s.sanitized = set.sanitized;
     return shape2dNode(std::move(s), inst);
 }
 

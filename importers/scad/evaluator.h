@@ -243,6 +243,9 @@ class Evaluator {
     /// polytope primitive.
     ir::NodePtr moduleHull(const ModuleInstantiation &inst, const FramePtr &f);
     ir::NodePtr moduleUnsupported(const ModuleInstantiation &inst, const FramePtr &f);
+    /// The children of hull() or minkowski(), a source of points only: a singular transform
+    /// inside still gives its flat points, as in OpenSCAD.
+    ir::NodePtr pointSourceChildren(const ModuleInstantiation &inst, const FramePtr &f);
     /// An empty group for a feature not supported yet, with a warning (none inside `%`).
     ir::NodePtr skipUnsupported(const SourceLoc &loc, const std::string &what);
     ir::NodePtr csgOperation(ir::NodeKind kind, const ModuleInstantiation &inst, const FramePtr &f);
@@ -326,6 +329,9 @@ class Evaluator {
         }
     }
     ir::NodePtr moduleOffset(const ModuleInstantiation &inst, const FramePtr &f);
+    /// A 2D shape node holding an evaluated polygon set (offset(), minkowski(), projection(),
+    /// ...); an empty group when the set is empty.
+    ir::NodePtr polygonSetNode(clipper2d::PolygonSet set, const ModuleInstantiation &inst);
     /// The polygon set of the 2D subtree n; nullopt for OpenSCAD's null geometry. The
     /// children of `silent` are combined without the mixing warning (applyToChildren2D
     /// called directly).
