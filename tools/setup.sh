@@ -2,6 +2,7 @@
 # SPDX-License-Identifier: MIT
 # Installs the Debian 12 packages scadray needs to build, test and compare renders; installs only what is missing.
 # clang and libclang-rt-14-dev (libFuzzer and the sanitizer runtimes) serve tools/sanitize.sh and tools/fuzz.sh.
+# openscad-mcad is OpenSCAD's MCAD library (LGPL, read in place), which examples/Old/example023.scad uses.
 set -euo pipefail
 
 packages=(
@@ -10,6 +11,7 @@ packages=(
     libgtest-dev libgmock-dev libbenchmark-dev
     libtinygltf-dev libpolyclipping-dev
     povray openscad
+    openscad-mcad
     clang libclang-rt-14-dev
     libembree-dev
 )
