@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <unordered_map>
 #include <vector>
@@ -285,6 +286,62 @@ void shadow(const ir::Node &n, const Mat4 &rootFromNode, const ir::Scene &scene,
     }
 }
 
+/// The even-odd region of the outlines as convex polygons (counter-clockwise vertex
+/// references): its ear-clipped triangles merged across shared edges wherever the merged
+/// polygon stays convex (Hertel and Mehlhorn's greedy pass: at most four times the fewest
+/// convex pieces).
+std::vector<std::vector<std::pair<int, int>>> convexPieces(const std::vector<ir::ProfileOutline> &outlines) {
+    using Ref = std::pair<int, int>;
+    auto at = [&](const Ref &r) { return outlines[r.first][r.second]; };
+    auto turn = [&](const Ref &a, const Ref &b, const Ref &c) {
+        ir::ProfilePoint p = at(a), q = at(b), r = at(c);
+        return (q.r - p.r) * (r.z - q.z) - (q.z - p.z) * (r.r - q.r);
+    };
+    std::vector<std::vector<Ref>> polys;
+    for (const auto &t : ir::triangulateProfile(outlines)) polys.push_back({t[0], t[1], t[2]});
+    std::vector<int> parent(polys.size());
+    for (size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
+    auto find = [&](int i) {
+        while (parent[i] != i) i = parent[i] = parent[parent[i]];
+        return i;
+    };
+    // Each interior edge once: the triangle that runs it b -> a is the other side of a -> b
+    std::map<std::pair<Ref, Ref>, int> edges;
+    for (size_t i = 0; i < polys.size(); ++i)
+        for (int k = 0; k < 3; ++k) edges[{polys[i][k], polys[i][(k + 1) % 3]}] = static_cast<int>(i);
+    for (size_t i = 0; i < polys.size(); ++i)
+        for (int k = 0; k < 3; ++k) {
+            Ref a = polys[i][k], b = polys[i][(k + 1) % 3];
+            auto other = edges.find({b, a});
+            if (other == edges.end() || other->second < static_cast<int>(i)) continue;
+            int p = find(static_cast<int>(i)), q = find(other->second);
+            if (p == q) continue;
+            std::vector<Ref> &P = polys[p], &Q = polys[q];
+            // P runs a -> b and Q runs b -> a (both still edges of the merged polygons, since an
+            // edge inside a merged polygon has both its triangles in it)
+            size_t ia = std::find(P.begin(), P.end(), a) - P.begin();
+            size_t jb = std::find(Q.begin(), Q.end(), b) - Q.begin();
+            if (ia == P.size() || jb == Q.size() || P[(ia + 1) % P.size()] != b ||
+                Q[(jb + 1) % Q.size()] != a)
+                continue;
+            // The merged polygon: P from b round to a, then Q after a up to before b
+            std::vector<Ref> merged;
+            for (size_t n = 0; n < P.size(); ++n) merged.push_back(P[(ia + 1 + n) % P.size()]);
+            for (size_t n = 2; n < Q.size(); ++n) merged.push_back(Q[(jb + n) % Q.size()]);
+            bool convex = true;
+            for (size_t n = 0; n < merged.size() && convex; ++n)
+                convex = turn(merged[n], merged[(n + 1) % merged.size()], merged[(n + 2) % merged.size()]) >= 0;
+            if (!convex) continue;
+            P = std::move(merged);
+            Q.clear();
+            parent[q] = p;
+        }
+    std::vector<std::vector<Ref>> out;
+    for (size_t i = 0; i < polys.size(); ++i)
+        if (find(static_cast<int>(i)) == static_cast<int>(i) && !polys[i].empty()) out.push_back(std::move(polys[i]));
+    return out;
+}
+
 }  // namespace
 
 clipper2d::PolygonSet projectCut(const ir::Node &root, const ir::Scene &scene) {
@@ -350,10 +407,10 @@ std::vector<std::vector<Vec3>> solidBoundary(const ir::Node &node, const Mat4 &r
             for (Vec2 q : o) po.push_back({q.x, q.y});
             outlines.push_back(std::move(po));
         }
-        for (const auto &t : ir::triangulateProfile(outlines)) {
-            std::vector<Vec3> tri;
-            for (const auto &[k, i] : t) tri.push_back(f.back({outlines[k][i].r, outlines[k][i].z}));
-            out.push_back(std::move(tri));
+        for (const auto &piece : convexPieces(outlines)) {
+            std::vector<Vec3> pts;
+            for (const auto &[k, i] : piece) pts.push_back(f.back({outlines[k][i].r, outlines[k][i].z}));
+            out.push_back(std::move(pts));
         }
     });
     return out;
