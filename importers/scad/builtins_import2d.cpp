@@ -9,6 +9,7 @@
 #include "importers/scad/dxf.h"
 #include "importers/scad/evaluator.h"
 #include "importers/scad/surface.h"
+#include "importers/scad/svg.h"
 
 namespace rt::scad {
 
@@ -82,13 +83,58 @@ ir::NodePtr Evaluator::dxfShapeNode(const std::string &path, const Dxf2dArgs &ar
 ir::NodePtr Evaluator::importFile2d(const std::string &ext, const std::string &name,
                                     const BoundArgs &a, const ModuleInstantiation &inst) {
     std::string path = resolveImportPath(name, inst.loc);
-    if (ext == ".svg") return skipUnsupported(inst.loc, "import of .svg files");
     // Left out with its `%` subtree: the file need not be read
     if (backgroundDepth_ > 0) return newNode(ir::NodeKind::Group, inst.loc);
+    if (ext == ".svg") return importSvg(path, a, inst);
     // The deprecated layername= counts only when layer is undef
     const Value &layer = a[1].isUndef() ? a[8] : a[1];
     Dxf2dArgs d = dxfArgs("import", layer, a[3], a.loc(3), a[4], a.loc(4));
     return dxfShapeNode(path, d, inst);
+}
+
+ir::NodePtr Evaluator::importSvg(const std::string &path, const BoundArgs &a,
+                                 const ModuleInstantiation &inst) {
+    svg::Options opts;
+    opts.center = a[9].isBool() && a[9].boolValue();
+    if (a[10].isNumber()) {
+        double dpi = a[10].toNumber();
+        if (dpi >= svg::kMinDpi && std::isfinite(dpi))
+            opts.dpi = dpi;
+        else
+            warn(a.loc(10), "Invalid dpi value giving, using default of " +
+                                formatNumber(svg::kDefaultDpi) +
+                                " dpi. Value must be positive and >= 0.001");
+    }
+    Shape2d s;
+    s.kind = Shape2dKind::Polygon;
+    s.evaluated = true;
+    s.sanitized = true;
+    svg::Drawing drawing;
+    std::string error;
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) error = "Can't open file '" + path + "'";
+    if (error.empty() && svg::read(path, opts, drawing, error)) {
+        for (const auto &[element, count] : drawing.skipped)
+            warn(inst.loc, "import(): " + std::to_string(count) + " <" + element +
+                               "> element(s) of '" + path + "' left out (not drawn by OpenSCAD "
+                               "2021.01's SVG import)");
+        // Each shape is a polygon filled even-odd; OpenSCAD unites them
+        std::vector<clipper2d::PolygonSet> operands;
+        for (auto &outlines : drawing.shapes) {
+            clipper2d::PolygonSet p;
+            for (Outline &o : outlines)
+                if (o.size() > 2) p.outlines.push_back(std::move(o));
+            if (!p.empty()) operands.push_back(std::move(p));
+        }
+        if (!operands.empty())
+            s.outlines = withClipper(inst.loc, [&] {
+                             return clipper2d::apply(operands, clipper2d::BoolOp::Union);
+                         }).outlines;
+    } else {
+        // OpenSCAD logs an error and goes on with empty geometry
+        diag_.report(Severity::Error, inst.loc, error);
+    }
+    return shape2dNode(std::move(s), inst);
 }
 
 ir::NodePtr Evaluator::dxfFileShape(const Value &file, const Dxf2dArgs &args,

@@ -366,6 +366,9 @@ class Evaluator {
     /// 2D placeholder; empty, after OpenSCAD's warning, when the file can't be read.
     ir::NodePtr dxfShapeNode(const std::string &path, const Dxf2dArgs &args,
                              const ModuleInstantiation &inst);
+    /// An SVG file's polygon (import_svg: each shape sanitized even-odd, all united).
+    ir::NodePtr importSvg(const std::string &path, const BoundArgs &a,
+                          const ModuleInstantiation &inst);
     /// The file form of linear_extrude()/rotate_extrude(): the DXF named by `file`.
     ir::NodePtr dxfFileShape(const Value &file, const Dxf2dArgs &args,
                              const ModuleInstantiation &inst);

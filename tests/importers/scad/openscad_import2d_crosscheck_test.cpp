@@ -73,6 +73,22 @@ INSTANTIATE_TEST_SUITE_P(
                       "linear_extrude(file=f, layer=\"blk\", height=3, center=true);",
                       "rotate_extrude(file=f, layer=\"square\", origin=[-12, 0], $fn=12);"));
 
+class SvgCrossCheck : public ::testing::TestWithParam<const char *> {};
+
+TEST_P(SvgCrossCheck, OutlinePointsMatchOpenScad) {
+    if (!haveOpenScad()) GTEST_SKIP() << "openscad is not on PATH; cross-check skipped";
+    std::string src = "d = \"" + dataDir() + "/import2d/\";\n" + GetParam();
+    expectSamePoints(src, true);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Files, SvgCrossCheck,
+    ::testing::Values("linear_extrude(1) import(str(d, \"basic.svg\"));",
+                      "linear_extrude(1) import(str(d, \"basic.svg\"), dpi=96, center=true);",
+                      "linear_extrude(1) import(str(d, \"path.svg\"));",
+                      "linear_extrude(1) import(str(d, \"viewbox.svg\"));",
+                      "linear_extrude(1) import(str(d, \"viewbox.svg\"), center=true);"));
+
 void expectSameSurface(const std::string &src, bool warns = false) {
     SCOPED_TRACE(src);
     fs::path dir = caseDir("surface");
