@@ -344,7 +344,7 @@ TEST(Modifiers, RootReplacesTheSceneWithoutItsParents) {
 }
 
 TEST(SkippedModules, WarnAndLeaveAnEmptyGroup) {
-    const char *names[] = {"minkowski", "resize", "surface", "text", "projection"};
+    const char *names[] = {"minkowski", "resize", "text", "projection"};
     for (const char *name : names) {
         Imported r = importText(std::string("difference() { ") + name + "() cube(); sphere(); }");
         EXPECT_EQ(r.scene.stats.skippedModules, 1) << name;
