@@ -34,15 +34,6 @@ constexpr int kMaxSlices = 100000;
 /// Plates drawn for top-level 2D objects, as OpenSCAD's preview draws them (polyset-gl.cc).
 constexpr double kPlateThickness = 1;
 
-bool getVec2(const Value &v, double &x, double &y) {
-    if (!v.isVector() || v.toVector().size() != 2) return false;
-    const auto &e = v.toVector();
-    if (!e[0].isNumber() || !e[1].isNumber()) return false;
-    x = e[0].toNumber();
-    y = e[1].toNumber();
-    return true;
-}
-
 /// The z range an extrusion covers with `pad` more at each end where the scale stays at
 /// least half of what it is at the nearer end (scale 0 at the top: no pad there), and the
 /// scale at both ends of that range.
@@ -64,6 +55,15 @@ Range paddedRange(const ExtrudeSpec &spec, double pad) {
 }
 
 }  // namespace
+
+bool getVec2(const Value &v, double &x, double &y) {
+    if (!v.isVector() || v.toVector().size() != 2) return false;
+    const auto &e = v.toVector();
+    if (!e[0].isNumber() || !e[1].isNumber()) return false;
+    x = e[0].toNumber();
+    y = e[1].toNumber();
+    return true;
+}
 
 // ---------------------------------------------------------------------------------------------
 // 2D shapes in the node tree

@@ -17,16 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// OpenSCAD's Value::getVec2: exactly two numbers.
-bool vec2Of(const Value &v, double &x, double &y) {
-    if (!v.isVector() || v.toVector().size() != 2) return false;
-    const auto &e = v.toVector();
-    if (!e[0].isNumber() || !e[1].isNumber()) return false;
-    x = e[0].toNumber();
-    y = e[1].toNumber();
-    return true;
-}
-
 /// A parameter OpenSCAD reads with toString(): undef is "", other values as str() shows them.
 std::string textOf(const Value &v) { return v.isUndef() ? std::string() : v.toString(false); }
 
@@ -39,7 +29,7 @@ Dxf2dArgs Evaluator::dxfArgs(const std::string &who, const Value &layer, const V
     d.layer = textOf(layer);
     if (!origin.isUndef()) {
         double x = 0, y = 0;
-        if (vec2Of(origin, x, y) && std::isfinite(x) && std::isfinite(y)) {
+        if (getVec2(origin, x, y) && std::isfinite(x) && std::isfinite(y)) {
             d.originX = x;
             d.originY = y;
         } else {
@@ -157,7 +147,7 @@ Value Evaluator::callDxfFunction(bool cross, const ArgumentList &args, const Fra
         } else if (n == "layer") {
             layer = v.toString(false);
         } else if (n == "origin") {
-            bool ok = vec2Of(v, ox, oy) && std::isfinite(ox) && std::isfinite(oy);
+            bool ok = getVec2(v, ox, oy) && std::isfinite(ox) && std::isfinite(oy);
             if (!ok) {
                 ox = oy = 0;
                 warn(arg.loc, who + "(..., origin=" + v.toEchoString() + ") could not be converted");

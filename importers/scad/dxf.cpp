@@ -26,8 +26,8 @@ namespace {
 /// At most this many segments come from one CIRCLE, ARC or ELLIPSE (OpenSCAD would try to
 /// make any number); more is a warning and the entity is left out.
 constexpr double kMaxEntitySegments = 1e6;
-/// At most this many segments in a file, for the same reason.
-constexpr size_t kMaxSegments = 20'000'000;
+/// At most this many segments in a file (entities and blocks), for the same reason.
+constexpr size_t kMaxSegments = 1'000'000;
 
 /// OpenSCAD's Grid2d with a list of segment indices per grid point: a point snaps to the
 /// grid, or to an existing grid point next to it (the nearest, scanned as OpenSCAD does).
@@ -161,7 +161,8 @@ class Reader {
 void Reader::addLine(double x1, double y1, double x2, double y2) {
     if (!inEntities_ && !inBlocks_) return;
     if (inEntities_ && !layerMatches()) return;
-    if (lines_.size() >= kMaxSegments) {
+    // Entity and block segments together (a block inserted into itself doubles each time)
+    if (out_.points.size() >= 2 * kMaxSegments) {
         if (!tooMany_)
             warn_("more than " + std::to_string(kMaxSegments) + " segments in DXF file '" +
                   shown_ + "'; the rest are left out");

@@ -106,6 +106,9 @@ struct RevolveSpec {
     SourceLoc loc;
 };
 
+/// OpenSCAD's Value::getVec2: exactly two numbers (builtins_2d.cpp).
+bool getVec2(const Value &v, double &x, double &y);
+
 /// Where and how a DXF file is read (import(), the file forms of the extrusions).
 struct Dxf2dArgs {
     std::string layer;  ///< empty: all layers

@@ -12,9 +12,10 @@
 
 namespace rt::scad::surface {
 
-/// At most this many height values (lines x columns): OpenSCAD's mesh has four triangles a
-/// cell, so this bounds a surface at about 16 million triangles. More is a located error.
-constexpr size_t kMaxCells = 4'000'000;
+/// At most this many height values (lines x columns), enough for a 1024 x 1024 image:
+/// OpenSCAD's mesh has four triangles a cell, so this bounds a surface at about 4.4 million
+/// triangles (and a few hundred MB while it is built). More is a located error.
+constexpr size_t kMaxCells = 1'100'000;
 
 /// Heights by row (y) and column (x); cells a ragged DAT file leaves out are 0.
 struct HeightMap {

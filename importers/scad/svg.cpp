@@ -433,6 +433,14 @@ PathList parsePathData(const std::string &d, const Attrs &attrs) {
     char cmd = ' ';
     int point = 0;
     bool closed = false;
+    // The segment ends at (xx, yy); the next number starts the command's arguments again
+    auto advance = [&](bool cubic, bool quad) {
+        x = xx;
+        y = yy;
+        point = -1;
+        lastCubic = cubic;
+        lastQuad = quad;
+    };
     for (const PathToken &tok : lexPathData(d)) {
         double p = 0;
         if (tok.command) {
@@ -455,10 +463,7 @@ PathList parsePathData(const std::string &d, const Attrs &attrs) {
             case 6:
                 yy = rel ? y + p : p;
                 arcTo(list.back(), x, y, rx, ry, xx, yy, angle, large, sweep);
-                x = xx;
-                y = yy;
-                point = -1;
-                lastCubic = lastQuad = false;
+                advance(false, false);
                 break;
             }
             break;
@@ -469,10 +474,7 @@ PathList parsePathData(const std::string &d, const Attrs &attrs) {
             case 1:
                 yy = rel ? y + p : p;
                 list.back().push_back({xx, yy});
-                x = xx;
-                y = yy;
-                point = -1;
-                lastCubic = lastQuad = false;
+                advance(false, false);
                 break;
             }
             break;
@@ -493,11 +495,7 @@ PathList parsePathData(const std::string &d, const Attrs &attrs) {
                     cy2 += y;
                 }
                 cubicTo(list.back(), x, y, cx1, cy1, cx2, cy2, xx, yy);
-                x = xx;
-                y = yy;
-                point = -1;
-                lastCubic = true;
-                lastQuad = false;
+                advance(true, false);
                 break;
             }
             break;
@@ -523,11 +521,7 @@ PathList parsePathData(const std::string &d, const Attrs &attrs) {
                     cy2 += y;
                 }
                 cubicTo(list.back(), x, y, cx1, cy1, cx2, cy2, xx, yy);
-                x = xx;
-                y = yy;
-                point = -1;
-                lastCubic = true;
-                lastQuad = false;
+                advance(true, false);
                 break;
             }
             break;
@@ -544,11 +538,7 @@ PathList parsePathData(const std::string &d, const Attrs &attrs) {
                     cy1 += y;
                 }
                 quadTo(list.back(), x, y, cx1, cy1, xx, yy);
-                x = xx;
-                y = yy;
-                point = -1;
-                lastCubic = false;
-                lastQuad = true;
+                advance(false, true);
                 break;
             }
             break;
@@ -568,11 +558,7 @@ PathList parsePathData(const std::string &d, const Attrs &attrs) {
             case 1:
                 yy = rel ? y + p : p;
                 quadTo(list.back(), x, y, cx1, cy1, xx, yy);
-                x = xx;
-                y = yy;
-                point = -1;
-                lastCubic = false;
-                lastQuad = true;
+                advance(false, true);
                 break;
             }
             break;
@@ -592,10 +578,7 @@ PathList parsePathData(const std::string &d, const Attrs &attrs) {
                     list.emplace_back();
                 }
                 list.back().push_back({xx, yy});
-                x = xx;
-                y = yy;
-                point = -1;
-                lastCubic = lastQuad = false;
+                advance(false, false);
                 break;
             }
             }
