@@ -27,7 +27,7 @@ namespace {
 /// make any number); more is a warning and the entity is left out.
 constexpr double kMaxEntitySegments = 1e6;
 /// At most this many segments in a file (entities and blocks), for the same reason.
-constexpr size_t kMaxSegments = 1'000'000;
+constexpr size_t kMaxSegments = 500'000;
 
 /// OpenSCAD's Grid2d with a list of segment indices per grid point: a point snaps to the
 /// grid, or to an existing grid point next to it (the nearest, scanned as OpenSCAD does).

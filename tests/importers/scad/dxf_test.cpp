@@ -215,6 +215,15 @@ TEST_F(DxfBadFiles, HugeArcsAndNonFiniteAnglesAreLeftOut) {
     EXPECT_TRUE(r.hasWarning("ARC with a non-finite angle"));
 }
 
+TEST_F(DxfBadFiles, ABlockInsertedIntoItselfStopsAtTheSegmentLimit) {
+    std::string text = "  0\nSECTION\n  2\nBLOCKS\n  0\nBLOCK\n  2\nb\n  0\nLINE\n 10\n0\n 20\n0\n"
+                       " 11\n1\n 21\n1\n";
+    for (int i = 0; i < 40; ++i) text += "  0\nINSERT\n  2\nb\n 10\n0.5\n 20\n0\n";
+    text += "  0\nENDBLK\n  0\nENDSEC\n  0\nEOF\n";
+    Imported r = run(text);
+    EXPECT_TRUE(r.hasWarning("segments in DXF file"));
+}
+
 TEST_F(DxfBadFiles, EmptyAndBinaryFilesGiveNothing) {
     Imported empty = run("");
     EXPECT_TRUE(primitives(*empty.scene.root).empty());

@@ -100,6 +100,25 @@ TEST_F(SurfacePng, SixteenBitSamplesKeepTheirHighByte) {
     EXPECT_NEAR(m.at(0, 0), 100.0 / 255 * 0x12, 1e-9);
 }
 
+TEST_F(SurfacePng, TooManyPixelsIsALocatedError) {
+    std::string path = (dir / "big.png").string();
+    std::vector<uint8_t> px(1100 * 1001 * 3, 7);
+    writePng(path, 1100, 1001, 8, px.data(), false);
+    surface::HeightMap m;
+    EXPECT_EQ(surface::readHeightMap(path, false, m, [](const std::string &) {}),
+              surface::ReadResult::TooLarge);
+    std::string scad = (dir / "main.scad").string();
+    std::ofstream(scad) << "\n  surface(\"big.png\");\n";
+    DiagnosticSink diag;
+    try {
+        importScad(scad, diag);
+        ADD_FAILURE() << "no error";
+    } catch (const EvalError &e) {
+        EXPECT_EQ(e.loc().line, 2);
+        EXPECT_NE(std::string(e.what()).find("holds more than 1100000 heights"), std::string::npos);
+    }
+}
+
 TEST_F(SurfacePng, MissingAndBrokenFilesWarn) {
     std::vector<std::string> w;
     auto m = readMap((dir / "none.png").string(), false, &w);
