@@ -135,8 +135,9 @@ class Reader {
     bool layerMatches() const { return opts_.layer.empty() || opts_.layer == layer_; }
     void addLine(double x1, double y1, double x2, double y2);
     void finishEntity();
-    /// Segment count of a round entity, or 0 (after a warning) when there would be too many.
-    int segments(double r, double fraction);
+    /// Segment count of a round entity over `sweep` of `turn`, or 0 (after a warning) when
+    /// there would be too many.
+    int segments(double r, double sweep, double turn);
 
     const ReadOptions &opts_;
     Data &out_;
@@ -188,9 +189,10 @@ void Reader::addLine(double x1, double y1, double x2, double y2) {
     }
 }
 
-int Reader::segments(double r, double fraction) {
+int Reader::segments(double r, double sweep, double turn) {
     double n = openscadFragments(r, opts_.fragments);
-    double total = std::ceil(n * fraction);
+    // n * sweep / turn in OpenSCAD's order: 13 * 2 pi / (2 pi) rounds up to 14
+    double total = std::ceil(n * sweep / turn);
     if (!std::isfinite(total) || total > kMaxEntitySegments) {
         warn_(mode_ + " in DXF file '" + shown_ + "' would need " +
               (std::isfinite(total) ? formatNumber(total) : std::string("infinitely many")) +
@@ -213,7 +215,7 @@ void Reader::finishEntity() {
         if (dimtype_ & 1)  // closed
             addLine(at(xverts_, n - 1), at(yverts_, n - 1), at(xverts_, 0), at(yverts_, 0));
     } else if (mode_ == "CIRCLE") {
-        int n = segments(radius_, 1);
+        int n = segments(radius_, 1, 1);
         double cx = at(xverts_, 0), cy = at(yverts_, 0);
         for (int i = 0; i < n; ++i) {
             double a1 = (360.0 * i) / n, a2 = (360.0 * (i + 1)) / n;
@@ -230,7 +232,7 @@ void Reader::finishEntity() {
                 arcStop_ += 360.0 * std::ceil((arcStart_ - arcStop_) / 360.0);
             while (arcStart_ > arcStop_) arcStop_ += 360.0;
             double sweep = arcStop_ - arcStart_;
-            int n = segments(radius_, sweep / 360);
+            int n = segments(radius_, sweep, 360);
             for (int i = 0; i < n; ++i) {
                 double a1 = arcStart_ + sweep * i / n, a2 = arcStart_ + sweep * (i + 1) / n;
                 addLine(cosDegrees(a1) * radius_ + cx, sinDegrees(a1) * radius_ + cy,
@@ -253,7 +255,7 @@ void Reader::finishEntity() {
             if (ey < 0.0) rot = 2 * M_PI - rot;
             double minor = major * radius_;  // code 40: the axis ratio
             double sweep = ellipseStop_ - ellipseStart_;
-            int n = segments(major, sweep / (2 * M_PI));
+            int n = segments(major, sweep, 2 * M_PI);
             double px = 0, py = 0;
             for (int i = 0; i <= n; ++i) {
                 double a = ellipseStart_ + sweep * i / n;

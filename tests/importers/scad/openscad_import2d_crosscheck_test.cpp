@@ -66,6 +66,9 @@ INSTANTIATE_TEST_SUITE_P(
                       "linear_extrude(1) import(f, layer=\"arc\", $fn=30);",
                       "linear_extrude(1) import(f, layer=\"ell\", $fn=20);",
                       "linear_extrude(1) import(f, layer=\"blk\");",
+                      // 13 segments of a full ellipse: 13 * 2 pi / (2 pi) rounds up to 14
+                      "linear_extrude(1) import(f, layer=\"ell\");",
+                      "linear_extrude(1) import(f, layer=\"arc\");",
                       "linear_extrude(1) import(f, layer=\"square\", origin=[3, -2], scale=1.5);",
                       // Square and circle of two layers in one import: the circle is a hole
                       "linear_extrude(1) difference() { import(f, layer=\"square\"); "
