@@ -90,7 +90,12 @@ INSTANTIATE_TEST_SUITE_P(
                       "linear_extrude(1) import(str(d, \"basic.svg\"), dpi=96, center=true);",
                       "linear_extrude(1) import(str(d, \"path.svg\"));",
                       "linear_extrude(1) import(str(d, \"viewbox.svg\"));",
-                      "linear_extrude(1) import(str(d, \"viewbox.svg\"), center=true);"));
+                      "linear_extrude(1) import(str(d, \"viewbox.svg\"), center=true);",
+                      // slice alignment, matrix/rotate-about/skew transforms, round caps
+                      "linear_extrude(1) import(str(d, \"page_e1.svg\"));",
+                      // no page size: the viewBox at the dpi; percent sizes
+                      "linear_extrude(1) import(str(d, \"page_e2.svg\"), dpi=50);",
+                      "linear_extrude(1) import(str(d, \"page_e3.svg\"));"));
 
 void expectSameSurface(const std::string &src, bool warns = false) {
     SCOPED_TRACE(src);
