@@ -9,7 +9,7 @@ packages=(
     g++ cmake ninja-build pkg-config
     libopenimageio-dev libpng-dev libcli11-dev
     libgtest-dev libgmock-dev libbenchmark-dev
-    libtinygltf-dev libpolyclipping-dev
+    libtinygltf-dev libpolyclipping-dev libxml2-dev
     povray openscad
     openscad-mcad
     clang libclang-rt-14-dev

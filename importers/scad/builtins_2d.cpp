@@ -34,15 +34,6 @@ constexpr int kMaxSlices = 100000;
 /// Plates drawn for top-level 2D objects, as OpenSCAD's preview draws them (polyset-gl.cc).
 constexpr double kPlateThickness = 1;
 
-bool getVec2(const Value &v, double &x, double &y) {
-    if (!v.isVector() || v.toVector().size() != 2) return false;
-    const auto &e = v.toVector();
-    if (!e[0].isNumber() || !e[1].isNumber()) return false;
-    x = e[0].toNumber();
-    y = e[1].toNumber();
-    return true;
-}
-
 /// The z range an extrusion covers with `pad` more at each end where the scale stays at
 /// least half of what it is at the nearer end (scale 0 at the top: no pad there), and the
 /// scale at both ends of that range.
@@ -64,6 +55,15 @@ Range paddedRange(const ExtrudeSpec &spec, double pad) {
 }
 
 }  // namespace
+
+bool getVec2(const Value &v, double &x, double &y) {
+    if (!v.isVector() || v.toVector().size() != 2) return false;
+    const auto &e = v.toVector();
+    if (!e[0].isNumber() || !e[1].isNumber()) return false;
+    x = e[0].toNumber();
+    y = e[1].toNumber();
+    return true;
+}
 
 // ---------------------------------------------------------------------------------------------
 // 2D shapes in the node tree
@@ -249,13 +249,13 @@ ir::NodePtr Evaluator::moduleLinearExtrude(const ModuleInstantiation &inst, cons
     } else if (!inst.args.empty() && inst.args[0].name.empty() && a[0].isNumber()) {
         a[0].getFiniteNumber(height);
     }
-    if (a[0].isString())
-        warn(a.loc(0), "linear_extrude(file=...) (DXF import) is not supported yet; the file "
-                       "is ignored");
-    double ox, oy;
-    if (a.given[3] && !(getVec2(a[3], ox, oy) && std::isfinite(ox) && std::isfinite(oy)))
-        warn(a.loc(3), "linear_extrude(..., origin=" + a[3].toEchoString() +
-                           ") could not be converted");
+    // The deprecated file form: the DXF file's polygon instead of the children
+    bool fromFile = a[0].isString();
+    if (fromFile)
+        deprecated(a.loc(0), "Support for reading files in linear_extrude will be removed in "
+                             "future releases. Use a child import() instead.",
+                   false);
+    Dxf2dArgs dxfFile = dxfArgs("linear_extrude", a[1], a[3], a.loc(3), Value(), a.loc(4));
     // Scale: a number or a vec2 (a bad one keeps [1, 1]); negative axes clamp to 0
     Vec2 scale{1, 1};
     if (a[4].isNumber() && std::isfinite(a[4].toNumber())) {
@@ -281,6 +281,12 @@ ir::NodePtr Evaluator::moduleLinearExtrude(const ModuleInstantiation &inst, cons
     ir::NodePtr children = newNode(ir::NodeKind::Group, inst.loc);
     children->label = "linear_extrude children";
     instantiateChildren(inst, f, children->children);
+    if (fromFile) {
+        // OpenSCAD reads the file with the x scale and ignores the children
+        dxfFile.scale = scale.x;
+        children->children.clear();
+        children->children.push_back(dxfFileShape(a[0], dxfFile, inst));
+    }
     spec.silentUnion = children.get();
     ir::NodePtr out = newNode(ir::NodeKind::Group, inst.loc);
     out->label = "linear_extrude";

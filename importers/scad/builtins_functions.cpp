@@ -460,11 +460,6 @@ bool testBool(const Value &v) { return v.isBool(); }
 bool testString(const Value &v) { return v.isString(); }
 bool testFunction(const Value &v) { return v.isFunction(); }
 
-Value fnDxf(Evaluator &ev, const Args &, const SourceLoc &l) {
-    ev.warn(l, "dxf_dim()/dxf_cross() are not supported; returning undef");
-    return Value();
-}
-
 }  // namespace
 
 BuiltinFunction findBuiltinFunction(Symbol name) {
@@ -507,8 +502,6 @@ BuiltinFunction findBuiltinFunction(Symbol name) {
         {Symbol::intern("is_bool"), isType<testBool>},
         {Symbol::intern("is_string"), isType<testString>},
         {Symbol::intern("is_function"), isType<testFunction>},
-        {Symbol::intern("dxf_dim"), fnDxf},
-        {Symbol::intern("dxf_cross"), fnDxf},
     };
     auto it = kTable.find(name);
     return it == kTable.end() ? nullptr : it->second;

@@ -226,6 +226,7 @@ ir::NodePtr Evaluator::moduleImport(const ModuleInstantiation &inst, const Frame
                                      name + "'; empty geometry");
         return newNode(ir::NodeKind::Group, inst.loc);
     }
+    if (ext == ".dxf" || ext == ".svg") return importFile2d(ext, name, a, inst);
     bool meshFile = ext == ".stl" || ext == ".off";
     bool gltfFile = ext == ".gltf" || ext == ".glb";
     if (!meshFile && !gltfFile) return skipUnsupported(inst.loc, "import of " + ext + " files");

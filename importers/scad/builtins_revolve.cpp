@@ -53,11 +53,9 @@ ir::NodePtr Evaluator::moduleRotateExtrude(const ModuleInstantiation &inst, cons
         deprecated(a.loc(0), "Support for reading files in rotate_extrude will be removed in "
                              "future releases. Use a child import() instead.",
                    false);
-        warn(a.loc(0), "rotate_extrude(file=" + a[0].toEchoString() +
-                           ") (DXF import) is not supported; OpenSCAD revolves the file's "
-                           "outline and ignores the children, so nothing is drawn (to give "
-                           "the angle, write angle=...)");
-        return out;
+        Dxf2dArgs d = dxfArgs("rotate_extrude", a[1], a[2], a.loc(2), a[3], a.loc(3));
+        children->children.clear();
+        children->children.push_back(dxfFileShape(a[0], d, inst));
     }
     if (angle == 0) {
         warn(inst.loc, "rotate_extrude(): angle 0 makes empty geometry, as in OpenSCAD");

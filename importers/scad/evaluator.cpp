@@ -607,6 +607,11 @@ Value Evaluator::evalCall(const CallExpr &c, const FramePtr &f) {
             const auto &id = static_cast<const IdentifierExpr &>(*c.args[0].expr);
             return Value::boolean(lookupVariable(id.name, f.get(), id.loc, true).isUndef());
         }
+        // dxf_dim()/dxf_cross() read their arguments by name (builtins_import2d.cpp)
+        static const Symbol kDxfDim = Symbol::intern("dxf_dim"),
+                            kDxfCross = Symbol::intern("dxf_cross");
+        if (name == kDxfDim || name == kDxfCross)
+            return callDxfFunction(name == kDxfCross, c.args, f, c.loc);
         if (BuiltinFunction fn = findBuiltinFunction(name))
             return callBuiltinFunction(fn, c.args, f, c.loc);
         throw EvalError(c.loc, "unknown function '" + name.str() + "'");

@@ -106,6 +106,15 @@ struct RevolveSpec {
     SourceLoc loc;
 };
 
+/// OpenSCAD's Value::getVec2: exactly two numbers (builtins_2d.cpp).
+bool getVec2(const Value &v, double &x, double &y);
+
+/// Where and how a DXF file is read (import(), the file forms of the extrusions).
+struct Dxf2dArgs {
+    std::string layer;  ///< empty: all layers
+    double originX = 0, originY = 0, scale = 1;
+};
+
 class Evaluator;
 using BuiltinFunction = Value (*)(Evaluator &, const std::vector<Value> &args,
                                   const SourceLoc &loc);
@@ -356,6 +365,29 @@ class Evaluator {
 
     // 2D file formats and height maps: import() of .dxf/.svg, surface() (builtins_import2d.cpp)
     ir::NodePtr moduleSurface(const ModuleInstantiation &inst, const FramePtr &f);
+    /// import() of a .dxf or .svg file named `name` (`a` bound as moduleImport binds it).
+    ir::NodePtr importFile2d(const std::string &ext, const std::string &name, const BoundArgs &a,
+                             const ModuleInstantiation &inst);
+    /// The layer, origin and scale of a DXF read by `who`, checked as OpenSCAD checks them.
+    Dxf2dArgs dxfArgs(const std::string &who, const Value &layer, const Value &origin,
+                      const SourceLoc &originLoc, const Value &scale, const SourceLoc &scaleLoc);
+    /// A DXF file's polygon (DxfData::toPolygon2d, sanitized even-odd as a polygon() is) as a
+    /// 2D placeholder; empty, after OpenSCAD's warning, when the file can't be read.
+    ir::NodePtr dxfShapeNode(const std::string &path, const Dxf2dArgs &args,
+                             const ModuleInstantiation &inst);
+    /// An SVG file's polygon (import_svg: each shape sanitized even-odd, all united).
+    ir::NodePtr importSvg(const std::string &path, const BoundArgs &a,
+                          const ModuleInstantiation &inst);
+    /// The file form of linear_extrude()/rotate_extrude(): the DXF named by `file`.
+    ir::NodePtr dxfFileShape(const Value &file, const Dxf2dArgs &args,
+                             const ModuleInstantiation &inst);
+
+  public:
+    /// dxf_dim() or dxf_cross(), which read their arguments by name (2021.01 dxfdim.cc).
+    Value callDxfFunction(bool cross, const ArgumentList &args, const FramePtr &f,
+                          const SourceLoc &loc);
+
+  private:
 
     // resize(), minkowski(), projection() (builtins_3d_ops.cpp)
     ir::NodePtr moduleResize(const ModuleInstantiation &inst, const FramePtr &f);

@@ -57,6 +57,39 @@ inline void expectCovered(const std::vector<Vec3> &a, const std::vector<Vec3> &b
     }
 }
 
+/// World points of every primitive (circles already faceted as OpenSCAD facets them).
+inline std::vector<Vec3> worldPoints(const ir::Scene &scene) {
+    std::vector<Vec3> out;
+    for (const auto &p : primitives(*scene.root)) {
+        std::vector<Vec3> local;
+        if (const auto *b = std::get_if<ir::BoxPrim>(&p.node->shape)) {
+            for (int i = 0; i < 8; ++i)
+                local.push_back(Vec3(i & 1 ? b->max.x : b->min.x, i & 2 ? b->max.y : b->min.y,
+                                     i & 4 ? b->max.z : b->min.z));
+        } else if (const auto *poly = std::get_if<ir::PolytopePrim>(&p.node->shape)) {
+            local = poly->vertices;
+        } else if (const auto *prism = std::get_if<ir::PrismPrim>(&p.node->shape)) {
+            local = ir::prismPoints(*prism);
+        } else if (const auto *mp = std::get_if<ir::MeshPrim>(&p.node->shape)) {
+            local = scene.meshes[mp->mesh]->positions;
+        } else {
+            ADD_FAILURE() << "unexpected primitive";
+        }
+        for (const Vec3 &v : local) out.push_back(p.worldFromObject.transformPoint(v));
+    }
+    return out;
+}
+
+/// Every point of `a` has one of `b` within `digits` (relative, at least absolute).
+inline void expectCoveredWithin(const std::vector<Vec3> &a, const std::vector<Vec3> &b,
+                                double digits, const char *what) {
+    for (const Vec3 &v : a) {
+        double best = kInfinity;
+        for (const Vec3 &w : b) best = std::min(best, length(v - w));
+        EXPECT_LT(best, digits * std::max(1.0, length(v))) << what << " " << v.toString();
+    }
+}
+
 /// OpenSCAD's OFF export of `src`, written through files in `dir` (a failed run fails the
 /// test and gives an empty mesh).
 inline ir::Mesh openscadOff(const std::string &src, const std::filesystem::path &dir) {
@@ -98,29 +131,6 @@ inline void expectOnSurface(const std::vector<Vec3> &a, const ir::PolytopePrim &
         for (const auto &pl : planes) outside = std::max(outside, dot(pl.normal, v) - pl.offset);
         EXPECT_LT(std::abs(outside), kOffDigits * std::max(1.0, length(v))) << v.toString();
     }
-}
-
-/// World points of every primitive (circles already faceted as OpenSCAD facets them).
-inline std::vector<Vec3> worldPoints(const ir::Scene &scene) {
-    std::vector<Vec3> out;
-    for (const auto &p : primitives(*scene.root)) {
-        std::vector<Vec3> local;
-        if (const auto *b = std::get_if<ir::BoxPrim>(&p.node->shape)) {
-            for (int i = 0; i < 8; ++i)
-                local.push_back(Vec3(i & 1 ? b->max.x : b->min.x, i & 2 ? b->max.y : b->min.y,
-                                     i & 4 ? b->max.z : b->min.z));
-        } else if (const auto *poly = std::get_if<ir::PolytopePrim>(&p.node->shape)) {
-            local = poly->vertices;
-        } else if (const auto *prism = std::get_if<ir::PrismPrim>(&p.node->shape)) {
-            local = ir::prismPoints(*prism);
-        } else if (const auto *mp = std::get_if<ir::MeshPrim>(&p.node->shape)) {
-            local = scene.meshes[mp->mesh]->positions;
-        } else {
-            ADD_FAILURE() << "unexpected primitive";
-        }
-        for (const Vec3 &v : local) out.push_back(p.worldFromObject.transformPoint(v));
-    }
-    return out;
 }
 
 /// The scene `src` imports to is one polytope with the vertices (OFF's 6 digits) and the volume
