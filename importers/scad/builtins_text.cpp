@@ -100,11 +100,12 @@ ir::NodePtr Evaluator::moduleText(const ModuleInstantiation &inst, const FramePt
     // The glyphs, each a polygon set OpenSCAD marks sanitized, united by Clipper
     text::TextResult r = text::renderText(p, scene_.fontFiles);
     for (const text::TextMessage &m : r.messages)
-        warn(inst.loc, m.scadrayOnly ? "text(): " + m.text : m.text);
-    if (r.tooManyPoints)
-        throw EvalError(inst.loc, "text(): more than " + std::to_string(text::kMaxTextPoints) +
-                                      " outline points (" + std::to_string(p.segments) +
-                                      " per curve from $fn, $fa, $fs)");
+        warn(m.arg >= 0 ? a.loc(m.arg) : inst.loc, m.scadrayOnly ? "text(): " + m.text : m.text);
+    if (r.points > text::kMaxTextPoints)
+        throw EvalError(inst.loc, "text(): " + std::to_string(r.points) +
+                                      " outline points, more than " +
+                                      std::to_string(text::kMaxTextPoints) + " (" +
+                                      std::to_string(p.segments) + " per curve from $fn, $fa, $fs)");
     std::vector<clipper2d::PolygonSet> glyphs;
     for (auto &outlines : r.glyphs) glyphs.push_back({std::move(outlines), true});
     if (glyphs.empty()) return empty;

@@ -62,20 +62,24 @@ class FontLibrary {
     void registerFile(const std::string &path, std::vector<TextMessage> &messages) {
         if (!ok_ || !registered_.insert(path).second) return;
         if (!FcConfigAppFontAddFile(config_, reinterpret_cast<const FcChar8 *>(path.c_str())))
-            messages.push_back({"Can't register font '" + path + "'", false});
+            messages.push_back({"Can't register font '" + path + "'"});
         // A face found before may no longer be fontconfig's best match
         clearFaces();
     }
 
     /// FontCache::get_font: the face fontconfig matches best (cached by name), with a
-    /// scadray-only message when the requested family is not installed at all.
+    /// scadray-only message, each time, when the requested family is not installed at all.
     FT_Face face(const std::string &font, std::vector<TextMessage> &messages) {
         auto it = faces_.find(font);
-        if (it != faces_.end()) return it->second;
-        std::string name = trimmed(font);
-        FT_Face f = findFace(name.empty() ? std::string(kDefaultFont) : name, messages);
-        if (f) faces_[font] = f;
-        return f;
+        if (it == faces_.end()) {
+            std::string name = trimmed(font);
+            Face f = findFace(name.empty() ? std::string(kDefaultFont) : name, messages);
+            if (!f.face) return nullptr;
+            it = faces_.emplace(font, std::move(f)).first;
+        }
+        if (!it->second.fallback.empty())
+            messages.push_back({it->second.fallback, true, kFontArg});
+        return it->second.face;
     }
 
   private:
@@ -112,8 +116,14 @@ class FontLibrary {
             FcConfigAppFontAddDir(config_, reinterpret_cast<const FcChar8 *>(path.c_str()));
     }
 
+    /// A face found for a font name, and the message when it is only a fallback.
+    struct Face {
+        FT_Face face = nullptr;
+        std::string fallback;
+    };
+
     void clearFaces() {
-        for (auto &[name, f] : faces_) FT_Done_Face(f);
+        for (auto &[name, f] : faces_) FT_Done_Face(f.face);
         faces_.clear();
     }
 
@@ -149,11 +159,12 @@ class FontLibrary {
     }
 
     /// FontCache::find_face_fontconfig.
-    FT_Face findFace(const std::string &font, std::vector<TextMessage> &messages) {
+    Face findFace(const std::string &font, std::vector<TextMessage> &messages) {
         FcPattern *pattern = FcNameParse(reinterpret_cast<const FcChar8 *>(font.c_str()));
         if (!pattern) {
-            messages.push_back({"font '" + font + "' is not a fontconfig pattern; no text", true});
-            return nullptr;
+            messages.push_back(
+                {"font '" + font + "' is not a fontconfig pattern; no text", true, kFontArg});
+            return {};
         }
         FcChar8 *family = nullptr;
         std::string requested;
@@ -170,21 +181,21 @@ class FontLibrary {
         if (!match || FcPatternGetString(match, FC_FILE, 0, &file) != FcResultMatch ||
             FcPatternGetInteger(match, FC_INDEX, 0, &index) != FcResultMatch) {
             if (match) FcPatternDestroy(match);
-            return nullptr;
+            return {};
         }
         FT_Face face = nullptr;
         FT_Error error =
             FT_New_Face(library_, reinterpret_cast<const char *>(file), index, &face);
         FcPatternDestroy(match);
-        if (error) return nullptr;
+        if (error) return {};
 
         // A family that is not installed: OpenSCAD silently takes fontconfig's best match
+        Face found{face, ""};
         if (!requested.empty() && !isGenericFamily(requested) && !familyInstalled(requested))
-            messages.push_back({"font '" + font + "' is not installed; fontconfig's best match, " +
-                                    std::string(face->family_name ? face->family_name : "?") +
-                                    ":style=" + (face->style_name ? face->style_name : "?") +
-                                    ", is used as OpenSCAD 2021.01 uses it",
-                                true});
+            found.fallback = "font '" + font + "' is not installed; fontconfig's best match, " +
+                             std::string(face->family_name ? face->family_name : "?") +
+                             ":style=" + (face->style_name ? face->style_name : "?") +
+                             ", is used as OpenSCAD 2021.01 uses it";
 
         // The Unicode charmap, else the first of OpenSCAD's list of alternatives
         if (FT_Select_Charmap(face, FT_ENCODING_UNICODE) != 0) {
@@ -199,16 +210,16 @@ class FontLibrary {
                 messages.push_back({std::string("Could not select a char map for font ") +
                                         (face->family_name ? face->family_name : "?") + "/" +
                                         (face->style_name ? face->style_name : "?") + "'",
-                                    false});
+                                    false, kFontArg});
         }
-        return face;
+        return found;
     }
 
     FcConfig *config_ = nullptr;
     FT_Library library_ = nullptr;
     bool ok_ = false;
     std::string initError_;
-    std::map<std::string, FT_Face> faces_;
+    std::map<std::string, Face> faces_;
     std::set<std::string> registered_;
 };
 
@@ -283,7 +294,6 @@ class Flattener {
         if (!glyph_.empty()) out.push_back(std::move(glyph_));
         glyph_.clear();
     }
-    size_t points() const { return points_; }
 
     void moveTo(Vec2 to) {
         closeOutline();
@@ -318,7 +328,6 @@ class Flattener {
     void addVertex(Vec2 v) {
         outline_.push_back({size_ * (v.x + offset_.x + advance_.x),
                             size_ * (v.y + offset_.y + advance_.y)});
-        ++points_;
     }
     void closeOutline() {
         if (!outline_.empty()) glyph_.push_back(std::move(outline_));
@@ -330,34 +339,47 @@ class Flattener {
     Vec2 pen_, offset_, advance_;
     Outline outline_;
     std::vector<Outline> glyph_;
-    size_t points_ = 0;
 };
 
 Vec2 scaled(const FT_Vector *v) {
     return {static_cast<double>(v->x) / kFontScale, static_cast<double>(v->y) / kFontScale};
 }
 
-/// FT_Outline_Decompose's callbacks; a non-zero return stops at kMaxTextPoints.
+/// FT_Outline_Decompose's callbacks into a Flattener.
 struct Decomposer {
-    Flattener *f;
     static int moveTo(const FT_Vector *to, void *u) {
-        static_cast<Decomposer *>(u)->f->moveTo(scaled(to));
-        return full(u);
+        static_cast<Flattener *>(u)->moveTo(scaled(to));
+        return 0;
     }
     static int lineTo(const FT_Vector *to, void *u) {
-        static_cast<Decomposer *>(u)->f->lineTo(scaled(to));
-        return full(u);
+        static_cast<Flattener *>(u)->lineTo(scaled(to));
+        return 0;
     }
     static int conicTo(const FT_Vector *c, const FT_Vector *to, void *u) {
-        static_cast<Decomposer *>(u)->f->conicTo(scaled(c), scaled(to));
-        return full(u);
+        static_cast<Flattener *>(u)->conicTo(scaled(c), scaled(to));
+        return 0;
     }
     static int cubicTo(const FT_Vector *c1, const FT_Vector *c2, const FT_Vector *to, void *u) {
-        static_cast<Decomposer *>(u)->f->cubicTo(scaled(c1), scaled(c2), scaled(to));
-        return full(u);
+        static_cast<Flattener *>(u)->cubicTo(scaled(c1), scaled(c2), scaled(to));
+        return 0;
     }
-    static int full(void *u) {
-        return static_cast<Decomposer *>(u)->f->points() > kMaxTextPoints ? 1 : 0;
+};
+
+/// FT_Outline_Decompose's callbacks counting the points a Flattener would make.
+struct PointCounter {
+    long segments;
+    size_t points = 0;
+    static int point(const FT_Vector *, void *u) {
+        ++static_cast<PointCounter *>(u)->points;
+        return 0;
+    }
+    static int conic(const FT_Vector *, const FT_Vector *, void *u) {
+        auto *c = static_cast<PointCounter *>(u);
+        c->points += static_cast<size_t>(c->segments);
+        return 0;
+    }
+    static int cubic(const FT_Vector *, const FT_Vector *, const FT_Vector *, void *u) {
+        return conic(nullptr, nullptr, u);
     }
 };
 
@@ -368,7 +390,7 @@ double xOffset(const std::string &halign, double width, std::vector<TextMessage>
     if (halign != "left")
         messages.push_back({"Unknown value for the halign parameter (use \"left\", \"right\" or "
                             "\"center\"): '" + halign + "'",
-                            false});
+                            false, kHalignArg});
     return 0;
 }
 
@@ -381,7 +403,7 @@ double yOffset(const std::string &valign, double ascend, double descend,
     if (valign != "baseline")
         messages.push_back({"Unknown value for the valign parameter (use \"baseline\", \"bottom\", "
                             "\"top\" or \"center\"): '" + valign + "'",
-                            false});
+                            false, kValignArg});
     return 0;
 }
 
@@ -433,7 +455,7 @@ TextResult renderText(const TextParams &p, const std::vector<std::string> &fontF
     FontLibrary &lib = FontLibrary::instance();
     std::lock_guard<std::mutex> lock(lib.mutex);
     if (!lib.ok()) {
-        r.messages.push_back({lib.initError(), false});
+        r.messages.push_back({lib.initError()});
         return r;
     }
     for (const std::string &f : fontFiles) lib.registerFile(f, r.messages);
@@ -442,7 +464,7 @@ TextResult renderText(const TextParams &p, const std::vector<std::string> &fontF
     r.fontUsed = std::string(face->family_name ? face->family_name : "") + ":style=" +
                  (face->style_name ? face->style_name : "");
     if (FT_Set_Char_Size(face, 0, static_cast<FT_F26Dot6>(kFontScale), 100, 100) != 0) {
-        r.messages.push_back({"Can't set font size for font " + p.font, false});
+        r.messages.push_back({"Can't set font size for font " + p.font, false, kFontArg});
         return r;
     }
 
@@ -463,7 +485,7 @@ TextResult renderText(const TextParams &p, const std::vector<std::string> &fontF
             }
         } else {
             r.messages.push_back(
-                {"Warning: Ignoring text with invalid UTF-8 encoding: \"" + p.text + "\"", false});
+                {"Warning: Ignoring text with invalid UTF-8 encoding: \"" + p.text + "\""});
         }
     } else {
         int len = static_cast<int>(std::strlen(p.text.c_str()));
@@ -486,15 +508,13 @@ TextResult renderText(const TextParams &p, const std::vector<std::string> &fontF
         if (FT_Load_Glyph(face, index, FT_LOAD_DEFAULT) != 0) {
             r.messages.push_back({"Could not load glyph " + std::to_string(index) +
                                       " for char at index " + std::to_string(i) + " in text '" +
-                                      p.text + "'",
-                                  false});
+                                      p.text + "'"});
             continue;
         }
         if (FT_Get_Glyph(face->glyph, &g) != 0) {
             r.messages.push_back({"Could not get glyph " + std::to_string(index) +
                                       " for char at index " + std::to_string(i) + " in text '" +
-                                      p.text + "'",
-                                  false});
+                                      p.text + "'"});
             continue;
         }
         if (g->format != FT_GLYPH_FORMAT_OUTLINE) {
@@ -526,28 +546,38 @@ TextResult renderText(const TextParams &p, const std::vector<std::string> &fontF
     double x0 = xOffset(p.halign, width, r.messages);
     double y0 = yOffset(p.valign, ascend, descend, r.messages);
 
+    // The points the outlines will have, counted first so that a huge $fn is refused
+    FT_Outline_Funcs counting{};
+    counting.move_to = &PointCounter::point;
+    counting.line_to = &PointCounter::point;
+    counting.conic_to = &PointCounter::conic;
+    counting.cubic_to = &PointCounter::cubic;
+    PointCounter counter{p.segments};
+    for (const Glyph &g : glyphs)
+        FT_Outline_Decompose(&reinterpret_cast<FT_OutlineGlyph>(g.glyph)->outline, &counting,
+                             &counter);
+    r.points = counter.points;
+
     // Each glyph's outline, flattened
-    Flattener flat(p.segments, p.size);
-    Decomposer dec{&flat};
-    FT_Outline_Funcs funcs{};
-    funcs.move_to = &Decomposer::moveTo;
-    funcs.line_to = &Decomposer::lineTo;
-    funcs.conic_to = &Decomposer::conicTo;
-    funcs.cubic_to = &Decomposer::cubicTo;
-    for (const Glyph &g : glyphs) {
-        if (r.tooManyPoints) break;
-        flat.startGlyph();
-        flat.setOffset(x0 + hbUnits(g.pos->x_offset), y0 + hbUnits(g.pos->y_offset));
-        FT_Outline outline = reinterpret_cast<FT_OutlineGlyph>(g.glyph)->outline;
-        if (FT_Outline_Decompose(&outline, &funcs, &dec) != 0 && Decomposer::full(&dec))
-            r.tooManyPoints = true;
-        flat.addAdvance(hbUnits(g.pos->x_advance) * p.spacing,
-                        hbUnits(g.pos->y_advance) * p.spacing);
-        flat.finishGlyph(r.glyphs);
+    if (counter.points <= kMaxTextPoints) {
+        Flattener flat(p.segments, p.size);
+        FT_Outline_Funcs funcs{};
+        funcs.move_to = &Decomposer::moveTo;
+        funcs.line_to = &Decomposer::lineTo;
+        funcs.conic_to = &Decomposer::conicTo;
+        funcs.cubic_to = &Decomposer::cubicTo;
+        for (const Glyph &g : glyphs) {
+            flat.startGlyph();
+            flat.setOffset(x0 + hbUnits(g.pos->x_offset), y0 + hbUnits(g.pos->y_offset));
+            FT_Outline_Decompose(&reinterpret_cast<FT_OutlineGlyph>(g.glyph)->outline, &funcs,
+                                 &flat);
+            flat.addAdvance(hbUnits(g.pos->x_advance) * p.spacing,
+                            hbUnits(g.pos->y_advance) * p.spacing);
+            flat.finishGlyph(r.glyphs);
+        }
     }
     for (Glyph &g : glyphs) FT_Done_Glyph(g.glyph);
     hb_font_destroy(font);
-    if (r.tooManyPoints) r.glyphs.clear();
     return r;
 }
 

@@ -45,14 +45,17 @@ struct TextParams {
 struct TextMessage {
     std::string text;
     bool scadrayOnly = false;
+    /// The parameter it is about (kFontArg, kHalignArg, kValignArg), else -1.
+    int arg = -1;
 };
+constexpr int kFontArg = 2, kHalignArg = 6, kValignArg = 7;  ///< text()'s parameter order
 
 /// What rendering one text() gives: one entry of outlines per glyph that has any (each set
 /// filled non-zero, as OpenSCAD marks the glyph polygons sanitized), and the messages.
 struct TextResult {
     std::vector<std::vector<Outline>> glyphs;
     std::vector<TextMessage> messages;
-    bool tooManyPoints = false;  ///< stopped at kMaxTextPoints
+    size_t points = 0;  ///< outline points; above kMaxTextPoints none are made
     std::string fontUsed;        ///< family and style of the face found ("" when none)
 };
 
