@@ -147,4 +147,18 @@ inline void expectSamePolytope(const std::string &src, const std::filesystem::pa
     EXPECT_NEAR(vo, vt, kOffDigits * 10 * std::abs(vt));
 }
 
+/// Point comparisons at OFF's 6 significant digits; Clipper's grid (2^-16 = 1.5e-5) is
+/// coarser, so a point off by one grid step fails where coordinates are below 1.
+constexpr double kOffPointDigits = 6e-6;
+
+/// Every point of `a` has one of `b` within kOffPointDigits (relative above 1).
+inline void expectPointsCovered(const std::vector<Vec3> &a, const std::vector<Vec3> &b,
+                                const char *what) {
+    for (const Vec3 &v : a) {
+        double best = kInfinity;
+        for (const Vec3 &w : b) best = std::min(best, length(v - w));
+        EXPECT_LT(best, kOffPointDigits * std::max(1.0, length(v))) << what << " " << v.toString();
+    }
+}
+
 }  // namespace rt::scad::test
