@@ -9,12 +9,12 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 
 #include "core/ir/diagnostics.h"
 #include "importers/scad/clipper2d.h"
 #include "importers/scad/openscad_support.h"
 #include "importers/scad/text_render.h"
+#include "importers/scad/text_support.h"
 
 namespace rt::scad::test {
 namespace {
@@ -23,9 +23,6 @@ namespace fs = std::filesystem;
 
 /// One step of Clipper's grid, the precision every text outline ends on.
 constexpr double kQuantum = 1.0 / 65536;
-
-/// The installed font the tests copy under another family name.
-const char *kLiberationSans = "/usr/share/fonts/truetype/liberation/LiberationSans-Regular.ttf";
 
 /// The regions OpenSCAD's text node has: the glyph polygons united by Clipper.
 std::vector<Region> regionsOf(const std::string &s, const std::string &font = "") {
@@ -310,27 +307,6 @@ TEST(Text, BadInputWarnsWhereOpenScadIsSilentOrWarns) {
     }
     // A size beyond Clipper's range is a located error (OpenSCAD 2021.01 aborts)
     EXPECT_THROW(importText("text(\"A\", size=1e15);"), EvalError);
-}
-
-/// A copy of Liberation Sans whose family is `family` (ten letters, replacing "Liberation" in
-/// the name table's ASCII and UTF-16 strings), written to `path`.
-bool writeRenamedFont(const std::string &family, const fs::path &path) {
-    std::ifstream in(kLiberationSans, std::ios::binary);
-    if (!in) return false;
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    auto replaceAll = [&](const std::string &from, const std::string &to) {
-        for (size_t at = bytes.find(from); at != std::string::npos; at = bytes.find(from, at))
-            bytes.replace(at, from.size(), to);
-    };
-    auto utf16 = [](const std::string &s) {
-        std::string out;
-        for (char c : s) out += std::string(1, '\0') + c;
-        return out;
-    };
-    replaceAll("Liberation", family);
-    replaceAll(utf16("Liberation"), utf16(family));
-    std::ofstream(path, std::ios::binary) << bytes;
-    return true;
 }
 
 TEST(Text, UsedFontFileIsFound) {
