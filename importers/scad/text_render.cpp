@@ -4,6 +4,9 @@
 // DrawingCallback (outline flattening), so that the points come out as OpenSCAD's do.
 #include "importers/scad/text_render.h"
 
+#include "importers/scad/lexer.h"
+#include "importers/scad/utf8.h"
+
 #include <fontconfig/fontconfig.h>
 #include <ft2build.h>
 #include FT_FREETYPE_H
@@ -234,44 +237,6 @@ bool isWindowsSymbolFont(FT_Face face) {
     return gindex != 0 && charcode >= 0xf000;
 }
 
-/// Decodes strict UTF-8 into code points; false when the text is not valid UTF-8.
-bool decodeUtf8(const std::string &s, std::vector<uint32_t> &out) {
-    for (size_t i = 0; i < s.size();) {
-        unsigned char c = static_cast<unsigned char>(s[i]);
-        int n = c < 0x80 ? 1 : (c >> 5) == 6 ? 2 : (c >> 4) == 14 ? 3 : (c >> 3) == 30 ? 4 : 0;
-        if (n == 0 || i + n > s.size()) return false;
-        uint32_t cp = n == 1 ? c : c & (0x7f >> n);
-        for (int k = 1; k < n; ++k) {
-            unsigned char d = static_cast<unsigned char>(s[i + k]);
-            if ((d & 0xc0) != 0x80) return false;
-            cp = (cp << 6) | (d & 0x3f);
-        }
-        static const uint32_t kMin[] = {0, 0, 0x80, 0x800, 0x10000};
-        if (cp < kMin[n] || cp > 0x10ffff || (cp >= 0xd800 && cp < 0xe000)) return false;
-        out.push_back(cp);
-        i += n;
-    }
-    return true;
-}
-
-void appendUtf8(uint32_t cp, std::string &out) {
-    if (cp < 0x80) {
-        out += static_cast<char>(cp);
-    } else if (cp < 0x800) {
-        out += static_cast<char>(0xc0 | (cp >> 6));
-        out += static_cast<char>(0x80 | (cp & 0x3f));
-    } else if (cp < 0x10000) {
-        out += static_cast<char>(0xe0 | (cp >> 12));
-        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3f));
-        out += static_cast<char>(0x80 | (cp & 0x3f));
-    } else {
-        out += static_cast<char>(0xf0 | (cp >> 18));
-        out += static_cast<char>(0x80 | ((cp >> 12) & 0x3f));
-        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3f));
-        out += static_cast<char>(0x80 | (cp & 0x3f));
-    }
-}
-
 /// FreetypeRenderer::is_ignored_script.
 bool isIgnoredScript(hb_script_t s) {
     return s == HB_SCRIPT_COMMON || s == HB_SCRIPT_INHERITED || s == HB_SCRIPT_UNKNOWN ||
@@ -475,11 +440,12 @@ TextResult renderText(const TextParams &p, const std::vector<std::string> &fontF
     hb_buffer_set_script(buf.b, hb_script_from_string(p.script.c_str(), -1));
     hb_buffer_set_language(buf.b, hb_language_from_string(p.language.c_str(), -1));
     if (isWindowsSymbolFont(face)) {
-        std::vector<uint32_t> cps;
-        if (decodeUtf8(p.text, cps)) {
-            for (uint32_t c : cps) {
+        std::vector<long> cps;
+        for (const std::string &ch : utf8Chars(p.text)) cps.push_back(utf8Decode(ch));
+        if (std::find(cps.begin(), cps.end(), -1) == cps.end()) {
+            for (long c : cps) {
                 std::string one;
-                appendUtf8(c < 0x100 ? 0xf000 + c : c, one);
+                appendUtf8(one, static_cast<unsigned>(c < 0x100 ? 0xf000 + c : c));
                 hb_buffer_add_utf8(buf.b, one.c_str(), static_cast<int>(one.size()), 0,
                                    static_cast<int>(one.size()));
             }

@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <filesystem>
 
 #include "core/ir/facets.h"
@@ -22,20 +21,6 @@ struct Case {
     bool allPoints = false;  ///< compare 3D points (revolved, twisted), else the (x, y) plane
     bool warns = false;      ///< scadray warns (OpenSCAD is silent)
 };
-
-/// Distinct points (on the plane z = 0 unless `allPoints`).
-std::vector<Vec3> distinct(std::vector<Vec3> v, bool allPoints) {
-    if (!allPoints)
-        for (Vec3 &p : v) p.z = 0;
-    auto less = [](const Vec3 &a, const Vec3 &b) {
-        return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
-    };
-    std::sort(v.begin(), v.end(), less);
-    v.erase(std::unique(v.begin(), v.end(),
-                        [&less](const Vec3 &a, const Vec3 &b) { return !less(a, b) && !less(b, a); }),
-            v.end());
-    return v;
-}
 
 class TextCrossCheck : public ::testing::TestWithParam<Case> {};
 
@@ -54,8 +39,8 @@ TEST_P(TextCrossCheck, PointsMatchOpenScad) {
 
     EXPECT_EQ(ours.warnings().empty(), !c.warns) << (c.warns ? "" : ours.warnings().front());
     ir::applyFacets(ours.scene, ir::FacetMode::OpenScad, ours.diag);
-    std::vector<Vec3> mine = distinct(worldPoints(ours.scene), c.allPoints);
-    std::vector<Vec3> ref = distinct(theirs.positions, c.allPoints);
+    std::vector<Vec3> mine = distinctPoints(worldPoints(ours.scene), !c.allPoints);
+    std::vector<Vec3> ref = distinctPoints(theirs.positions, !c.allPoints);
     EXPECT_EQ(mine.size(), ref.size());
     expectPointsCovered(mine, ref, "our point missing from OpenSCAD's:");
     expectPointsCovered(ref, mine, "OpenSCAD's point missing from ours:");
