@@ -51,6 +51,9 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         // Outlines with holes, curve segments from $fa/$fs and from $fn
         Case{"linear_extrude(1) text(\"O\");"}, Case{"linear_extrude(1) text(\"B8\", size=4, $fn=40);"},
+        // $fn beyond int, and $fa = $fs = 0: 2 points a curve (x86's conversion of the count)
+        Case{"linear_extrude(1) text(\"Se\", $fn=1e10);"},
+        Case{"linear_extrude(1) text(\"Se\", $fa=0, $fs=0);"},
         // Alignment and spacing
         Case{"linear_extrude(1) text(\"Hello, World!\", halign=\"center\", valign=\"center\");"},
         Case{"linear_extrude(1) text(\"gyp\", valign=\"top\", halign=\"right\", spacing=1.3);"},
@@ -75,7 +78,9 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"linear_extrude(1) mirror([1, 0]) text(\"R\");"},
         Case{"linear_extrude(1) offset(delta=0.25) union() { text(\"U\"); square(3); }"},
         Case{"linear_extrude(1) offset(r=0.4, $fn=8) text(\"rs\");"},
+        Case{"linear_extrude(2) hull() text(\"ab\", size=6);"},
         Case{"rotate_extrude($fn=12) translate([12, 0]) text(\"S\", size=5);", true},
+        Case{"linear_extrude(height=4, scale=0.5) text(\"sc\", size=7);", true},
         Case{"linear_extrude(height=3, twist=30, slices=3) text(\"Tw\", size=5);", true}));
 
 }  // namespace
