@@ -165,8 +165,10 @@ class FontLibrary {
     Face findFace(const std::string &font, std::vector<TextMessage> &messages) {
         FcPattern *pattern = FcNameParse(reinterpret_cast<const FcChar8 *>(font.c_str()));
         if (!pattern) {
-            messages.push_back(
-                {"font '" + font + "' is not a fontconfig pattern; no text", true, kFontArg});
+            messages.push_back({"font '" + font +
+                                    "' is not a fontconfig pattern (OpenSCAD 2021.01 crashes "
+                                    "on it); no text",
+                                true, kFontArg});
             return {};
         }
         FcChar8 *family = nullptr;

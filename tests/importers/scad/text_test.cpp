@@ -279,6 +279,9 @@ TEST(Text, BadInputWarnsWhereOpenScadIsSilentOrWarns) {
                              "match, "));
     EXPECT_EQ(r.warning("No Such Font").loc.col, 29);
     EXPECT_FALSE(primitives(*r.scene.root).empty());
+    r = importText("text(\"A\", font=\":size=abc\");");
+    EXPECT_TRUE(r.hasWarning("text(): font ':size=abc' is not a fontconfig pattern"));
+    EXPECT_TRUE(primitives(*r.scene.root).empty());
     r = importText("linear_extrude(1) text(\"A\", font=\"sans-serif\"); "
                    "linear_extrude(1) text(\"A\", font=\"Liberation Serif:style=Bold\");");
     EXPECT_TRUE(r.warnings().empty()) << r.warnings().front();
