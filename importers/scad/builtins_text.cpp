@@ -109,15 +109,9 @@ ir::NodePtr Evaluator::moduleText(const ModuleInstantiation &inst, const FramePt
     std::vector<clipper2d::PolygonSet> glyphs;
     for (auto &outlines : r.glyphs) glyphs.push_back({std::move(outlines), true});
     if (glyphs.empty()) return empty;
-    clipper2d::PolygonSet united =
-        withClipper(inst.loc, [&] { return clipper2d::apply(glyphs, clipper2d::BoolOp::Union); });
-    if (united.empty()) return empty;
-    Shape2d s;
-    s.kind = Shape2dKind::Polygon;
-    s.outlines = std::move(united.outlines);
-    s.evaluated = true;
-    s.sanitized = true;
-    return shape2dNode(std::move(s), inst);
+    return polygonSetNode(
+        withClipper(inst.loc, [&] { return clipper2d::apply(glyphs, clipper2d::BoolOp::Union); }),
+        inst);
 }
 
 }  // namespace rt::scad
