@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // text(): OpenSCAD 2021.01's TextModule (text.cc) and GeometryEvaluator's TextNode visit: the
 // glyph polygons of text_render.h united by Clipper into one evaluated polygon set.
+#include <cctype>
 #include <climits>
 #include <cmath>
 
@@ -83,7 +84,16 @@ ir::NodePtr Evaluator::moduleText(const ModuleInstantiation &inst, const FramePt
         return v && v->isNumber() ? v->toNumber() : 0.0;
     };
     p.segments = textSegments(p.size, special("$fn"), special("$fs"), special("$fa"));
+    std::string direction = p.direction;
     text::detectProperties(p);
+    // HarfBuzz reads a direction by its first letter, and OpenSCAD silently takes the script's
+    // direction for one it cannot read
+    std::string lower = direction;
+    for (char &c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (!direction.empty() && lower != "ltr" && lower != "rtl" && lower != "ttb" && lower != "btt")
+        warn(a.loc(3), "text(): direction = \"" + direction +
+                           "\" is not \"ltr\", \"rtl\", \"ttb\" or \"btt\"; OpenSCAD 2021.01 lays "
+                           "the text out " + p.direction);
 
     ir::NodePtr empty = newNode(ir::NodeKind::Group, inst.loc);
     if (p.text.empty()) return empty;

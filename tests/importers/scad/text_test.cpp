@@ -239,6 +239,15 @@ TEST(Text, BadInputWarnsWhereOpenScadIsSilentOrWarns) {
     r = importText("linear_extrude(1) text(\"A\", valign=3, halign=true);");
     EXPECT_TRUE(r.hasWarning("valign = 3 is not a string; OpenSCAD 2021.01 uses \"baseline\""));
     EXPECT_TRUE(r.hasWarning("halign = true is not a string; OpenSCAD 2021.01 uses \"left\""));
+    // A direction HarfBuzz reads by its first letter, or not at all
+    r = importText("linear_extrude(1) text(\"A\", direction=\"rubbish\");");
+    EXPECT_EQ(r.warnings(), (std::vector<std::string>{
+                                "text(): direction = \"rubbish\" is not \"ltr\", \"rtl\", \"ttb\" or "
+                                "\"btt\"; OpenSCAD 2021.01 lays the text out rtl"}));
+    r = importText("linear_extrude(1) text(\"A\", direction=\"foo\");");
+    EXPECT_TRUE(r.hasWarning("OpenSCAD 2021.01 lays the text out ltr"));
+    r = importText("linear_extrude(1) text(\"A\", direction=\"TTB\");");
+    EXPECT_TRUE(r.warnings().empty()) << r.warnings().front();
     // undef is the default without a word
     r = importText("linear_extrude(1) text(\"A\", size=undef, font=undef);");
     EXPECT_TRUE(r.warnings().empty()) << r.warnings().front();
