@@ -10,6 +10,7 @@ packages=(
     libopenimageio-dev libpng-dev libcli11-dev
     libgtest-dev libgmock-dev libbenchmark-dev
     libtinygltf-dev libpolyclipping-dev libxml2-dev
+    libfreetype-dev libharfbuzz-dev libfontconfig-dev fonts-liberation
     povray openscad
     openscad-mcad
     clang libclang-rt-14-dev

@@ -187,6 +187,9 @@ ir::Scene Evaluator::evaluate(const SourceFile &main, SourceLoader &loader) {
     mainFile_.src = &main;
     linkUses(mainFile_);
 
+    // Fonts registered by use<x.ttf> (at parse time) serve text() while evaluating
+    scene_.fontFiles = loader.fontFiles();
+
     FramePtr top = makeFrame(builtinFrame_);
     top->defs = &main.top;
     top->file = &mainFile_;
@@ -207,7 +210,6 @@ ir::Scene Evaluator::evaluate(const SourceFile &main, SourceLoader &loader) {
 
     checkNodeDepth(*scene_.root);
     if (!scene_.camera) cameraFromViewportVariables(main);
-    scene_.fontFiles = loader.fontFiles();
     return std::move(scene_);
 }
 

@@ -44,8 +44,8 @@ void expectSamePoints(const std::string &src, bool flatten) {
         for (Vec3 &v : mine) v.z = 0;
         for (Vec3 &v : ref) v.z = 0;
     }
-    expectCoveredWithin(mine, ref, kDigits, "our point missing from OpenSCAD's:");
-    expectCoveredWithin(ref, mine, kDigits, "OpenSCAD's point missing from ours:");
+    expectCovered(mine, ref, "our point missing from OpenSCAD's:", kDigits);
+    expectCovered(ref, mine, "OpenSCAD's point missing from ours:", kDigits);
 }
 
 class DxfCrossCheck : public ::testing::TestWithParam<const char *> {};
@@ -115,9 +115,8 @@ void expectSameSurface(const std::string &src, bool warns = false) {
     Vec3 bottomCentre((b.min.x + b.max.x) / 2, (b.min.y + b.max.y) / 2, b.min.z);
     for (const Vec3 &v : mesh.positions)
         if (v != bottomCentre) mine.push_back(v);
-    expectCoveredWithin(mine, theirs.positions, 2e-5, "our point missing from OpenSCAD's:");
-    expectCoveredWithin(theirs.positions, mesh.positions, 2e-5,
-                        "OpenSCAD's point missing from ours:");
+    expectCovered(mine, theirs.positions, "our point missing from OpenSCAD's:", 2e-5);
+    expectCovered(theirs.positions, mesh.positions, "OpenSCAD's point missing from ours:", 2e-5);
     double v = meshVolume(theirs);
     EXPECT_NEAR(meshio::signedVolume(mesh), v, 1e-4 * std::max(1.0, std::fabs(v)));
 }

@@ -17,10 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// OFF's 6 significant digits; Clipper's grid (2^-16 = 1.5e-5) is coarser, so a point off
-/// by one grid step fails where coordinates are below 1.
-constexpr double kDigits = 6e-6;
-
 struct Case {
     const char *src;
     bool allPoints;  ///< compare 3D points (mesh sweeps), else the points' (x, y)
@@ -47,8 +43,8 @@ TEST_P(OffsetCrossCheck, PointsMatchOpenScad) {
         for (Vec3 &v : mine) v.z = 0;
         for (Vec3 &v : ref) v.z = 0;
     }
-    expectCoveredWithin(mine, ref, kDigits, "our point missing from OpenSCAD's:");
-    expectCoveredWithin(ref, mine, kDigits, "OpenSCAD's point missing from ours:");
+    expectPointsCovered(mine, ref, "our point missing from OpenSCAD's:");
+    expectPointsCovered(ref, mine, "OpenSCAD's point missing from ours:");
 }
 
 

@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -47,13 +48,13 @@ inline double polytopeVolume(const std::vector<Vec3> &verts,
     return v / 6;
 }
 
-/// Every point of `a` has one of `b` within OFF's rounding.
+/// Every point of `a` has one of `b` within OFF's rounding (`digits`, relative above 1).
 inline void expectCovered(const std::vector<Vec3> &a, const std::vector<Vec3> &b,
-                          const char *what) {
+                          const char *what, double digits = kOffDigits) {
     for (const Vec3 &v : a) {
         double best = kInfinity;
         for (const Vec3 &w : b) best = std::min(best, length(v - w));
-        EXPECT_LT(best, kOffDigits * std::max(1.0, length(v))) << what << " " << v.toString();
+        EXPECT_LT(best, digits * std::max(1.0, length(v))) << what << " " << v.toString();
     }
 }
 
@@ -78,16 +79,6 @@ inline std::vector<Vec3> worldPoints(const ir::Scene &scene) {
         for (const Vec3 &v : local) out.push_back(p.worldFromObject.transformPoint(v));
     }
     return out;
-}
-
-/// Every point of `a` has one of `b` within `digits` (relative, at least absolute).
-inline void expectCoveredWithin(const std::vector<Vec3> &a, const std::vector<Vec3> &b,
-                                double digits, const char *what) {
-    for (const Vec3 &v : a) {
-        double best = kInfinity;
-        for (const Vec3 &w : b) best = std::min(best, length(v - w));
-        EXPECT_LT(best, digits * std::max(1.0, length(v))) << what << " " << v.toString();
-    }
 }
 
 /// OpenSCAD's OFF export of `src`, written through files in `dir` (a failed run fails the
@@ -155,6 +146,30 @@ inline void expectSamePolytope(const std::string &src, const std::filesystem::pa
     }
     double vo = polytopeVolume(world, placed.faces), vt = meshVolume(theirs);
     EXPECT_NEAR(vo, vt, kOffDigits * 10 * std::abs(vt));
+}
+
+/// Point comparisons at OFF's 6 significant digits; Clipper's grid (2^-16 = 1.5e-5) is
+/// coarser, so a point off by one grid step fails where coordinates are below 1.
+constexpr double kOffPointDigits = 6e-6;
+
+/// Every point of `a` has one of `b` within kOffPointDigits (relative above 1).
+inline void expectPointsCovered(const std::vector<Vec3> &a, const std::vector<Vec3> &b,
+                                const char *what) {
+    expectCovered(a, b, what, kOffPointDigits);
+}
+
+/// The distinct points, projected on the plane z = 0 first when `flatten`, sorted.
+inline std::vector<Vec3> distinctPoints(std::vector<Vec3> v, bool flatten) {
+    if (flatten)
+        for (Vec3 &p : v) p.z = 0;
+    auto less = [](const Vec3 &a, const Vec3 &b) {
+        return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
+    };
+    std::sort(v.begin(), v.end(), less);
+    v.erase(std::unique(v.begin(), v.end(),
+                        [&less](const Vec3 &a, const Vec3 &b) { return !less(a, b) && !less(b, a); }),
+            v.end());
+    return v;
 }
 
 }  // namespace rt::scad::test
