@@ -2,6 +2,7 @@
 #include "importers/scad/projection.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -230,12 +231,33 @@ void boundaryParts(const ir::Node &tree, const Mat4 &rootFromTree, const ir::Sce
     std::vector<Leaf> leaves;
     collectLeaves(tree, rootFromTree, scene, leaves);
     std::unordered_map<const ir::Node *, PolygonSet> sets;
-    for (const Leaf &p : leaves)
-        for (const auto &face : p.mesh.faces) {
+    for (const Leaf &p : leaves) {
+        // The primitive's faces by plane (a prism's cap is many triangles in one plane): each
+        // plane is evaluated once, for the union of its faces
+        double extent = std::max(length(p.bounds.diagonal()), 1e-300);
+        std::map<std::array<long long, 4>, std::vector<size_t>> planes;
+        for (size_t f = 0; f < p.mesh.faces.size(); ++f) {
+            const auto &face = p.mesh.faces[f];
+            Vec3 n = faceNormal(p.mesh.vertices, face);
+            if (!(length(n) > 0)) continue;
+            n = normalize(n);
+            double d = dot(n, p.mesh.vertices[face[0]]) / extent;
+            constexpr double q = 1099511627776.0;  // 2^40: equal up to rounding
+            planes[{std::llround(n.x * q), std::llround(n.y * q), std::llround(n.z * q),
+                    std::llround(d * q)}]
+                .push_back(f);
+        }
+        for (const auto &[key, faces] : planes) {
+            const auto &face = p.mesh.faces[faces[0]];
             auto frame = frameOf(p.mesh, face);
             if (!frame) continue;
-            PolygonSet mapped;
-            if (!mappedFace(p.mesh, face, *frame, mapped)) continue;
+            std::vector<PolygonSet> pieces;
+            for (size_t f : faces) {
+                PolygonSet one;
+                if (mappedFace(p.mesh, p.mesh.faces[f], *frame, one)) pieces.push_back(std::move(one));
+            }
+            if (pieces.empty()) continue;
+            PolygonSet mapped = pieces.size() == 1 ? pieces[0] : clipper2d::apply(pieces, BoolOp::Union);
             Vec3 n = faceNormal(p.mesh.vertices, face);
             Plane pl{n, 0};
             for (int i : face) pl.offset += dot(n, p.mesh.vertices[i]);
@@ -250,6 +272,7 @@ void boundaryParts(const ir::Node &tree, const Mat4 &rootFromTree, const ir::Sce
             if (!with.empty()) visit(*frame, clipper2d::apply({with, without}, BoolOp::Difference));
             if (!without.empty()) visit(*frame, clipper2d::apply({without, with}, BoolOp::Difference));
         }
+    }
 }
 
 /// The shadow of a difference or intersection subtree: the parts of its primitives' faces on
