@@ -304,7 +304,9 @@ TEST(AdaptiveRender, NoiseModeRefinesEveryPixelFromFourSamplesWithUniformSamplin
     EXPECT_EQ(a.samples, a.pixelsBySamples[1] * 4 + a.pixelsBySamples[2] * 16);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
-            if (a.pixelLevels[size_t(y) * w + x] == 2) EXPECT_TRUE(a.image.at(x, y) == sixteen.image.at(x, y));
+            if (a.pixelLevels[size_t(y) * w + x] == 2) {
+                EXPECT_TRUE(a.image.at(x, y) == sixteen.image.at(x, y));
+            }
     EXPECT_EQ(describeSampling(a).rfind("adaptive, pixels by samples: 4: ", 0), 0u) << describeSampling(a);
     // The same picture for any thread count and tile size
     for (auto [threads, tile] : {std::pair{1, 16}, std::pair{3, 5}}) {
