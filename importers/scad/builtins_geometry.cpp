@@ -480,6 +480,8 @@ const std::unordered_map<Symbol, Evaluator::ModuleHandler, SymbolHash>
         add("assign", &Evaluator::moduleAssign);
         add("polyhedron", &Evaluator::modulePolyhedron);
         add("import", &Evaluator::moduleImport);
+        for (const char *name : {"import_stl", "import_off", "import_dxf"})
+            add(name, &Evaluator::moduleImportDeprecated);
         add("square", &Evaluator::moduleSquare);
         add("circle", &Evaluator::moduleCircle);
         add("polygon", &Evaluator::modulePolygon);

@@ -175,6 +175,13 @@ ir::NodePtr Evaluator::modulePolyhedron(const ModuleInstantiation &inst, const F
     return primitive(ir::MeshPrim{index}, inst, f);
 }
 
+ir::NodePtr Evaluator::moduleImportDeprecated(const ModuleInstantiation &inst, const FramePtr &f) {
+    deprecated(inst.loc, "The " + inst.name.str() +
+                             "() module will be removed in future releases. Use import() instead.",
+               false);
+    return moduleImport(inst, f);
+}
+
 std::string Evaluator::resolveImportPath(const std::string &name, const SourceLoc &loc) {
     fs::path p(name);
     if (p.is_absolute()) return p.lexically_normal().string();

@@ -352,6 +352,8 @@ class Evaluator {
     // Mesh modules (builtins_mesh.cpp)
     ir::NodePtr modulePolyhedron(const ModuleInstantiation &inst, const FramePtr &f);
     ir::NodePtr moduleImport(const ModuleInstantiation &inst, const FramePtr &f);
+    /// import_stl(), import_off(), import_dxf(): 2021.01's deprecated spellings of import().
+    ir::NodePtr moduleImportDeprecated(const ModuleInstantiation &inst, const FramePtr &f);
     /// The file an import() names: relative to the folder of the file holding the call, else
     /// (deprecated, with OpenSCAD's warning) relative to the main file's folder.
     std::string resolveImportPath(const std::string &name, const SourceLoc &loc);

@@ -237,6 +237,26 @@ TEST(Import, DeprecatedSpellingsAndDocumentRootFallback) {
     EXPECT_EQ(r.warnings().size(), 3u);
 }
 
+TEST(Import, OldModuleNamesImportWithOpenScadsDeprecation) {
+    // 2021.01 still reads import_stl(), import_off() and import_dxf(), with a warning each
+    std::string dir = testDir();
+    writeFile(dir + "/a.stl", binaryStl(boxTriangles({0, 0, 0}, {1, 1, 1}), "x"));
+    writeFile(dir + "/b.off", kUnitCubeOff);
+    writeFile(dir + "/c.dxf", "0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\n0\n90\n3\n70\n1\n"
+                              "10\n0\n20\n0\n10\n2\n20\n0\n10\n0\n20\n2\n0\nENDSEC\n0\nEOF\n");
+    std::string main = writeFile(dir + "/main.scad",
+                                 "import_stl(\"a.stl\");\nimport_off(\"b.off\");\n"
+                                 "linear_extrude(1) import_dxf(\"c.dxf\");\n");
+    Imported r = importFile(main);
+    EXPECT_EQ(r.scene.root->primitiveCount(), 3u);
+    for (const char *name : {"import_stl", "import_off", "import_dxf"})
+        EXPECT_TRUE(r.hasWarning(std::string("DEPRECATED: The ") + name +
+                                 "() module will be removed in future releases. Use import() "
+                                 "instead."))
+            << name;
+    EXPECT_EQ(r.warnings().size(), 3u) << r.warnings().at(0);
+}
+
 TEST(Import, OpenMeshesWarnAndBackgroundImportsAreNotRead) {
     std::string dir = testDir();
     auto tris = boxTriangles({0, 0, 0}, {1, 1, 1});
