@@ -49,6 +49,13 @@ std::array<double, 3> resizeScale(const double newsize[3], const bool autosize[3
 
 }  // namespace
 
+void Evaluator::chargeGeometryWork(const SourceLoc &loc, const std::string &what, int64_t units) {
+    geometryWork_ += units;
+    if (limits_.maxGeometryWork > 0 && geometryWork_ > limits_.maxGeometryWork)
+        throw EvalError(loc, what + ": more geometry work than the evaluation's limit of " +
+                                 std::to_string(limits_.maxGeometryWork) + " allows");
+}
+
 ir::NodePtr Evaluator::moduleResize(const ModuleInstantiation &inst, const FramePtr &f) {
     FramePtr dollars = makeFrame(nullptr);
     BoundArgs a = bindBuiltin(inst, {"newsize", "auto", "convexity"}, f, dollars.get());
@@ -160,6 +167,8 @@ ir::NodePtr Evaluator::moduleMinkowski(const ModuleInstantiation &inst, const Fr
             Part p;
             p.solid = &n;
             p.placement = m;
+            size_t faces = projectionFaces(n, scene_);
+            chargeGeometryWork(inst.loc, "minkowski()", static_cast<int64_t>(faces * faces));
             p.pieces = withClipper(n.loc, [&] { return solidBoundary(n, m, scene_); });
             if (!p.pieces.empty()) solids.push_back(std::move(p));
         });
@@ -179,6 +188,7 @@ ir::NodePtr Evaluator::moduleMinkowski(const ModuleInstantiation &inst, const Fr
                                std::to_string(ir::kMaxHullPoints) + " a hull may have; left out");
             return false;
         }
+        chargeGeometryWork(inst.loc, "minkowski()", static_cast<int64_t>(p.size() * q.size()));
         std::vector<Vec3> pts;
         pts.reserve(p.size() * q.size());
         for (const Vec3 &a : p)
@@ -266,6 +276,8 @@ ir::NodePtr Evaluator::moduleProjection(const ModuleInstantiation &inst, const F
         warn(inst.loc, "projection(): its 2D children are ignored, as in OpenSCAD, which "
                        "projects 3D geometry only");
     if (!(contentsOf(*children) & 2)) return newNode(ir::NodeKind::Group, inst.loc);
+    size_t faces = projectionFaces(*children, scene_);
+    chargeGeometryWork(inst.loc, "projection()", static_cast<int64_t>(cut ? faces : faces * faces));
     clipper2d::PolygonSet result = withClipper(inst.loc, [&] {
         return cut ? projectCut(*children, scene_) : projectShadow(*children, scene_);
     });

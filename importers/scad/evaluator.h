@@ -42,6 +42,11 @@ struct EvalLimits {
     int maxValueDepth = 100000;
     size_t maxStringLength = 64u << 20;      ///< bytes in one string value
     size_t stackReserveBytes = 1u << 20;     ///< stack kept free below the deepest frame
+    /// Work of the geometry operations on evaluated children (points summed by minkowski(),
+    /// faces times faces examined by projection()), over the whole evaluation; 0 = no cap.
+    /// Realistic models finish in seconds without one; the fuzz target sets it so that no
+    /// input runs long under the sanitizers.
+    int64_t maxGeometryWork = 0;
 };
 
 /// A file taking part in evaluation: the main file or a used library.
@@ -461,6 +466,9 @@ class Evaluator {
     int64_t stepCap_;  ///< limits_.maxSteps, or the largest count when there is no cap
     std::function<void(int64_t)> progress_;
     int64_t nodes_ = 0;
+    int64_t geometryWork_ = 0;
+    /// Adds `units` to the geometry work; beyond EvalLimits::maxGeometryWork a located error.
+    void chargeGeometryWork(const SourceLoc &loc, const std::string &what, int64_t units);
     uint64_t randomCounter_ = 0;
     const char *stackLow_ = nullptr;
 };

@@ -367,6 +367,13 @@ std::vector<std::vector<std::pair<int, int>>> convexPieces(const std::vector<ir:
 
 }  // namespace
 
+size_t projectionFaces(const ir::Node &root, const ir::Scene &scene) {
+    if (root.kind == ir::NodeKind::Primitive) return ir::openscadPolyhedron(root, scene).faces.size();
+    size_t n = 0;
+    for (const auto &c : root.children) n += projectionFaces(*c, scene);
+    return n;
+}
+
 clipper2d::PolygonSet projectCut(const ir::Node &root, const ir::Scene &scene) {
     std::vector<Leaf> leaves;
     collectLeaves(root, Mat4(), scene, leaves);

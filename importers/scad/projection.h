@@ -30,6 +30,10 @@ clipper2d::PolygonSet projectCut(const ir::Node &root, const ir::Scene &scene);
 /// in general position; faces of different primitives in one plane count as touching.
 clipper2d::PolygonSet projectShadow(const ir::Node &root, const ir::Scene &scene);
 
+/// The faces of the tree's primitives as OpenSCAD tessellates them (the measure of a
+/// projection's work: a shadow examines each face against every primitive's faces).
+size_t projectionFaces(const ir::Node &root, const ir::Scene &scene);
+
 /// Convex polygons (root coordinates, the node placed by rootFromNode) that lie in the solid
 /// `node` and cover its boundary, for minkowski(): every face of its primitives (a face inside
 /// a union is still inside the solid), or for a difference or an intersection the parts of its

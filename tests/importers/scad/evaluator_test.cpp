@@ -214,6 +214,29 @@ TEST(Recursion, RunawayTailLoopHitsTheStepBudget) {
     EXPECT_NO_THROW(evaluateWithLimits("for (i = [0:99], j = [0:99]) echo();", limits));
 }
 
+TEST(Limits, GeometryWorkCapStopsBigProjectionsAndMinkowskiSums) {
+    // Off by default; the fuzz target sets it. A sphere of 50 x 25 fragments has 1,226 faces: its
+    // shadow, or the boundary of a difference cut from it, examines 1.5 M face pairs
+    EvalLimits limits;
+    limits.maxGeometryWork = 100'000;
+    const char *shadow = "linear_extrude(1)\n projection() sphere(5, $fn=50);";
+    try {
+        evaluateWithLimits(shadow, limits);
+        FAIL() << "expected EvalError";
+    } catch (const EvalError &e) {
+        EXPECT_NE(std::string(e.what()).find("projection(): more geometry work than the "
+                                             "evaluation's limit of 100000 allows"),
+                  std::string::npos)
+            << e.what();
+        EXPECT_EQ(e.loc().toString(), "limits.scad:2:2");
+    }
+    EXPECT_THROW(evaluateWithLimits(
+                     "minkowski() { difference() { sphere(5, $fn=50); cube(1); } cube(1); }", limits),
+                 EvalError);
+    EXPECT_NO_THROW(evaluateWithLimits("linear_extrude(1) projection() sphere(5, $fn=8);", limits));
+    EXPECT_NO_THROW(evaluateWithLimits(shadow, EvalLimits{}));
+}
+
 TEST(Limits, StepCapComesFromTheImportOptionsAndZeroMeansNone) {
     const std::string src = "x = [for (i = [0:199999]) i];\necho(len(x));";
     ImportOptions opts;
