@@ -21,6 +21,18 @@ struct SurfaceInteraction {
     /// Texture coordinates (glTF convention, origin top-left) when the surface has them
     double u = 0, v = 0;
     bool hasUv = false;
+    /// Second texture coordinate set (glTF TEXCOORD_1), when the mesh has one
+    double u1 = 0, v1 = 0;
+    bool hasUv1 = false;
+    /// World-space tangent along +u (not normalised) and the bitangent's handedness: the
+    /// bitangent is cross(ns, tangent) * tangentSign (glTF TANGENT), when the mesh has tangents
+    Vec3 tangent;
+    double tangentSign = 1;
+    bool hasTangent = false;
+    /// Interpolated vertex colour (linear RGBA), multiplying the base colour, when the mesh has
+    /// one (glTF COLOR_0)
+    float vertexColor[4] = {1, 1, 1, 1};
+    bool hasVertexColor = false;
     const LeafShape *leaf = nullptr;           ///< primitive or mesh whose surface was hit
     const Shape *object = nullptr;             ///< top-level object (owner of the interior)
     /// Another surface lies within the tie tolerance of this hit (coincident faces, or a

@@ -107,6 +107,8 @@ class Placement {
     Vec3 normalToWorld(const Vec3 &n) const {
         return normalize(identity_ ? n : worldFromObject_.normal(n));
     }
+    /// World direction of an object-space tangent vector (not normalised).
+    Vec3 vectorToWorld(const Vec3 &v) const { return identity_ ? v : worldFromObject_.vector(v); }
     /// Sets the world hit point, its error bound and the unit geometric normal of `si` from
     /// an object-space surface point.
     void surfaceToWorld(const ObjectSurface &os, SurfaceInteraction &si) const;

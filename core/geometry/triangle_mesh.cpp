@@ -153,8 +153,8 @@ void TriangleMesh::allHits(const Ray &r, std::vector<Hit> &out) const {
     });
 }
 
-ObjectSurface TriangleMesh::surface(const Hit &hit, Vec3 *shadingNormal, double *u, double *v,
-                                    bool *hasUv) const {
+ObjectSurface TriangleMesh::surface(const Hit &hit, Vec3 *shadingNormal,
+                                    SurfaceInteraction *si) const {
     const auto &idx = mesh_->triangles[hit.triangle];
     const Vec3 &p0 = mesh_->positions[idx[0]], &p1 = mesh_->positions[idx[1]],
                &p2 = mesh_->positions[idx[2]];
@@ -169,12 +169,31 @@ ObjectSurface TriangleMesh::surface(const Hit &hit, Vec3 *shadingNormal, double 
         Vec3 ns = n[idx[0]] * hit.b0 + n[idx[1]] * hit.b1 + n[idx[2]] * hit.b2;
         if (lengthSquared(ns) > 0) *shadingNormal = ns;
     }
-    *hasUv = !mesh_->uvs.empty();
-    if (*hasUv) {
-        const auto &t = mesh_->uvs;
-        *u = t[idx[0]][0] * hit.b0 + t[idx[1]][0] * hit.b1 + t[idx[2]][0] * hit.b2;
-        *v = t[idx[0]][1] * hit.b0 + t[idx[1]][1] * hit.b1 + t[idx[2]][1] * hit.b2;
+    // Component c of a per-vertex attribute at the hit
+    auto lerp = [&](const auto &values, int c) {
+        return double(values[idx[0]][c]) * hit.b0 + double(values[idx[1]][c]) * hit.b1 +
+               double(values[idx[2]][c]) * hit.b2;
+    };
+    si->hasUv = !mesh_->uvs.empty();
+    if (si->hasUv) {
+        si->u = lerp(mesh_->uvs, 0);
+        si->v = lerp(mesh_->uvs, 1);
     }
+    si->hasUv1 = !mesh_->uvs1.empty();
+    if (si->hasUv1) {
+        si->u1 = lerp(mesh_->uvs1, 0);
+        si->v1 = lerp(mesh_->uvs1, 1);
+    }
+    si->hasTangent = !mesh_->tangents.empty();
+    if (si->hasTangent) {
+        // Object space here; MeshInstance::surfaceAt moves it to the world. The sign is the
+        // first vertex's: glTF requires it constant over a triangle
+        si->tangent = {lerp(mesh_->tangents, 0), lerp(mesh_->tangents, 1), lerp(mesh_->tangents, 2)};
+        si->tangentSign = mesh_->tangents[idx[0]][3] < 0 ? -1 : 1;
+    }
+    si->hasVertexColor = !mesh_->colors.empty();
+    if (si->hasVertexColor)
+        for (int c = 0; c < 4; ++c) si->vertexColor[c] = float(lerp(mesh_->colors, c));
     return s;
 }
 
@@ -247,11 +266,12 @@ SurfaceInteraction MeshInstance::surfaceAt(const Ray &worldRay, const Crossing &
     }
     Vec3 ns;
     SurfaceInteraction si;
-    ObjectSurface os = mesh_->surface(hit, &ns, &si.u, &si.v, &si.hasUv);
+    ObjectSurface os = mesh_->surface(hit, &ns, &si);
     si.t = c.t;
     si.leaf = this;
     placement_.surfaceToWorld(os, si);
     si.ns = placement_.normalToWorld(ns);
+    if (si.hasTangent) si.tangent = placement_.vectorToWorld(si.tangent);
     return si;
 }
 

@@ -49,8 +49,10 @@ class TriangleMesh {
     /// Every crossing of the whole line, unsorted.
     void allHits(const Ray &r, std::vector<Hit> &out) const;
     /// Surface data at a hit, in object space.
-    ObjectSurface surface(const Hit &hit, Vec3 *shadingNormal, double *u, double *v,
-                          bool *hasUv) const;
+    /// The object-space surface of a hit; sets the shading normal (object space) and the
+    /// interpolated per-vertex attributes of `si` (texture coordinates, the object-space
+    /// tangent, vertex colour) that the mesh has.
+    ObjectSurface surface(const Hit &hit, Vec3 *shadingNormal, SurfaceInteraction *si) const;
 
   private:
     /// The ray in the watertight test's frame: the axis of its largest component is z.

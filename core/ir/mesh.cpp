@@ -92,13 +92,21 @@ void validateMesh(const Mesh &mesh) {
         if (!mesh.normals[i].isFinite())
             throw SceneError(mesh.loc, "mesh '" + mesh.name + "': normal " + std::to_string(i) +
                                            " is not finite");
-    if (!mesh.uvs.empty() && mesh.uvs.size() != n)
-        throw SceneError(mesh.loc, "mesh '" + mesh.name + "': " + std::to_string(mesh.uvs.size()) +
-                                       " texture coordinates for " + std::to_string(n) + " positions");
-    for (size_t i = 0; i < mesh.uvs.size(); ++i)
-        if (!std::isfinite(mesh.uvs[i][0]) || !std::isfinite(mesh.uvs[i][1]))
-            throw SceneError(mesh.loc, "mesh '" + mesh.name + "': texture coordinate " +
-                                           std::to_string(i) + " is not finite");
+    // Per-vertex attributes: one per position, every component finite
+    auto checkAttribute = [&](const auto &values, const char *what) {
+        if (!values.empty() && values.size() != n)
+            throw SceneError(mesh.loc, "mesh '" + mesh.name + "': " + std::to_string(values.size()) +
+                                           " " + what + "s for " + std::to_string(n) + " positions");
+        for (size_t i = 0; i < values.size(); ++i)
+            for (float c : values[i])
+                if (!std::isfinite(c))
+                    throw SceneError(mesh.loc, "mesh '" + mesh.name + "': " + what + " " +
+                                                   std::to_string(i) + " is not finite");
+    };
+    checkAttribute(mesh.uvs, "texture coordinate");
+    checkAttribute(mesh.uvs1, "second texture coordinate");
+    checkAttribute(mesh.tangents, "tangent");
+    checkAttribute(mesh.colors, "vertex colour");
     for (size_t i = 0; i < mesh.triangles.size(); ++i)
         for (uint32_t v : mesh.triangles[i])
             if (v >= n)

@@ -22,6 +22,14 @@ struct Mesh {
     /// Empty, or one texture coordinate per position; (0,0) is the top-left of the image, as in
     /// glTF.
     std::vector<std::array<float, 2>> uvs;
+    /// Empty, or a second texture coordinate set per position (glTF TEXCOORD_1).
+    std::vector<std::array<float, 2>> uvs1;
+    /// Empty, or one tangent per position: xyz a unit vector along +u of `uvs`, w = +1 or -1,
+    /// the handedness of the bitangent (glTF TANGENT: bitangent = cross(normal, tangent) * w).
+    std::vector<std::array<float, 4>> tangents;
+    /// Empty, or one linear RGBA colour per position (glTF COLOR_0; alpha 1 for vec3 colours),
+    /// multiplying the material's base colour.
+    std::vector<std::array<float, 4>> colors;
     /// Vertex indices, counter-clockwise seen from outside (the outward normal is
     /// (p1 - p0) x (p2 - p0)).
     std::vector<std::array<uint32_t, 3>> triangles;
