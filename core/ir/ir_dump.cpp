@@ -184,7 +184,7 @@ std::string dump(const Scene &scene) {
            << " ior " << formatNumber(m.interior.ior)
            << " fade_distance " << formatNumber(m.interior.fadeDistance) << " fade_power "
            << formatNumber(m.interior.fadePower) << " fade_color " << rgb(m.interior.fadeColor)
-           << (m.baseColorTexture >= 0 ? " texture " + std::to_string(m.baseColorTexture) : "")
+           << (m.baseColorTexture.valid() ? " texture " + std::to_string(m.baseColorTexture.texture) : "")
            << where(m.loc) << "\n";
     }
     for (size_t i = 0; i < scene.meshes.size(); ++i) {

@@ -206,7 +206,7 @@ void validateScene(const Scene &scene, DiagnosticSink &diag) {
         if (f.blurSamples < 1 || f.blurSamples > kMaxBlurSamples)
             throw SceneError(m.loc, "blur_samples must be between 1 and " +
                                         std::to_string(kMaxBlurSamples));
-        if (m.baseColorTexture >= static_cast<int>(scene.textures.size()))
+        if (m.baseColorTexture.texture >= static_cast<int>(scene.textures.size()))
             throw SceneError(m.loc, "material refers to a missing texture (internal error)");
     }
 }

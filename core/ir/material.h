@@ -56,14 +56,31 @@ struct Interior {
     bool operator==(const Interior &) const = default;
 };
 
+/// How a material reads a texture (glTF textureInfo): the image, the texture coordinate set
+/// and KHR_texture_transform, applied as uv' = translate(offset) rotate(rotation) scale(scale) uv.
+struct TextureRef {
+    int texture = -1;  ///< index into Scene::textures, or -1 for none
+    int texCoord = 0;  ///< 0: Mesh::uvs (TEXCOORD_0), 1: Mesh::uvs1 (TEXCOORD_1)
+    double offsetU = 0, offsetV = 0;
+    double rotation = 0;  ///< radians, as KHR_texture_transform defines it
+    double scaleU = 1, scaleV = 1;
+
+    bool operator==(const TextureRef &) const = default;
+    bool valid() const { return texture >= 0; }
+    bool hasTransform() const {
+        return offsetU != 0 || offsetV != 0 || rotation != 0 || scaleU != 1 || scaleV != 1;
+    }
+    auto key() const { return std::make_tuple(texture, texCoord, offsetU, offsetV, rotation, scaleU, scaleV); }
+};
+
 struct Material {
     Rgb color = kOpenScadDefaultColor;
     double filter = 0;    ///< light passing through, tinted by color
     double transmit = 0;  ///< light passing through untinted
     Finish finish;
     Interior interior;
-    /// Index into Scene::textures whose RGB multiplies `color`, or -1.
-    int baseColorTexture = -1;
+    /// Texture whose RGB multiplies `color` per hit (none by default).
+    TextureRef baseColorTexture;
     SourceLoc loc;  ///< where it was first defined (not part of equality)
 
     /// Every field that decides how the material looks, as one tuple: equality dedupes
@@ -72,14 +89,14 @@ struct Material {
         const Finish &f = finish;
         const Rgb &rmin = f.reflectionMin, &rmax = f.reflectionMax, &e = f.emission;
         const Rgb &fc = interior.fadeColor;
-        return std::make_tuple(color.r, color.g, color.b, filter, transmit, f.ambient, f.diffuse,
+        return std::tuple_cat(std::make_tuple(color.r, color.g, color.b, filter, transmit, f.ambient, f.diffuse,
                                f.brilliance, f.phong, f.phongSize, f.specular, f.roughness,
                                f.metallic, rmax.r, rmax.g, rmax.b, rmin.r, rmin.g, rmin.b,
                                f.reflectionFalloff, f.reflectionExponent, f.fresnel,
                                f.conserveEnergy, e.r, e.g, e.b, f.glossy, f.frosted,
                                f.blurSamples, f.blurLobe, interior.ior,
-                               interior.fadeDistance, interior.fadePower, fc.r, fc.g, fc.b,
-                               baseColorTexture);
+                               interior.fadeDistance, interior.fadePower, fc.r, fc.g, fc.b),
+                              baseColorTexture.key());
     }
     bool sameAppearance(const Material &o) const { return appearanceKey() == o.appearanceKey(); }
     bool isTransparent() const { return filter > 0 || transmit > 0; }

@@ -44,7 +44,7 @@ struct Scene {
     NodePtr root = Node::makeGroup(NodeKind::Group, {});
     std::vector<Material> materials;
     std::vector<MeshPtr> meshes;      ///< referenced by MeshPrim::mesh
-    std::vector<TexturePtr> textures; ///< referenced by Material::baseColorTexture
+    std::vector<TexturePtr> textures; ///< referenced by Material texture slots (TextureRef)
     std::vector<Light> lights;
     std::optional<Camera> camera;
     Settings settings;

@@ -191,9 +191,13 @@ Rgb WhittedIntegrator::distribute(const ir::Finish &f, double spreadDegrees, con
 }
 
 Rgb WhittedIntegrator::surfaceColour(const ir::Material &m, const SurfaceInteraction &si) const {
-    const ir::Texture *tex = scene_.texture(m.baseColorTexture);
-    if (!tex || !si.hasUv) return m.color;
-    return m.color * sampleTexture(*tex, si.u, si.v);
+    Rgb c = m.color;
+    // glTF COLOR_0 multiplies the base colour (and its texture)
+    if (si.hasVertexColor) c *= Rgb(si.vertexColor[0], si.vertexColor[1], si.vertexColor[2]);
+    const ir::Texture *tex = scene_.texture(m.baseColorTexture.texture);
+    float t[4];
+    if (!tex || !sampleTexture(*tex, m.baseColorTexture, si, t)) return c;
+    return c * Rgb(t[0], t[1], t[2]);
 }
 
 Rgb WhittedIntegrator::localColour(const Ray &ray, const SurfaceInteraction &si, const Vec3 &N,

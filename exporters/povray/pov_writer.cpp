@@ -266,7 +266,7 @@ class Writer {
             const ir::Finish &f = m.finish;
             os_ << comment(m.loc, "") << blurComment(f) << "#declare " << materialName(i)
                 << " = texture {\n";
-            const ir::Texture *tex = m.baseColorTexture >= 0 ? scene_.textures[m.baseColorTexture].get() : nullptr;
+            const ir::Texture *tex = m.baseColorTexture.valid() ? scene_.textures[m.baseColorTexture.texture].get() : nullptr;
             if (tex) {
                 // The colour factor is baked into a linear 16-bit copy of the texture; uv
                 // coordinates come from the mesh2 (v flipped: POV-Ray's image origin is at the

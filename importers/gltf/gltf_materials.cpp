@@ -166,11 +166,11 @@ std::optional<int> MaterialMapper::irMaterial(int index, bool hasUvs,
         slot.done = true;
     }
     if (slot.hidden) return std::nullopt;
-    if (slot.material.baseColorTexture >= 0 && !hasUvs) {
+    if (slot.material.baseColorTexture.valid() && !hasUvs) {
         ctx_.warning(primitivePath + ": no TEXCOORD_0 for the base colour texture of " +
                      jsonPath("materials", static_cast<size_t>(index)) + "; texture ignored");
         ir::Material plain = slot.material;
-        plain.baseColorTexture = -1;
+        plain.baseColorTexture = {};
         return scene_.addMaterial(plain);
     }
     return scene_.addMaterial(slot.material);
@@ -277,7 +277,7 @@ ir::Material MaterialMapper::map(int index, bool &hidden) {
             ctx_.warning(what + ": uses TEXCOORD_" + std::to_string(pbr.baseColorTexture.texCoord) +
                          ", which scadray ignores; texture ignored");
         else
-            mat.baseColorTexture = irTexture(pbr.baseColorTexture.index, what);
+            mat.baseColorTexture.texture = irTexture(pbr.baseColorTexture.index, what);
     }
 
     // Transparency: transmission (tinted) and alpha coverage (untinted)

@@ -324,7 +324,7 @@ TEST(GltfImport, DuckDecodesItsTextureAndCamera) {
     EXPECT_GT(r, 2 * b);
 
     ASSERT_EQ(scene.materials.size(), 1u);
-    EXPECT_EQ(scene.materials[0].baseColorTexture, 0);
+    EXPECT_EQ(scene.materials[0].baseColorTexture.texture, 0);
     ASSERT_TRUE(scene.camera.has_value());
     EXPECT_EQ(scene.camera->projection, ir::Projection::Perspective);
     EXPECT_NEAR(scene.camera->fov, degrees(0.6605925559997559), 1e-9);

@@ -63,7 +63,7 @@ TEST(GltfMaterial, RoughDielectricFollowsTheTable) {
     EXPECT_FALSE(m.finish.fresnel);
     EXPECT_FALSE(m.finish.conserveEnergy);
     EXPECT_EQ(m.interior.ior, 1);
-    EXPECT_EQ(m.baseColorTexture, -1);
+    EXPECT_EQ(m.baseColorTexture.texture, -1);
     EXPECT_EQ(m.finish.emission, Rgb(0));
 }
 
@@ -224,7 +224,7 @@ TEST(GltfTexture, DecodesSrgbTopRowFirstWithWrapModes) {
     EXPECT_FLOAT_EQ(texel(0, 1, 2), 0.0f);         // bottom-left black
     EXPECT_FLOAT_EQ(texel(1, 1, 2), 1.0f);         // bottom-right white
     EXPECT_FLOAT_EQ(texel(1, 1, 3), 1.0f);         // opaque
-    EXPECT_EQ(onlyMaterial(*im).baseColorTexture, 0);
+    EXPECT_EQ(onlyMaterial(*im).baseColorTexture.texture, 0);
     ASSERT_EQ(im->scene.meshes.size(), 1u);
     EXPECT_EQ(im->scene.meshes[0]->uvs.size(), 3u);
     EXPECT_EQ(im->diag.count(Severity::Warning), 0);
@@ -245,7 +245,7 @@ TEST(GltfTexture, UndecodableOrMissingImagesCostOnlyTheTexture) {
         "data:image/png;base64," + base64Encode(std::vector<unsigned char>(64, 0x5a));
     auto bad = importText(tmp, texturedTriangle(garbage, "{}"));
     EXPECT_TRUE(bad->scene.textures.empty());
-    EXPECT_EQ(onlyMaterial(*bad).baseColorTexture, -1);
+    EXPECT_EQ(onlyMaterial(*bad).baseColorTexture.texture, -1);
     EXPECT_EQ(bad->diag.countContaining("cannot decode images[0]"), 1);
     EXPECT_EQ(bad->scene.meshes.size(), 1u);
 
@@ -277,7 +277,7 @@ TEST(GltfTexture, TextureTransformAndSecondUvSetAreWarnedAbout) {
     EXPECT_EQ(im->diag.countContaining("KHR_texture_transform"), 1);
     EXPECT_EQ(im->diag.countContaining("uses extension EXT_whatever"), 1);
     EXPECT_EQ(im->diag.countContaining("TEXCOORD_1"), 1);
-    EXPECT_EQ(onlyMaterial(*im).baseColorTexture, -1);
+    EXPECT_EQ(onlyMaterial(*im).baseColorTexture.texture, -1);
 }
 
 TEST(GltfLights, SpotDirectionalAndPointFromGeneratedFile) {
