@@ -22,7 +22,8 @@ namespace rt::gltf {
 namespace {
 
 /// Extensions whose meaning the importer implements; any other in extensionsRequired is refused.
-constexpr std::array<std::string_view, 6> kSupportedExtensions = {"KHR_materials_emissive_strength",
+constexpr std::array<std::string_view, 7> kSupportedExtensions = {"KHR_materials_emissive_strength",
+                                                                  "KHR_texture_transform",
                                                                   "KHR_materials_transmission",
                                                                   "KHR_materials_ior",
                                                                   "KHR_materials_volume",
@@ -313,12 +314,7 @@ void checkExtensions(const detail::ImportContext &ctx) {
             ctx.fail("requires extension " + ext + ", which scadray does not support");
     for (const std::string &ext : model.extensionsUsed) {
         if (isSupported(ext)) continue;
-        if (ext == "KHR_texture_transform")
-            ctx.warning(
-                "uses KHR_texture_transform; texture offsets, rotations and scales are "
-                "ignored");
-        else
-            ctx.note("uses extension " + ext + ", which scadray ignores");
+        ctx.note("uses extension " + ext + ", which scadray ignores");
     }
 }
 

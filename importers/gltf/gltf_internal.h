@@ -135,8 +135,8 @@ class MaterialMapper {
 
     /// IR material for glTF material `index` (-1: glTF's default material), or nothing when
     /// the material hides its primitives (alphaMode MASK with alpha below the cutoff). Without
-    /// texture coordinates the base colour texture is left out.
-    std::optional<int> irMaterial(int index, bool hasUvs, const std::string &primitivePath);
+    /// the texture coordinates it reads, the base colour texture is left out.
+    std::optional<int> irMaterial(int index, const ir::Mesh &mesh, const std::string &primitivePath);
 
   private:
     struct DecodedImage;
@@ -149,6 +149,12 @@ class MaterialMapper {
     ir::Material map(int index, bool &hidden);
     const DecodedImage *decodedImage(int textureIndex, const std::string &what);
     int irTexture(int textureIndex, const std::string &what);
+    /// The IR reference of a glTF textureInfo (`index`, `texCoord`, its `extensions`):
+    /// the texture decoded once, TEXCOORD_0 or _1, and KHR_texture_transform (whose own
+    /// `texCoord` overrides). Invalid (texture -1) with a warning naming `what` when the
+    /// texture fails or uses a coordinate set other than 0 and 1.
+    ir::TextureRef textureInfo(int textureIndex, int texCoord,
+                               const tinygltf::ExtensionMap &extensions, const std::string &what);
 
     const ImportContext &ctx_;
     ir::Scene &scene_;

@@ -154,7 +154,7 @@ MaterialMapper::MaterialMapper(const ImportContext &ctx, ir::Scene &scene)
 
 MaterialMapper::~MaterialMapper() = default;
 
-std::optional<int> MaterialMapper::irMaterial(int index, bool hasUvs,
+std::optional<int> MaterialMapper::irMaterial(int index, const ir::Mesh &mesh,
                                               const std::string &primitivePath) {
     if (index < -1 || index >= static_cast<int>(ctx_.model.materials.size()))
         ctx_.fail(primitivePath + ": material " + std::to_string(index) +
@@ -166,8 +166,11 @@ std::optional<int> MaterialMapper::irMaterial(int index, bool hasUvs,
         slot.done = true;
     }
     if (slot.hidden) return std::nullopt;
-    if (slot.material.baseColorTexture.valid() && !hasUvs) {
-        ctx_.warning(primitivePath + ": no TEXCOORD_0 for the base colour texture of " +
+    const ir::TextureRef &base = slot.material.baseColorTexture;
+    if (base.valid() && (base.texCoord == 1 ? mesh.uvs1 : mesh.uvs).empty()) {
+        ctx_.warning(primitivePath + ": no TEXCOORD_" +
+                     std::to_string(base.texCoord) +
+                     " for the base colour texture of " +
                      jsonPath("materials", static_cast<size_t>(index)) + "; texture ignored");
         ir::Material plain = slot.material;
         plain.baseColorTexture = {};
@@ -271,14 +274,10 @@ ir::Material MaterialMapper::map(int index, bool &hidden) {
     ir::Material mat;
     mat.loc = ctx_.loc;
     mat.color = baseColor;
-    if (pbr.baseColorTexture.index >= 0) {
-        std::string what = path + ".pbrMetallicRoughness.baseColorTexture";
-        if (pbr.baseColorTexture.texCoord != 0)
-            ctx_.warning(what + ": uses TEXCOORD_" + std::to_string(pbr.baseColorTexture.texCoord) +
-                         ", which scadray ignores; texture ignored");
-        else
-            mat.baseColorTexture.texture = irTexture(pbr.baseColorTexture.index, what);
-    }
+    if (pbr.baseColorTexture.index >= 0)
+        mat.baseColorTexture = textureInfo(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+                                           pbr.baseColorTexture.extensions,
+                                           path + ".pbrMetallicRoughness.baseColorTexture");
 
     // Transparency: transmission (tinted) and alpha coverage (untinted)
     mat.filter = transmission * (1 - metallic);
@@ -479,6 +478,42 @@ int MaterialMapper::irTexture(int textureIndex, const std::string &what) {
     scene_.textures.push_back(std::move(tex));
     slot = static_cast<int>(scene_.textures.size()) - 1;
     return slot;
+}
+
+ir::TextureRef MaterialMapper::textureInfo(int textureIndex, int texCoord,
+                                           const tinygltf::ExtensionMap &extensions,
+                                           const std::string &what) {
+    ir::TextureRef ref;
+    const tinygltf::Value *transform = extension(extensions, "KHR_texture_transform");
+    if (transform) {
+        auto pair = [&](const char *key, double &a, double &b) {
+            if (!transform->Has(key)) return;
+            const tinygltf::Value &v = transform->Get(key);
+            if (v.IsArray() && v.ArrayLen() == 2 && v.Get(0).IsNumber() && v.Get(1).IsNumber() &&
+                std::isfinite(v.Get(0).GetNumberAsDouble()) &&
+                std::isfinite(v.Get(1).GetNumberAsDouble())) {
+                a = v.Get(0).GetNumberAsDouble();
+                b = v.Get(1).GetNumberAsDouble();
+            } else {
+                ctx_.warning(what + ".extensions.KHR_texture_transform." + key +
+                             ": needs two finite numbers; ignored");
+            }
+        };
+        pair("offset", ref.offsetU, ref.offsetV);
+        pair("scale", ref.scaleU, ref.scaleV);
+        double rotation = number(transform, "rotation", 0.0);
+        if (std::isfinite(rotation)) ref.rotation = rotation;
+        double set = number(transform, "texCoord", texCoord);
+        if (set == std::floor(set) && set >= 0 && set < 1e9) texCoord = static_cast<int>(set);
+    }
+    if (texCoord != 0 && texCoord != 1) {
+        ctx_.warning(what + ": uses TEXCOORD_" + std::to_string(texCoord) +
+                     " (scadray reads TEXCOORD_0 and TEXCOORD_1); texture ignored");
+        return {};
+    }
+    ref.texCoord = texCoord;
+    ref.texture = irTexture(textureIndex, what);
+    return ref.texture >= 0 ? ref : ir::TextureRef{};
 }
 
 }  // namespace rt::gltf::detail

@@ -210,9 +210,9 @@ class SceneBuilder {
             if (options_.materialOverride) {
                 material = *options_.materialOverride;
             } else {
-                bool hasUvs = !scene_.meshes[static_cast<size_t>(id)]->uvs.empty();
                 std::optional<int> m =
-                    materials_->irMaterial(mesh.primitives[p].material, hasUvs, primPath);
+                    materials_->irMaterial(mesh.primitives[p].material,
+                                           *scene_.meshes[static_cast<size_t>(id)], primPath);
                 if (!m) continue;
                 material = *m;
             }

@@ -268,16 +268,33 @@ TEST(GltfTexture, ImageBufferViewOutsideItsBufferIsNotRead) {
     EXPECT_EQ(im->scene.meshes.size(), 1u);
 }
 
-TEST(GltfTexture, TextureTransformAndSecondUvSetAreWarnedAbout) {
+TEST(GltfTexture, TextureTransformIsReadAndMissingUvSetsAreWarnedAbout) {
     TempDir tmp;
     std::string uri = "data:image/bmp;base64," + base64Encode(bmp2x2(0, 0, 0, 0));
-    std::string text = texturedTriangle(uri, "{}", R"({"index":0,"texCoord":1})");
+    // KHR_texture_transform: offset, rotation and scale kept on the material's reference
+    std::string text = texturedTriangle(
+        uri, "{}",
+        R"({"index":0,"extensions":{"KHR_texture_transform":{"offset":[0.5,-0.25],"rotation":0.75,"scale":[2,3]}}})");
     text.insert(1, R"("extensionsUsed":["KHR_texture_transform","EXT_whatever"],)");
     auto im = importText(tmp, text);
-    EXPECT_EQ(im->diag.countContaining("KHR_texture_transform"), 1);
+    EXPECT_EQ(im->diag.countContaining("KHR_texture_transform"), 0);
     EXPECT_EQ(im->diag.countContaining("uses extension EXT_whatever"), 1);
-    EXPECT_EQ(im->diag.countContaining("TEXCOORD_1"), 1);
-    EXPECT_EQ(onlyMaterial(*im).baseColorTexture.texture, -1);
+    const ir::TextureRef &ref = onlyMaterial(*im).baseColorTexture;
+    EXPECT_EQ(ref.texture, 0);
+    EXPECT_EQ(ref.texCoord, 0);
+    EXPECT_EQ(ref.offsetU, 0.5);
+    EXPECT_EQ(ref.offsetV, -0.25);
+    EXPECT_EQ(ref.rotation, 0.75);
+    EXPECT_EQ(ref.scaleU, 2);
+    EXPECT_EQ(ref.scaleV, 3);
+    // TEXCOORD_1 is read, but this triangle has none: the texture is left out, with the reason
+    auto second = importText(tmp, texturedTriangle(uri, "{}", R"({"index":0,"texCoord":1})"));
+    EXPECT_EQ(second->diag.countContaining("no TEXCOORD_1 for the base colour texture"), 1);
+    EXPECT_EQ(onlyMaterial(*second).baseColorTexture.texture, -1);
+    // Sets beyond 1 are not read
+    auto third = importText(tmp, texturedTriangle(uri, "{}", R"({"index":0,"texCoord":2})"));
+    EXPECT_EQ(third->diag.countContaining("uses TEXCOORD_2"), 1);
+    EXPECT_EQ(onlyMaterial(*third).baseColorTexture.texture, -1);
 }
 
 TEST(GltfLights, SpotDirectionalAndPointFromGeneratedFile) {
