@@ -52,10 +52,10 @@ std::string stringMember(const tinygltf::Value &obj, const char *name, const cha
 
 }  // namespace
 
-std::vector<size_t> patchMeshoptFallbackBuffers(std::vector<unsigned char> &bytes, bool binary) {
-    static constexpr std::string_view kTag = "EXT_meshopt_compression";
+std::vector<size_t> patchJsonForTinygltf(std::vector<unsigned char> &bytes, bool binary) {
     std::string_view all(reinterpret_cast<const char *>(bytes.data()), bytes.size());
-    if (all.find(kTag) == std::string_view::npos) return {};
+    if (all.find(kMeshopt) == std::string_view::npos && all.find(kDraco) == std::string_view::npos)
+        return {};
     size_t jsonStart = 0, jsonLength = bytes.size();
     if (binary) {
         if (bytes.size() < 20) return {};
@@ -68,17 +68,42 @@ std::vector<size_t> patchMeshoptFallbackBuffers(std::vector<unsigned char> &byte
     // Invalid JSON is left to tinygltf, which reports where it is
     nlohmann::json doc = nlohmann::json::parse(all.substr(jsonStart, jsonLength), nullptr, false);
     if (doc.is_discarded() || !doc.is_object()) return {};
-    auto buffers = doc.find("buffers");
-    if (buffers == doc.end() || !buffers->is_array()) return {};
     std::vector<size_t> patched;
-    for (size_t i = 0; i < buffers->size(); ++i) {
-        nlohmann::json &b = (*buffers)[i];
-        if (!isFallback(b)) continue;
-        b["uri"] = kPlaceholderUri;
-        b["byteLength"] = 3;
-        patched.push_back(i);
-    }
-    if (patched.empty()) return {};
+    bool changed = false;
+    auto buffers = doc.find("buffers");
+    if (buffers != doc.end() && buffers->is_array())
+        for (size_t i = 0; i < buffers->size(); ++i) {
+            nlohmann::json &b = (*buffers)[i];
+            if (!isFallback(b)) continue;
+            b["uri"] = kPlaceholderUri;
+            b["byteLength"] = 3;
+            patched.push_back(i);
+            changed = true;
+        }
+    // Draco primitives: tinygltf wants a bufferView on every index accessor, which Draco's
+    // have not; the indices come from the Draco data, so `indices` is dropped
+    auto meshes = doc.find("meshes");
+    auto accessors = doc.find("accessors");
+    if (meshes != doc.end() && meshes->is_array() && accessors != doc.end() &&
+        accessors->is_array())
+        for (nlohmann::json &mesh : *meshes) {
+            if (!mesh.is_object() || !mesh.contains("primitives") ||
+                !mesh["primitives"].is_array())
+                continue;
+            for (nlohmann::json &prim : mesh["primitives"]) {
+                if (!prim.is_object() || !prim.contains("extensions") ||
+                    !prim["extensions"].is_object() || !prim["extensions"].contains(kDraco) ||
+                    !prim.contains("indices") || !prim["indices"].is_number_unsigned())
+                    continue;
+                size_t index = prim["indices"].get<size_t>();
+                if (index < accessors->size() && (*accessors)[index].is_object() &&
+                    !(*accessors)[index].contains("bufferView")) {
+                    prim.erase("indices");
+                    changed = true;
+                }
+            }
+        }
+    if (!changed) return {};
     std::string text = doc.dump();
     if (!binary) {
         bytes.assign(text.begin(), text.end());

@@ -268,7 +268,7 @@ std::unique_ptr<LoadedFile> loadFile(const std::string &path, const SourceLoc &l
                                      DiagnosticSink &diag, bool keepImages) {
     std::vector<unsigned char> bytes = readMainFile(path, loc);
     bool binary = bytes.size() >= 4 && std::equal(bytes.begin(), bytes.begin() + 4, "glTF");
-    std::vector<size_t> fallbacks = detail::patchMeshoptFallbackBuffers(bytes, binary);
+    std::vector<size_t> fallbacks = detail::patchJsonForTinygltf(bytes, binary);
     std::string baseDir = std::filesystem::path(path).parent_path().string();
 
     detail::FileAccess files{detail::ModelFolder(path), baseDir, {}, 0, {}, 0};

@@ -139,15 +139,18 @@ void checkAttributeType(const ImportContext &ctx, int index, const std::string &
 constexpr uint64_t kMaxMeshoptViewBytes = uint64_t(1) << 31;
 constexpr uint64_t kMaxDracoElements = uint64_t(1) << 27;
 
-/// Lets tinygltf load EXT_meshopt_compression fallback buffers (a buffer without `uri` whose
-/// extension says `fallback: true`; tinygltf refuses a uri-less buffer in a .gltf and copies
-/// the BIN chunk into it in a .glb): rewrites the JSON text (of a .gltf, or the JSON chunk of
-/// the .glb `bytes`) so they name a three-byte data: URI instead. Returns the indices of the
-/// buffers rewritten (empty: `bytes` unchanged).
-std::vector<size_t> patchMeshoptFallbackBuffers(std::vector<unsigned char> &bytes, bool binary);
+/// Rewrites the JSON text (of a .gltf, or the JSON chunk of the .glb `bytes`) where tinygltf
+/// 2.7 would refuse valid compressed files: an EXT_meshopt_compression fallback buffer (no
+/// `uri`, `fallback: true`; tinygltf refuses a uri-less buffer in a .gltf and copies the BIN
+/// chunk into it in a .glb) names a three-byte data: URI instead, and a
+/// KHR_draco_mesh_compression primitive loses its `indices` when that accessor has no
+/// bufferView (tinygltf requires one: "accessor[N] invalid bufferView"; the Draco data holds
+/// the indices). Returns the indices of the fallback buffers rewritten; `bytes` is unchanged
+/// when there is nothing to rewrite or the JSON does not parse.
+std::vector<size_t> patchJsonForTinygltf(std::vector<unsigned char> &bytes, bool binary);
 
 /// Decodes every bufferView that carries EXT_meshopt_compression into a new buffer and points
-/// the view at it; `fallbacks` (from patchMeshoptFallbackBuffers) are emptied. Corrupt data is
+/// the view at it; `fallbacks` (from patchJsonForTinygltf) are emptied. Corrupt data is
 /// a ParseError at `loc` naming the extension and the bufferView.
 void decodeMeshoptViews(tinygltf::Model &model, const std::vector<size_t> &fallbacks,
                         const SourceLoc &loc);
