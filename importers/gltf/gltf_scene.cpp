@@ -254,14 +254,15 @@ class SceneBuilder {
         std::optional<std::vector<Mat4>> instances = gpuInstances(node, path);
         if (!instances) {
             addPrimitives(*target, node.mesh, pose, path);
-            return;
+        } else {
+            for (size_t i = 0; i < instances->size(); ++i) {
+                auto inst = ir::Node::makeTransform((*instances)[i], options_.nodeLoc);
+                inst->label = path + " instance " + std::to_string(i);
+                addPrimitives(*inst, node.mesh, pose, path);
+                if (!inst->children.empty()) target->children.push_back(std::move(inst));
+            }
         }
-        for (size_t i = 0; i < instances->size(); ++i) {
-            auto inst = ir::Node::makeTransform((*instances)[i], options_.nodeLoc);
-            inst->label = path + " instance " + std::to_string(i);
-            addPrimitives(*inst, node.mesh, pose, path);
-            if (!inst->children.empty()) target->children.push_back(std::move(inst));
-        }
+        if (target != &parent && target->children.empty()) parent.children.pop_back();
     }
 
     /// The instance transforms of EXT_mesh_gpu_instancing (none without the extension).

@@ -291,6 +291,47 @@ TEST(GltfGeometry, MeshoptRoundTripWithFallbackBuffer) {
                   {"bufferViews[0].extensions.EXT_meshopt_compression", "does not decode"});
 }
 
+TEST(GltfGeometry, MeshoptFallbackBufferInBinaryGltf) {
+    // buffers[0] is the BIN chunk with the compressed data; buffers[1] the uri-less fallback
+    std::vector<float> positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    std::vector<unsigned char> vb(meshopt_encodeVertexBufferBound(3, 12));
+    vb.resize(meshopt_encodeVertexBuffer(vb.data(), vb.size(), positions.data(), 3, 12));
+    size_t encodedSize = vb.size();
+    while (vb.size() % 4 != 0) vb.push_back(0);  // the BIN chunk is padded, the data is not
+    std::string json =
+        R"({"asset":{"version":"2.0"},"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
+        R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],)"
+        R"("buffers":[{"byteLength":)" + std::to_string(vb.size()) +
+        R"(},{"byteLength":36,"extensions":{"EXT_meshopt_compression":{"fallback":true}}}],)"
+        R"("bufferViews":[{"buffer":1,"byteLength":36,"byteStride":12,"extensions":)"
+        R"({"EXT_meshopt_compression":{"buffer":0,"byteLength":)" + std::to_string(encodedSize) +
+        R"(,"byteStride":12,"count":3,"mode":"ATTRIBUTES"}}}],)"
+        R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"}],)"
+        R"("extensionsUsed":["EXT_meshopt_compression"],)"
+        R"("extensionsRequired":["EXT_meshopt_compression"]})";
+    while (json.size() % 4 != 0) json.push_back(' ');
+    std::vector<unsigned char> glb;
+    auto u32 = [&](uint32_t v) {
+        for (int i = 0; i < 4; ++i) glb.push_back(static_cast<unsigned char>(v >> (8 * i)));
+    };
+    glb.insert(glb.end(), {'g', 'l', 'T', 'F'});
+    u32(2);
+    u32(static_cast<uint32_t>(12 + 8 + json.size() + 8 + vb.size()));
+    u32(static_cast<uint32_t>(json.size()));
+    glb.insert(glb.end(), {'J', 'S', 'O', 'N'});
+    glb.insert(glb.end(), json.begin(), json.end());
+    u32(static_cast<uint32_t>(vb.size()));
+    glb.insert(glb.end(), {'B', 'I', 'N', 0});
+    glb.insert(glb.end(), vb.begin(), vb.end());
+    TempDir tmp;
+    writeBytes(tmp.file("m.glb"), glb.data(), glb.size());
+    DiagnosticSink diag;
+    ir::Scene scene = importGltf(tmp.file("m.glb"), diag);
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    expectNear(scene.meshes[0]->positions[1], Vec3(1, 0, 0), 0);
+    expectNear(scene.meshes[0]->positions[2], Vec3(0, 1, 0), 0);
+}
+
 // Skins, morph targets, instancing
 
 /// A strip of three rows of two vertices, y = 0, 1, 2; the middle row half on each joint.
@@ -371,6 +412,12 @@ TEST(GltfGeometry, MorphTargetWeights) {
 
     expectFailure(morphedTriangle(R"([{"mesh":0},{"mesh":0}])", 2),
                   {"meshes[0].primitives[0].targets[0].POSITION", "2 deltas for 3 vertices"});
+
+    // More weights than targets: a warning naming the node, the extra ones ignored
+    DiagnosticSink extra;
+    scene = importText(morphedTriangle(R"([{"mesh":0},{"mesh":0,"weights":[1,1]}])"), extra);
+    EXPECT_EQ(extra.countContaining("nodes[1].weights: 2 weights for 1 morph targets"), 1);
+    EXPECT_EQ(instances(scene).size(), 2u);
 }
 
 TEST(GltfGeometry, GpuInstancingSharesTheMesh) {
@@ -390,6 +437,18 @@ TEST(GltfGeometry, GpuInstancingSharesTheMesh) {
     for (const Instance &i : inst) EXPECT_EQ(i.mesh, 0);
     expectNear(inst[1].world.transformPoint(Vec3(0, 0, 0)), zUp(Vec3(10, 0, 0)), 1e-12);
     expectNear(inst[2].world.transformPoint(Vec3(1, 0, 0)), zUp(Vec3(1, 10, 0)), 1e-12);
+
+    // Attributes of different counts
+    GltfBuilder bad;
+    bad.floats(kTriangle, "VEC3", 3);
+    bad.floats({0, 0, 0, 10, 0, 0, 0, 10, 0}, "VEC3", 3);
+    bad.floats({1, 1, 1, 2, 2, 2}, "VEC3", 3);
+    expectFailure(
+        bad.json(R"("nodes":[{"mesh":0,"extensions":{"EXT_mesh_gpu_instancing":{"attributes":)"
+                 R"({"TRANSLATION":1,"SCALE":2}}}}],"meshes":[{"primitives":[{"attributes":)"
+                 R"({"POSITION":0}}]}])"),
+        {"nodes[0].extensions.EXT_mesh_gpu_instancing.attributes.SCALE",
+         "2 instances, but the other attributes have 3"});
 }
 
 }  // namespace
