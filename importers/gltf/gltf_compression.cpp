@@ -65,7 +65,9 @@ std::vector<size_t> patchJsonForTinygltf(std::vector<unsigned char> &bytes, bool
         jsonStart = 20;
         jsonLength = chunk;
     }
-    // Invalid JSON is left to tinygltf, which reports where it is
+    // Too deep JSON is refused by the prescan that follows, invalid JSON by tinygltf, which
+    // reports where it is
+    if (scanJson(all.substr(jsonStart, jsonLength)).tooDeep) return {};
     nlohmann::json doc = nlohmann::json::parse(all.substr(jsonStart, jsonLength), nullptr, false);
     if (doc.is_discarded() || !doc.is_object()) return {};
     std::vector<size_t> patched;

@@ -242,6 +242,21 @@ TEST(GltfGeometry, DracoRoundTrip) {
     std::vector<unsigned char> corrupt(bytes.begin(), bytes.begin() + 8);
     expectFailure(file(corrupt), {"meshes[0].primitives[0].extensions.KHR_draco_mesh_compression",
                                   "does not decode"});
+
+    // Every byte flipped, every length cut: an error or a mesh, never a crash
+    for (size_t i = 0; i < bytes.size(); ++i)
+        for (int cut = 0; cut < 2; ++cut) {
+            std::vector<unsigned char> mutated(bytes);
+            if (cut)
+                mutated.resize(i);
+            else
+                mutated[i] ^= 0xa5;
+            DiagnosticSink quiet;
+            try {
+                importText(file(mutated), quiet);
+            } catch (const LocatedError &) {
+            }
+        }
 }
 
 TEST(GltfGeometry, MeshoptRoundTripWithFallbackBuffer) {
@@ -379,6 +394,13 @@ TEST(GltfGeometry, BadSkins) {
     expectFailure(skinnedStrip("[1,9]"), {"skins[0].joints[1]: node 9 does not exist"});
     expectFailure(skinnedStrip("[1,2]", R"("componentType":5126,"count":5,"type":"VEC4")"),
                   {"meshes[0].primitives[0].attributes.WEIGHTS_0", "5 elements for 6 vertices"});
+    // Joint transforms that overflow a double
+    std::string huge = replaceOnce(skinnedStrip("[1,2]"), R"({"children":[2]})",
+                                   R"({"children":[2],"scale":[1e300,1e300,1e300]})");
+    expectFailure(replaceOnce(huge, R"("translation":[0,1,0],)",
+                              R"("translation":[0,1,0],"scale":[1e300,1e300,1e300],)"),
+                  {"meshes[0].primitives[0].attributes.POSITION", "is not finite",
+                   "(after skinning)"});
 }
 
 /// A triangle with one morph target moving every vertex by (0, 0, 2).
