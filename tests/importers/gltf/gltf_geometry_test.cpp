@@ -259,6 +259,20 @@ TEST(GltfGeometry, DracoRoundTrip) {
         }
 }
 
+TEST(GltfGeometry, RealDracoAsset) {
+    // tests/data/gltf/assets/pmndrs.glb (CC0, glTF-Transform): Draco required, a texture
+    std::string path = std::string(SCADRAY_SOURCE_DIR) + "/tests/data/gltf/assets/pmndrs.glb";
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not found";
+    DiagnosticSink diag;
+    ir::Scene scene = importGltf(path, diag);
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    const ir::Mesh &m = *scene.meshes[0];
+    EXPECT_EQ(m.triangles.size(), 1551u);
+    EXPECT_EQ(m.uvs.size(), m.positions.size());
+    EXPECT_EQ(m.normals.size(), m.positions.size());
+    EXPECT_EQ(diag.countContaining("KHR_draco_mesh_compression"), 0);
+}
+
 TEST(GltfGeometry, MeshoptRoundTripWithFallbackBuffer) {
     std::vector<float> positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
     std::vector<unsigned> indices = {0, 1, 2, 0, 2, 3};
