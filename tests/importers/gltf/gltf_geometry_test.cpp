@@ -320,6 +320,40 @@ TEST(GltfGeometry, MeshoptRoundTripWithFallbackBuffer) {
                   {"bufferViews[0].extensions.EXT_meshopt_compression", "does not decode"});
 }
 
+TEST(GltfGeometry, MeshoptOctahedralNormals) {
+    // Normals as octahedral-filtered normalized bytes (stride 4), as gltfpack writes them
+    std::vector<float> positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    std::vector<float> normals = {0, 0, 1, 0, 0.6f, 0, 0.8f, 0, 1, 0, 0, 0};
+    std::vector<int8_t> filtered(12);
+    meshopt_encodeFilterOct(filtered.data(), 3, 4, 8, normals.data());
+    std::vector<unsigned char> nb(meshopt_encodeVertexBufferBound(3, 4));
+    nb.resize(meshopt_encodeVertexBuffer(nb.data(), nb.size(), filtered.data(), 3, 4));
+    TestBuffer buf;
+    size_t pOff = buf.add(positions), nOff = buf.add(nb);
+    std::string text =
+        R"({"asset":{"version":"2.0"},"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
+        R"("meshes":[{"primitives":[{"attributes":{"POSITION":0,"NORMAL":1}}]}],"buffers":[)" +
+        buf.json() +
+        R"(,{"byteLength":12,"extensions":{"EXT_meshopt_compression":{"fallback":true}}}],)"
+        R"("bufferViews":[)" + viewJson(pOff, 36) +
+        R"(,{"buffer":1,"byteLength":12,"byteStride":4,"extensions":{"EXT_meshopt_compression":)"
+        R"({"buffer":0,"byteOffset":)" + std::to_string(nOff) + R"(,"byteLength":)" +
+        std::to_string(nb.size()) +
+        R"(,"byteStride":4,"count":3,"mode":"ATTRIBUTES","filter":"OCTAHEDRAL"}}}],)"
+        R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"},)"
+        R"({"bufferView":1,"componentType":5120,"normalized":true,"count":3,"type":"VEC3"}],)"
+        R"("extensionsUsed":["EXT_meshopt_compression","KHR_mesh_quantization"],)"
+        R"("extensionsRequired":["EXT_meshopt_compression","KHR_mesh_quantization"]})";
+    DiagnosticSink diag;
+    ir::Scene scene = importText(text, diag);
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    const ir::Mesh &m = *scene.meshes[0];
+    ASSERT_EQ(m.normals.size(), 3u);
+    expectNear(m.normals[0], Vec3(0, 0, 1), 0.02);
+    expectNear(m.normals[1], Vec3(0.6, 0, 0.8), 0.02);
+    expectNear(m.normals[2], Vec3(1, 0, 0), 0.02);
+}
+
 TEST(GltfGeometry, MeshoptFallbackBufferInBinaryGltf) {
     // buffers[0] is the BIN chunk with the compressed data; buffers[1] the uri-less fallback
     std::vector<float> positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
