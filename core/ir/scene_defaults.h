@@ -35,8 +35,8 @@ enum class Framing {
 /// Viewer framing: the eye lies kViewerAzimuth degrees to the right of the front (-Y, glTF's
 /// +Z) and kViewerElevation degrees above the horizon, seen through kViewerFov degrees along
 /// the picture's smaller side; the bounding sphere's outline spans kViewerFill of that side.
-constexpr double kViewerAzimuth = 30;
-constexpr double kViewerElevation = 20;
+constexpr double kViewerAzimuth = 20;
+constexpr double kViewerElevation = 15;
 constexpr double kViewerFov = 40;
 constexpr double kViewerFill = 0.88;
 
