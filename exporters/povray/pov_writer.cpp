@@ -197,6 +197,29 @@ class Writer {
             << "    adc_bailout " << num(s.adcBailout) << "\n"
             << "}\n\n"
             << "background { " << rgb(s.background) << " }\n\n";
+        skySphere(s.environment);
+    }
+
+    /// The environment as a sky_sphere, looked up by ray direction exactly as scadray does
+    /// (core/render/environment.cpp): the gradient as a colour_map over the direction's z
+    /// mapped from [-1, 1] to [0, 1]; the image as a spherical image_map whose pole is turned
+    /// from +y to +Z, written beside the .pov as linear EXR.
+    void skySphere(const ir::Environment &e) {
+        if (e.kind == ir::EnvironmentKind::Gradient) {
+            os_ << "// Environment: gradient over the ray direction's height\n"
+                << "sky_sphere {\n    pigment {\n        gradient z\n        color_map {\n";
+            for (const ir::GradientStop &g : e.gradient)
+                os_ << "            [" << num((g.z + 1) / 2) << " " << rgb(g.color) << "]\n";
+            os_ << "        }\n        scale 2 translate -z\n    }\n}\n\n";
+        } else if (e.kind == ir::EnvironmentKind::Image && e.image) {
+            std::string file = assetPrefix_ + "_environment.exr";
+            if (images_) images_->push_back({file, bakedTexture(*e.image, Rgb(1))});
+            os_ << "// Environment: " << commentText(e.imagePath) << "\n"
+                << "sky_sphere {\n    pigment {\n        image_map { exr \"" << file
+                << "\" map_type 1 interpolate 2 }\n        rotate x*90\n";
+            if (e.rotateDegrees != 0) os_ << "        rotate z*" << num(e.rotateDegrees) << "\n";
+            os_ << "    }\n}\n\n";
+        }
     }
 
     void camera() {
@@ -581,6 +604,7 @@ void exportPov(const ir::Scene &scene, const std::string &povPath, const std::st
         WriteOptions wo;
         wo.pngDepth = PngDepth::Bits16;
         wo.linearPng = true;
+        // .exr (the environment) keeps values above 1 as float
         writeImage(t.image, (dir / t.fileName).string(), wo);
     }
     writeTextFile(povPath, sdl);
