@@ -22,7 +22,8 @@ namespace rt::gltf {
 namespace {
 
 /// Extensions whose meaning the importer implements; any other in extensionsRequired is refused.
-constexpr std::array<std::string_view, 7> kSupportedExtensions = {"KHR_materials_emissive_strength",
+constexpr std::array<std::string_view, 10> kSupportedExtensions = {"KHR_materials_emissive_strength",
+                                                                  "KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_specular",
                                                                   "KHR_texture_transform",
                                                                   "KHR_materials_transmission",
                                                                   "KHR_materials_ior",

@@ -174,21 +174,22 @@ std::optional<int> MaterialMapper::irMaterial(int index, const ir::Mesh &mesh,
     std::string matPath = index < 0 ? std::string("the default material")
                                     : jsonPath("materials", static_cast<size_t>(index));
     // Textures whose coordinate set this primitive lacks are left out
-    auto usable = [&](ir::TextureRef &ref, const char *what) {
+    auto usable = [&](ir::TextureRef &ref, const char *what, const char *instead) {
         if (!ref.valid() || !(ref.texCoord == 1 ? mesh.uvs1 : mesh.uvs).empty()) return false;
         ctx_.warning(primitivePath + ": no TEXCOORD_" + std::to_string(ref.texCoord) + " for the " +
-                     what + " texture of " + matPath + "; texture ignored");
+                     what + " texture of " + matPath + "; " + instead);
         ref = {};
         return true;
     };
-    usable(mat.baseColorTexture, "base colour");
+    usable(mat.baseColorTexture, "base colour", "texture ignored");
     if (mat.texel.pbr) {
         PbrMaterial p = *mat.texel.pbr;
-        bool changed = usable(p.metallicRoughnessTexture, "metallic-roughness");
-        changed |= usable(p.normalTexture, "normal");
-        changed |= usable(p.occlusionTexture, "occlusion");
-        changed |= usable(p.emissiveTexture, "emissive");
-        changed |= usable(p.transmissionTexture, "transmission");
+        const char *mean = "its mean used";
+        bool changed = usable(p.metallicRoughnessTexture, "metallic-roughness", mean);
+        changed |= usable(p.normalTexture, "normal", "texture ignored");
+        changed |= usable(p.occlusionTexture, "occlusion", mean);
+        changed |= usable(p.emissiveTexture, "emissive", mean);
+        changed |= usable(p.transmissionTexture, "transmission", mean);
         // Per-texel evaluation only where something varies over the surface
         bool alphaVaries = p.alphaMode != PbrMaterial::AlphaMode::Opaque &&
                            (mat.baseColorTexture.valid() || !mesh.colors.empty());
