@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -168,7 +169,11 @@ class Writer {
     void collectUsed(const ir::Node &n) {
         if (n.kind == ir::NodeKind::Primitive) {
             used_.insert(n.material);
-            if (const auto *m = std::get_if<ir::MeshPrim>(&n.shape)) usedMeshes_.insert(m->mesh);
+            if (const auto *m = std::get_if<ir::MeshPrim>(&n.shape)) {
+                usedMeshes_.insert(m->mesh);
+                meshMaterials_.insert({m->mesh, n.material});
+                if (vertexColoured(m->mesh, n.material)) colouredMeshes_.insert({m->mesh, n.material});
+            }
         }
         for (const auto &c : n.children) collectUsed(*c);
     }
@@ -341,39 +346,102 @@ class Writer {
         return img;
     }
 
+    /// Whether mesh `mesh` is written with its vertex colours for material `material`: it has
+    /// colours and the material no base colour texture (POV-Ray's mesh2 takes one texture per
+    /// vertex, so a colour per vertex excludes an image map).
+    bool vertexColoured(int mesh, int material) const {
+        return !scene_.meshes[mesh]->colors.empty() &&
+               !scene_.materials[material].baseColorTexture.valid();
+    }
+
+    /// The declared name of mesh `mesh` as material `material` shows it.
+    std::string meshName(int mesh, int material) const {
+        if (colouredMeshes_.count({mesh, material}))
+            return "Mesh_" + std::to_string(mesh) + "_" + materialName(material);
+        return "Mesh_" + std::to_string(mesh);
+    }
+
     /// Each mesh once, as mesh2; objects place it. A closed mesh gets an inside_vector, so
-    /// POV-Ray knows its inside (by parity) and it can take part in CSG.
+    /// POV-Ray knows its inside (by parity) and it can take part in CSG. A mesh with vertex
+    /// colours (glTF COLOR_0) is declared once more per material it is shown with, with a
+    /// texture per distinct colour: POV-Ray blends the three vertex textures of a triangle
+    /// with its barycentric weights, which for textures differing only in a plain pigment is
+    /// the linearly interpolated colour scadray shades with.
     void meshes() {
         if (usedMeshes_.empty()) return;
         os_ << "// Meshes\n";
-        for (int i : usedMeshes_) {
+        std::set<int> plain;  // meshes shown without vertex colours by some material
+        for (const auto &pair : meshMaterials_)
+            if (!colouredMeshes_.count(pair)) plain.insert(pair.first);
+        for (int i : plain) {
             const ir::Mesh &m = *scene_.meshes[i];
-            std::vector<std::array<uint32_t, 3>> faces;
-            for (const auto &t : m.triangles) {
-                const Vec3 &a = m.positions[t[0]], &b = m.positions[t[1]], &c = m.positions[t[2]];
-                if (lengthSquared(cross(b - a, c - a)) > 0) faces.push_back(t);  // POV drops the rest
-            }
-            os_ << comment(m.loc, "mesh '" + m.name + "'") << "#declare Mesh_" << i << " = mesh2 {\n"
-                << "    vertex_vectors {\n        " << m.positions.size();
-            for (const Vec3 &p : m.positions) os_ << ",\n        " << vec(p);
-            os_ << "\n    }\n";
-            if (!m.normals.empty()) {
-                os_ << "    normal_vectors {\n        " << m.normals.size();
-                for (const Vec3 &n : m.normals) os_ << ",\n        " << vec(n);
-                os_ << "\n    }\n";
-            }
-            if (!m.uvs.empty()) {
-                os_ << "    uv_vectors {\n        " << m.uvs.size();
-                for (const auto &uv : m.uvs) os_ << ",\n        <" << num(uv[0]) << ", " << num(1.0 - double(uv[1])) << ">";
-                os_ << "\n    }\n";
-            }
-            os_ << "    face_indices {\n        " << faces.size();
-            for (const auto &t : faces) os_ << ",\n        <" << t[0] << ", " << t[1] << ", " << t[2] << ">";
-            os_ << "\n    }\n";
-            if (ir::analyzeMesh(m).closed()) os_ << "    inside_vector <0.2718281828, 0.5772156649, 0.7071067811>\n";
-            os_ << "}\n";
+            std::string note;
+            if (!m.colors.empty())
+                note = "// scadray: the vertex colours of this mesh are left out where a material "
+                       "with a base colour texture shows it (POV-Ray's mesh2 takes either)\n";
+            mesh2(m, "Mesh_" + std::to_string(i), nullptr, note);
         }
+        for (const auto &[i, mat] : colouredMeshes_)
+            mesh2(*scene_.meshes[i], meshName(i, mat), &scene_.materials[mat], "");
         os_ << "\n";
+    }
+
+    /// One mesh2 declaration; with `coloured`, a texture_list of that material's colour times
+    /// each distinct vertex colour (its finish kept) and a texture index per face corner.
+    void mesh2(const ir::Mesh &m, const std::string &name, const ir::Material *coloured,
+               const std::string &note) {
+        std::vector<std::array<uint32_t, 3>> faces;
+        for (const auto &t : m.triangles) {
+            const Vec3 &a = m.positions[t[0]], &b = m.positions[t[1]], &c = m.positions[t[2]];
+            if (lengthSquared(cross(b - a, c - a)) > 0) faces.push_back(t);  // POV drops the rest
+        }
+        os_ << comment(m.loc, "mesh '" + m.name + "'") << note << "#declare " << name
+            << " = mesh2 {\n"
+            << "    vertex_vectors {\n        " << m.positions.size();
+        for (const Vec3 &p : m.positions) os_ << ",\n        " << vec(p);
+        os_ << "\n    }\n";
+        if (!m.normals.empty()) {
+            os_ << "    normal_vectors {\n        " << m.normals.size();
+            for (const Vec3 &n : m.normals) os_ << ",\n        " << vec(n);
+            os_ << "\n    }\n";
+        }
+        if (!m.uvs.empty()) {
+            os_ << "    uv_vectors {\n        " << m.uvs.size();
+            for (const auto &uv : m.uvs) os_ << ",\n        <" << num(uv[0]) << ", " << num(1.0 - double(uv[1])) << ">";
+            os_ << "\n    }\n";
+        }
+        // Vertex colours: one texture per distinct RGB (alpha is not used, as in the renderer)
+        std::vector<uint32_t> textureOf;
+        if (coloured) {
+            std::map<std::array<float, 3>, uint32_t> index;
+            std::vector<std::array<float, 3>> list;
+            textureOf.resize(m.colors.size());
+            for (size_t v = 0; v < m.colors.size(); ++v) {
+                std::array<float, 3> c = {m.colors[v][0], m.colors[v][1], m.colors[v][2]};
+                auto [it, isNew] = index.try_emplace(c, static_cast<uint32_t>(list.size()));
+                if (isNew) list.push_back(c);
+                textureOf[v] = it->second;
+            }
+            os_ << "    texture_list {\n        " << list.size();
+            for (const auto &c : list) {
+                Rgb col = coloured->color * Rgb(c[0], c[1], c[2]);
+                os_ << ",\n        texture {\n    pigment { rgbft <" << num(col.r) << ", "
+                    << num(col.g) << ", " << num(col.b) << ", " << num(coloured->filter) << ", "
+                    << num(coloured->transmit) << "> }\n";
+                finish(coloured->finish);
+                os_ << "        }";
+            }
+            os_ << "\n    }\n";
+        }
+        os_ << "    face_indices {\n        " << faces.size();
+        for (const auto &t : faces) {
+            os_ << ",\n        <" << t[0] << ", " << t[1] << ", " << t[2] << ">";
+            if (coloured)
+                os_ << ", " << textureOf[t[0]] << ", " << textureOf[t[1]] << ", " << textureOf[t[2]];
+        }
+        os_ << "\n    }\n";
+        if (ir::analyzeMesh(m).closed()) os_ << "    inside_vector <0.2718281828, 0.5772156649, 0.7071067811>\n";
+        os_ << "}\n";
     }
 
     static std::string comment(const SourceLoc &loc, const std::string &what) {
@@ -445,7 +513,7 @@ class Writer {
             else if (const auto *b = std::get_if<ir::BoxPrim>(&cur->shape))
                 shape = "box { " + vec(b->min) + ", " + vec(b->max);
             else if (const auto *mp = std::get_if<ir::MeshPrim>(&cur->shape))
-                shape = "object { Mesh_" + std::to_string(mp->mesh);
+                shape = "object { " + meshName(mp->mesh, cur->material);
             else if (const auto *p = std::get_if<ir::PolytopePrim>(&cur->shape)) {
                 // A convex polytope is exactly the intersection of its faces' half-spaces
                 // (POV-Ray's plane is inside on the side opposite its normal), so it stays a
@@ -489,6 +557,8 @@ class Writer {
     std::string assetPrefix_;
     std::vector<TextureFile> *images_;
     std::set<int> used_, usedMeshes_;
+    std::set<std::pair<int, int>> meshMaterials_;   ///< (mesh, material) pairs shown
+    std::set<std::pair<int, int>> colouredMeshes_;  ///< those shown with vertex colours
     std::ostringstream os_;
 };
 
