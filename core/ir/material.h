@@ -2,11 +2,17 @@
 // IR material: POV-Ray 3.7's classic pigment, finish and interior, with every value explicit.
 #pragma once
 
+#include <functional>
+#include <memory>
 #include <string>
 #include <tuple>
 
 #include "core/ir/source_loc.h"
 #include "core/math/rgb.h"
+
+namespace rt {
+struct PbrMaterial;  // core/materials/pbr_material.h
+}
 
 namespace rt::ir {
 
@@ -73,6 +79,21 @@ struct TextureRef {
     auto key() const { return std::make_tuple(texture, texCoord, offsetU, offsetV, rotation, scaleU, scaleV); }
 };
 
+/// A glTF material's per-texel description (factors plus texture slots), shared and immutable;
+/// compared, ordered and hashed by value (core/materials/pbr_material.cpp). Empty = none.
+struct TexelMaterial {
+    std::shared_ptr<const PbrMaterial> pbr;
+
+    bool operator==(const TexelMaterial &o) const;
+    bool operator<(const TexelMaterial &o) const;
+    size_t hash() const;
+    /// Whether some texel may let light through (alpha MASK or BLEND, transmission).
+    bool mayBeSeeThrough() const { return pbr && seeThrough(); }
+
+  private:
+    bool seeThrough() const;
+};
+
 struct Material {
     Rgb color = kOpenScadDefaultColor;
     double filter = 0;    ///< light passing through, tinted by color
@@ -81,6 +102,8 @@ struct Material {
     Interior interior;
     /// Texture whose RGB multiplies `color` per hit (none by default).
     TextureRef baseColorTexture;
+    /// glTF textures evaluated per hit (the fields above stay their mean, for export).
+    TexelMaterial texel;
     SourceLoc loc;  ///< where it was first defined (not part of equality)
 
     /// Every field that decides how the material looks, as one tuple: equality dedupes
@@ -96,10 +119,14 @@ struct Material {
                                f.conserveEnergy, e.r, e.g, e.b, f.glossy, f.frosted,
                                f.blurSamples, f.blurLobe, interior.ior,
                                interior.fadeDistance, interior.fadePower, fc.r, fc.g, fc.b),
-                              baseColorTexture.key());
+                              baseColorTexture.key(), std::make_tuple(texel));
     }
     bool sameAppearance(const Material &o) const { return appearanceKey() == o.appearanceKey(); }
-    bool isTransparent() const { return filter > 0 || transmit > 0; }
+    bool isTransparent() const { return filter > 0 || transmit > 0 || texel.mayBeSeeThrough(); }
 };
 
 }  // namespace rt::ir
+
+template <> struct std::hash<rt::ir::TexelMaterial> {
+    size_t operator()(const rt::ir::TexelMaterial &t) const { return t.hash(); }
+};

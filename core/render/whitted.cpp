@@ -8,6 +8,7 @@
 #include "core/lights/area_light.h"
 #include "core/materials/classic_shading.h"
 #include "core/materials/lobe_sampling.h"
+#include "core/materials/pbr_material.h"
 #include "core/materials/texture_sampler.h"
 #include "core/render/environment.h"
 
@@ -29,6 +30,19 @@ double cubicSpline(double low, double high, double x) {
     if (x >= high) return 1;
     double p = (x - low) / (high - low);
     return (3 - 2 * p) * p * p;
+}
+
+/// The images a material with a per-texel description reads.
+TexelImages texelImages(const RenderScene &scene, const ir::Material &m) {
+    const PbrMaterial &p = *m.texel.pbr;
+    TexelImages images;
+    images.baseColor = scene.texture(m.baseColorTexture.texture);
+    images.metallicRoughness = scene.texture(p.metallicRoughnessTexture.texture);
+    images.normal = scene.texture(p.normalTexture.texture);
+    images.occlusion = scene.texture(p.occlusionTexture.texture);
+    images.emissive = scene.texture(p.emissiveTexture.texture);
+    images.transmission = scene.texture(p.transmissionTexture.texture);
+    return images;
 }
 
 }  // namespace
@@ -83,13 +97,23 @@ double WhittedIntegrator::relativeIor(const Shape *object, const InteriorStack &
 Rgb WhittedIntegrator::shade(const Ray &ray, const SurfaceInteraction &si, int level,
                              double weight, const InteriorStack &stack, bool blurred,
                              TraceContext &ctx) const {
-    const ir::Material &m = scene_.material(si.leaf->material());
+    const ir::Material &stored = scene_.material(si.leaf->material());
+    // A glTF material with per-texel textures: its classic material and normal at this texel
+    std::optional<TexelShading> texel;
+    if (stored.texel.pbr) {
+        texel = shadeTexel(stored, texelImages(scene_, stored), si, ray.d);
+        // Cut out (alpha MASK): the ray goes on as if the surface were not there
+        if (texel->cutOut)
+            return trace(spawnRay(si, ray.d), level, weight, stack, true, blurred, ctx);
+    }
+    const ir::Material &m = texel ? texel->material : stored;
     const ir::Finish &f = m.finish;
     const ir::Settings &settings = scene_.settings();
-    // Shading normal (a smooth mesh's interpolated one) faces the incoming ray
-    Vec3 N = dot(si.ns, ray.d) > 0 ? -si.ns : si.ns;
+    // Shading normal (a smooth mesh's interpolated one, or the normal map's) faces the ray
+    const Vec3 &ns = texel ? texel->normal : si.ns;
+    Vec3 N = dot(ns, ray.d) > 0 ? -ns : ns;
     double cosI = -dot(ray.d, N);
-    Rgb c = surfaceColour(m, si);
+    Rgb c = texel ? m.color : surfaceColour(m, si);  // a texel's colour has its textures in
 
     Rgb colour = localColour(ray, si, N, m, c, stack, blurred, ctx);
 
@@ -319,12 +343,20 @@ Rgb WhittedIntegrator::shadowFilter(const SurfaceInteraction &si, const Vec3 &L,
         const ir::Material &m = scene_.material(blocker.crossing.leaf->material());
         if (blocker.object->opaque || !m.isTransparent()) return Rgb(0);
         SurfaceInteraction hit = scene_.surfaceAt(ray, blocker);
-        filter *= surfaceColour(m, hit) * m.filter + Rgb(m.transmit);
+        bool cutOut = false;
+        if (m.texel.pbr) {
+            TexelShading t = shadeTexel(m, texelImages(scene_, m), hit, ray.d, false);
+            cutOut = t.cutOut;  // alpha MASK: passes untouched, entering or leaving nothing
+            if (!cutOut) filter *= t.material.color * t.material.filter + Rgb(t.material.transmit);
+        } else {
+            filter *= surfaceColour(m, hit) * m.filter + Rgb(m.transmit);
+        }
         // The shadow ray starts with the interior list of the ray that hit the shaded point; at
         // each crossing light fades over the segment inside that solid, then the crossing
         // enters or leaves it (POV-Ray ComputeShadowTexture, ComputeShadowMedia)
         if (!inside) inside = stack;
-        if (inside->contains(hit.object)) {
+        if (cutOut) {
+        } else if (inside->contains(hit.object)) {
             filter *= interiorFade(interiorOf(hit.object), hit.t, true);
             inside->remove(hit.object);
         } else if (!inside->push(hit.object)) {

@@ -22,11 +22,12 @@ namespace rt::gltf {
 namespace {
 
 /// Extensions whose meaning the importer implements; any other in extensionsRequired is refused.
-constexpr std::array<std::string_view, 11> kSupportedExtensions = {
+constexpr std::array<std::string_view, 14> kSupportedExtensions = {
     "KHR_materials_emissive_strength", "KHR_texture_transform",   "KHR_materials_transmission",
     "KHR_materials_ior",               "KHR_materials_volume",    "KHR_materials_unlit",
     "KHR_lights_punctual",             "KHR_mesh_quantization",   "KHR_draco_mesh_compression",
-    "EXT_meshopt_compression",         "EXT_mesh_gpu_instancing"};
+    "EXT_meshopt_compression",         "EXT_mesh_gpu_instancing", "KHR_materials_clearcoat",
+    "KHR_materials_sheen",             "KHR_materials_specular"};
 
 bool isSupported(const std::string &ext) {
     return std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), ext) !=

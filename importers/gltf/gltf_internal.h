@@ -242,20 +242,25 @@ class MaterialMapper {
 
     ir::Material map(int index, bool &hidden);
     const DecodedImage *decodedImage(int textureIndex, const std::string &what);
-    int irTexture(int textureIndex, const std::string &what);
+    /// Mean of channel `channel` (0..3) over the texture `ref` names; 1 without one.
+    double textureMean(const ir::TextureRef &ref, int channel) const;
+    /// `srgb`: colour data (decoded to linear), else linear data (normals, roughness...).
+    int irTexture(int textureIndex, const std::string &what, bool srgb = true);
     /// The IR reference of a glTF textureInfo (`index`, `texCoord`, its `extensions`):
     /// the texture decoded once, TEXCOORD_0 or _1, and KHR_texture_transform (whose own
     /// `texCoord` overrides). Invalid (texture -1) with a warning naming `what` when the
     /// texture fails or uses a coordinate set other than 0 and 1.
     ir::TextureRef textureInfo(int textureIndex, int texCoord,
-                               const tinygltf::ExtensionMap &extensions, const std::string &what);
+                               const tinygltf::ExtensionMap &extensions, const std::string &what,
+                               bool srgb = true);
 
     const ImportContext &ctx_;
     ir::Scene &scene_;
     std::vector<Mapped> mapped_;  ///< by glTF material index + 1 (slot 0: default material)
     std::map<int, std::unique_ptr<DecodedImage>> images_;  ///< by image index; null = failed
     uint64_t decodedPixels_ = 0;  ///< declared pixels of the images decoded so far
-    std::map<int, int> textures_;  ///< glTF texture index -> IR texture index (-1 = failed)
+    /// (glTF texture index, sRGB) -> IR texture index (-1 = failed)
+    std::map<std::pair<int, bool>, int> textures_;
 };
 
 // Scene graph, cameras and lights (gltf_scene.cpp)

@@ -1,47 +1,29 @@
 // SPDX-License-Identifier: MIT
 // glTF metallic-roughness materials mapped to the IR's classic POV-Ray material, and textures.
 //
-// The mapping (gltf-notes section 10; heuristics that reproduce the smooth-metal and
-// rough-dielectric limits; every texture other than the base colour enters through its mean):
+// The mapping itself (every formula, clearcoat, sheen, specular, volume included) lives in
+// core/materials/pbr_material.cpp: this file reads the glTF material into an rt::PbrMaterial
+// and gives the classic ir::Material for it.
 //
-// Inputs
-//   C   = baseColorFactor.rgb
-//   a   = baseColorFactor.a x mean A of baseColorTexture (if any; MASK and BLEND only)
-//   m   = metallicFactor  x mean B of metallicRoughnessTexture (if any), clamped to [0,1]
-//   r   = roughnessFactor x mean G of metallicRoughnessTexture (if any), clamped to [0,1]
-//   E   = emissiveFactor x KHR_materials_emissive_strength.emissiveStrength
-//         x mean of emissiveTexture (sRGB decoded, per channel) if any
-//   t   = KHR_materials_transmission.transmissionFactor x mean R of transmissionTexture
-//   eta = KHR_materials_ior.ior (default 1.5; 0, the legacy mode, and values below 1 warn and
-//         use 1.5)
-//   volume = KHR_materials_volume.thicknessFactor > 0
-// Derived
-//   F0d = ((eta-1)/(eta+1))^2      F0 = mix(F0d * white, C, m)      g = (1-r)^2
-//   nB  = clamp(2/r^4 - 2, 1, 4000), r = 0 gives 4000 (Blinn-Phong exponent of GGX alpha r^2)
-// IR material
-//   color            = C; baseColorTexture -> Material::baseColorTexture (its RGB multiplies
-//                      color per hit; TEXCOORD_0 only)
-//   filter           = t (1-m)          (metals never transmit; tinted by C)
-//   transmit         = 1-a for alphaMode BLEND, else 0; filter is then cut so filter+transmit <= 1
-//   finish.ambient   = 0.1 (1 - m g)
-//   finish.diffuse   = (1-m)(1-t) + 0.5 m (1-g)   (keeps rough metals from going black)
-//   finish.specular  = clamp(lum(F0) (nB+8)/8, 0, 1), lum = (0.2126, 0.7152, 0.0722)
-//   finish.roughness = 1/nB             finish.metallic = m
-//   reflection       t > 0: fresnel on, reflectionMin 0, reflectionMax g (white),
-//                           conserveEnergy on
-//                    else:  reflectionMin g F0 (RGB), reflectionMax g (white), falloff 5
-//                           (a Schlick-like rise to grazing angles)
-//   emission         POV-Ray multiplies emission by the pigment colour, so wherever E_i > 0
-//                    the colour channel becomes c_i = max(C_i, 1e-3) and emission_i = E_i / c_i
-//                    (the product is E_i again; a base colour texture still modulates it)
-//   interior.ior     = eta if volume and t > 0, else 1 (thin-walled transmission goes straight
-//                      through, without bending)
-//   alphaMode MASK   a < alphaCutoff: the primitive is not rendered (a note); otherwise opaque
-//   KHR_materials_unlit: ambient 1, diffuse 0, no specular highlight, no reflection
+// Untextured materials are mapped once, exactly. A material with a metallicRoughness,
+// emissive, transmission, normal or occlusion texture, or whose alpha varies (MASK or BLEND
+// with a base colour texture, or COLOR_0 on the primitive), also carries its PbrMaterial
+// (Material::texel) and the renderer evaluates the mapping at every hit from the textures'
+// values there. Its constant fields hold the mapping of the textures' MEANS (B and G of
+// metallicRoughness, the sRGB-decoded emissive RGB, transmission R, occlusion R, base colour
+// A for BLEND), and for MASK transmit = the fraction of base colour texels cut out: the POV-Ray
+// export writes these, the best constant approximation (it cannot express per-texel roughness,
+// metalness, emission, alpha, normal or occlusion maps).
+//
+//   alphaMode MASK   untextured: alpha < alphaCutoff hides the primitive (a note); textured:
+//                    per texel, cut-out texels let rays and shadow rays straight through
+//   normalTexture    tangent space (TANGENT, else generated, gltf_tangents.cpp), per hit
+//   occlusionTexture 1 + strength (R - 1) scales the ambient term (glTF: indirect light only)
 //   No material      glTF's default material: white, metallic 1, roughness 1
 //   doubleSided      ignored (both renderers intersect both sides)
-// Not mapped: normalTexture, occlusionTexture, COLOR_0, KHR_materials_volume's attenuation,
-// texture alpha per hit (only its mean, through a), other material extensions.
+// Extensions mapped: KHR_materials_emissive_strength, _transmission, _ior, _volume (thickness,
+// attenuation), _unlit, _clearcoat, _sheen, _specular (factors; their textures are not read,
+// a warning). Any other KHR_materials_* extension the file uses gets one warning.
 // Materials are deduplicated through Scene::addMaterial.
 #include <algorithm>
 #include <array>
@@ -52,7 +34,9 @@
 #include <string_view>
 
 #include "core/image/image_limits.h"
+#include "core/materials/pbr_material.h"
 #include "importers/gltf/gltf_internal.h"
+#include "importers/gltf/gltf_tangents.h"
 
 namespace rt::gltf::detail {
 
@@ -112,14 +96,12 @@ constexpr int kWrapRepeat = 10497;
 constexpr int kWrapClamp = 33071;
 constexpr int kWrapMirror = 33648;
 
-/// Below this a colour channel cannot carry emission: POV-Ray multiplies emission by the
-/// pigment, so the channel is raised to it and the emission divided by it.
-constexpr double kMinEmissiveColor = 1e-3;
-/// Specular exponent for a perfectly smooth surface (r = 0) and the mapping's upper bound.
-constexpr double kMaxSpecularExponent = 4000;
-
-double sq(double x) { return x * x; }
-double luminance(const Rgb &c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+/// The material extensions the mapping reads (pbr_material.cpp); any other KHR_materials_*
+/// extension a file uses is warned about once.
+constexpr std::array<std::string_view, 8> kMappedExtensions = {
+    "KHR_materials_emissive_strength", "KHR_materials_transmission", "KHR_materials_ior",
+    "KHR_materials_volume",            "KHR_materials_unlit",        "KHR_materials_clearcoat",
+    "KHR_materials_sheen",             "KHR_materials_specular"};
 
 const tinygltf::Value *extension(const tinygltf::ExtensionMap &exts, const char *name) {
     auto it = exts.find(name);
@@ -147,10 +129,32 @@ Rgb rgbOf(const std::vector<double> &v, Rgb fallback) {
     return v.size() >= 3 ? Rgb(v[0], v[1], v[2]) : fallback;
 }
 
+/// A 3-number array member of an extension object, or `fallback`.
+Rgb numbers3(const tinygltf::Value *ext, const char *key, Rgb fallback) {
+    if (!ext || !ext->Has(key)) return fallback;
+    const tinygltf::Value &v = ext->Get(key);
+    if (!v.IsArray() || v.ArrayLen() != 3) return fallback;
+    Rgb out;
+    for (int c = 0; c < 3; ++c) {
+        const tinygltf::Value &x = v.Get(c);
+        if (!x.IsNumber() || !std::isfinite(x.GetNumberAsDouble())) return fallback;
+        out[c] = x.GetNumberAsDouble();
+    }
+    return out;
+}
+
 }  // namespace
 
 MaterialMapper::MaterialMapper(const ImportContext &ctx, ir::Scene &scene)
-    : ctx_(ctx), scene_(scene), mapped_(ctx.model.materials.size() + 1) {}
+    : ctx_(ctx), scene_(scene), mapped_(ctx.model.materials.size() + 1) {
+    // One warning per file for each material extension the mapping cannot express
+    for (const std::string &ext : ctx.model.extensionsUsed)
+        if (ext.rfind("KHR_materials_", 0) == 0 &&
+            std::find(kMappedExtensions.begin(), kMappedExtensions.end(), ext) ==
+                kMappedExtensions.end())
+            ctx.warning(ext + " (used by " + ctx.loc.fileName() + ") is not mapped to the classic "
+                        "material; materials render without it");
+}
 
 MaterialMapper::~MaterialMapper() = default;
 
@@ -166,17 +170,44 @@ std::optional<int> MaterialMapper::irMaterial(int index, const ir::Mesh &mesh,
         slot.done = true;
     }
     if (slot.hidden) return std::nullopt;
-    const ir::TextureRef &base = slot.material.baseColorTexture;
-    if (base.valid() && (base.texCoord == 1 ? mesh.uvs1 : mesh.uvs).empty()) {
-        ctx_.warning(primitivePath + ": no TEXCOORD_" +
-                     std::to_string(base.texCoord) +
-                     " for the base colour texture of " +
-                     jsonPath("materials", static_cast<size_t>(index)) + "; texture ignored");
-        ir::Material plain = slot.material;
-        plain.baseColorTexture = {};
-        return scene_.addMaterial(plain);
+    ir::Material mat = slot.material;
+    std::string matPath = index < 0 ? std::string("the default material")
+                                    : jsonPath("materials", static_cast<size_t>(index));
+    // Textures whose coordinate set this primitive lacks are left out
+    auto usable = [&](ir::TextureRef &ref, const char *what, const char *instead) {
+        if (!ref.valid() || !(ref.texCoord == 1 ? mesh.uvs1 : mesh.uvs).empty()) return false;
+        ctx_.warning(primitivePath + ": no TEXCOORD_" + std::to_string(ref.texCoord) + " for the " +
+                     what + " texture of " + matPath + "; " + instead);
+        ref = {};
+        return true;
+    };
+    usable(mat.baseColorTexture, "base colour", "texture ignored");
+    if (mat.texel.pbr) {
+        PbrMaterial p = *mat.texel.pbr;
+        const char *mean = "its mean used";
+        bool changed = usable(p.metallicRoughnessTexture, "metallic-roughness", mean);
+        changed |= usable(p.normalTexture, "normal", "texture ignored");
+        changed |= usable(p.occlusionTexture, "occlusion", mean);
+        changed |= usable(p.emissiveTexture, "emissive", mean);
+        changed |= usable(p.transmissionTexture, "transmission", mean);
+        // Per-texel evaluation only where something varies over the surface
+        bool alphaVaries = p.alphaMode != PbrMaterial::AlphaMode::Opaque &&
+                           (mat.baseColorTexture.valid() || !mesh.colors.empty());
+        if (!p.textured() && !alphaVaries)
+            mat.texel = {};
+        else if (changed)
+            mat.texel.pbr = std::make_shared<const PbrMaterial>(p);
+        if (mat.texel.pbr && p.normalTexture.valid() && mesh.tangents.empty()) {
+            // No TANGENT: generated into a copy of the mesh, which replaces it in the scene
+            for (ir::MeshPtr &m : scene_.meshes) {
+                if (m.get() != &mesh) continue;
+                auto withTangents = std::make_shared<ir::Mesh>(mesh);
+                if (generateTangents(*withTangents, p.normalTexture.texCoord)) m = withTangents;
+                break;
+            }
+        }
     }
-    return scene_.addMaterial(slot.material);
+    return scene_.addMaterial(mat);
 }
 
 ir::Material MaterialMapper::map(int index, bool &hidden) {
@@ -187,66 +218,25 @@ ir::Material MaterialMapper::map(int index, bool &hidden) {
                                  : jsonPath("materials", static_cast<size_t>(index));
     if (!gm.name.empty()) path += " ('" + gm.name + "')";
     const tinygltf::PbrMetallicRoughness &pbr = gm.pbrMetallicRoughness;
+    PbrMaterial p;
 
-    // Inputs: factors, scaled by the means of their textures
+    // Factors
     if (pbr.baseColorFactor.size() != 4)
         ctx_.warning(path + ": baseColorFactor needs 4 numbers; white used");
     bool validBase = pbr.baseColorFactor.size() == 4;
-    Rgb baseColor = validBase ? rgbOf(pbr.baseColorFactor, Rgb(1)) : Rgb(1);
-    double alpha = validBase ? pbr.baseColorFactor[3] : 1.0;
-    double metallic = pbr.metallicFactor, roughness = pbr.roughnessFactor;
-    if (pbr.metallicRoughnessTexture.index >= 0) {
-        std::string what = path + ".pbrMetallicRoughness.metallicRoughnessTexture";
-        if (const DecodedImage *img = decodedImage(pbr.metallicRoughnessTexture.index, what)) {
-            // Linear data: B = metalness, G = roughness
-            double sumB = 0, sumG = 0;
-            for (size_t p = 0; p < img->pixels(); ++p) {
-                sumB += img->channel(p, 2);
-                sumG += img->channel(p, 1);
-            }
-            metallic *= sumB / static_cast<double>(img->pixels());
-            roughness *= sumG / static_cast<double>(img->pixels());
-        }
-    }
-    metallic = clamp(metallic, 0.0, 1.0);
-    roughness = clamp(roughness, 0.0, 1.0);
-    if (pbr.baseColorTexture.index >= 0 && gm.alphaMode != "OPAQUE") {
-        std::string what = path + ".pbrMetallicRoughness.baseColorTexture";
-        if (const DecodedImage *img = decodedImage(pbr.baseColorTexture.index, what)) {
-            double sumA = 0;
-            for (size_t p = 0; p < img->pixels(); ++p) sumA += img->channel(p, 3);
-            alpha *= sumA / static_cast<double>(img->pixels());
-        }
-    }
+    p.baseColor = validBase ? rgbOf(pbr.baseColorFactor, Rgb(1)) : Rgb(1);
+    p.alpha = validBase ? pbr.baseColorFactor[3] : 1.0;
+    p.metallic = clamp(pbr.metallicFactor, 0.0, 1.0);
+    p.roughness = clamp(pbr.roughnessFactor, 0.0, 1.0);
 
     const tinygltf::Value *strengthExt =
         extension(gm.extensions, "KHR_materials_emissive_strength");
     double strength = number(strengthExt, "emissiveStrength", 1.0);
-    Rgb emissive = rgbOf(gm.emissiveFactor, Rgb(0)) * std::max(strength, 0.0);
-    if (gm.emissiveTexture.index >= 0 && !emissive.isBlack()) {
-        if (const DecodedImage *img =
-                decodedImage(gm.emissiveTexture.index, path + ".emissiveTexture")) {
-            Rgb sum(0);
-            for (size_t p = 0; p < img->pixels(); ++p)
-                for (int c = 0; c < 3; ++c) sum[c] += img->linear(p, c);
-            emissive *= sum / static_cast<double>(img->pixels());
-        }
-    }
+    p.emissive = rgbOf(gm.emissiveFactor, Rgb(0)) * std::max(strength, 0.0);
 
     const tinygltf::Value *transmissionExt = extension(gm.extensions, "KHR_materials_transmission");
-    double transmission = number(transmissionExt, "transmissionFactor", 0.0);
-    int transmissionTex = textureRef(transmissionExt, "transmissionTexture");
-    if (transmissionTex >= 0 && transmission > 0) {
-        std::string what = path + ".extensions.KHR_materials_transmission.transmissionTexture";
-        if (const DecodedImage *img = decodedImage(transmissionTex, what)) {
-            double sum = 0;
-            for (size_t p = 0; p < img->pixels(); ++p) sum += img->channel(p, 0);
-            transmission *= sum / static_cast<double>(img->pixels());
-        }
-    }
-    transmission = clamp(transmission, 0.0, 1.0);
+    p.transmission = clamp(number(transmissionExt, "transmissionFactor", 0.0), 0.0, 1.0);
 
-    double eta = 1.5;
     if (const tinygltf::Value *iorExt = extension(gm.extensions, "KHR_materials_ior")) {
         double ior = number(iorExt, "ior", 1.5);
         if (ior == 0)
@@ -257,86 +247,136 @@ ir::Material MaterialMapper::map(int index, bool &hidden) {
             ctx_.warning(path + ": KHR_materials_ior ior " + std::to_string(ior) +
                          " is below 1; 1.5 used");
         else
-            eta = ior;
+            p.ior = ior;
     }
-    bool volume =
-        number(extension(gm.extensions, "KHR_materials_volume"), "thicknessFactor", 0.0) > 0;
-    bool unlit = extension(gm.extensions, "KHR_materials_unlit") != nullptr;
+    const tinygltf::Value *volumeExt = extension(gm.extensions, "KHR_materials_volume");
+    p.thickness = std::max(number(volumeExt, "thicknessFactor", 0.0), 0.0);
+    p.attenuationColor = numbers3(volumeExt, "attenuationColor", Rgb(1));
+    p.attenuationDistance = number(volumeExt, "attenuationDistance", 0.0);
+    if (!(p.attenuationDistance > 0)) p.attenuationDistance = 0;
+    p.unlit = extension(gm.extensions, "KHR_materials_unlit") != nullptr;
 
-    // Derived quantities
-    double f0d = sq((eta - 1) / (eta + 1));
-    Rgb f0 = Rgb(f0d) * (1 - metallic) + baseColor * metallic;
-    double gloss = sq(1 - roughness);
-    double exponent = roughness <= 0
-                          ? kMaxSpecularExponent
-                          : clamp(2 / std::pow(roughness, 4) - 2, 1.0, kMaxSpecularExponent);
+    const tinygltf::Value *coatExt = extension(gm.extensions, "KHR_materials_clearcoat");
+    p.clearcoat = clamp(number(coatExt, "clearcoatFactor", 0.0), 0.0, 1.0);
+    p.clearcoatRoughness = clamp(number(coatExt, "clearcoatRoughnessFactor", 0.0), 0.0, 1.0);
+    const tinygltf::Value *sheenExt = extension(gm.extensions, "KHR_materials_sheen");
+    p.sheenColor = numbers3(sheenExt, "sheenColorFactor", Rgb(0));
+    p.sheenRoughness = clamp(number(sheenExt, "sheenRoughnessFactor", 0.0), 0.0, 1.0);
+    const tinygltf::Value *specularExt = extension(gm.extensions, "KHR_materials_specular");
+    p.specular = clamp(number(specularExt, "specularFactor", 1.0), 0.0, 1.0);
+    p.specularColor = numbers3(specularExt, "specularColorFactor", Rgb(1));
+    for (int c = 0; c < 3; ++c) p.specularColor[c] = std::max(p.specularColor[c], 0.0);
+    // Their textures are not read (the factors are)
+    struct ExtTexture { const tinygltf::Value *ext; const char *name, *key; };
+    for (const ExtTexture &t : {ExtTexture{coatExt, "KHR_materials_clearcoat", "clearcoatTexture"},
+                                ExtTexture{coatExt, "KHR_materials_clearcoat", "clearcoatRoughnessTexture"},
+                                ExtTexture{coatExt, "KHR_materials_clearcoat", "clearcoatNormalTexture"},
+                                ExtTexture{sheenExt, "KHR_materials_sheen", "sheenColorTexture"},
+                                ExtTexture{sheenExt, "KHR_materials_sheen", "sheenRoughnessTexture"},
+                                ExtTexture{specularExt, "KHR_materials_specular", "specularTexture"},
+                                ExtTexture{specularExt, "KHR_materials_specular", "specularColorTexture"},
+                                ExtTexture{volumeExt, "KHR_materials_volume", "thicknessTexture"}})
+        if (textureRef(t.ext, t.key) >= 0)
+            ctx_.warning(path + ".extensions." + t.name + "." + t.key +
+                         " is not read (scadray maps the extension's factors only)");
 
-    ir::Material mat;
-    mat.loc = ctx_.loc;
-    mat.color = baseColor;
+    if (gm.alphaMode == "BLEND")
+        p.alphaMode = PbrMaterial::AlphaMode::Blend;
+    else if (gm.alphaMode == "MASK")
+        p.alphaMode = PbrMaterial::AlphaMode::Mask;
+    else if (gm.alphaMode != "OPAQUE")
+        ctx_.warning(path + ": unknown alphaMode '" + gm.alphaMode + "'; OPAQUE used");
+    p.alphaCutoff = gm.alphaCutoff;
+
+    // Texture slots, and the means the constant fields use
+    PbrInputs mean = pbrFactors(p);
+    ir::TextureRef base;
     if (pbr.baseColorTexture.index >= 0)
-        mat.baseColorTexture = textureInfo(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
-                                           pbr.baseColorTexture.extensions,
-                                           path + ".pbrMetallicRoughness.baseColorTexture");
+        base = textureInfo(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+                           pbr.baseColorTexture.extensions,
+                           path + ".pbrMetallicRoughness.baseColorTexture");
+    double cutFraction = 0;  // MASK: the share of base colour texels cut out
+    if (base.valid() && p.alphaMode != PbrMaterial::AlphaMode::Opaque) {
+        const ir::Texture &img = *scene_.textures[static_cast<size_t>(base.texture)];
+        double sumA = 0, cut = 0;
+        size_t texels = img.rgba.size() / 4;
+        for (size_t t = 0; t < texels; ++t) {
+            double a = img.rgba[t * 4 + 3];
+            sumA += a;
+            cut += p.alpha * a < p.alphaCutoff;
+        }
+        if (texels > 0) {
+            mean.alpha *= sumA / static_cast<double>(texels);
+            cutFraction = cut / static_cast<double>(texels);
+        }
+    }
+    const tinygltf::TextureInfo &mr = pbr.metallicRoughnessTexture;
+    if (mr.index >= 0) {
+        p.metallicRoughnessTexture =
+            textureInfo(mr.index, mr.texCoord, mr.extensions,
+                        path + ".pbrMetallicRoughness.metallicRoughnessTexture", false);
+        // Linear data: B = metalness, G = roughness
+        mean.metallic *= textureMean(p.metallicRoughnessTexture, 2);
+        mean.roughness *= textureMean(p.metallicRoughnessTexture, 1);
+    }
+    if (gm.emissiveTexture.index >= 0 && !p.emissive.isBlack()) {
+        p.emissiveTexture = textureInfo(gm.emissiveTexture.index, gm.emissiveTexture.texCoord,
+                                        gm.emissiveTexture.extensions, path + ".emissiveTexture");
+        for (int c = 0; c < 3; ++c) mean.emissive[c] *= textureMean(p.emissiveTexture, c);
+    }
+    int transmissionTex = textureRef(transmissionExt, "transmissionTexture");
+    if (transmissionTex >= 0 && p.transmission > 0) {
+        const tinygltf::Value &info = transmissionExt->Get("transmissionTexture");
+        tinygltf::ExtensionMap infoExts;
+        if (info.Has("extensions") && info.Get("extensions").IsObject())
+            for (const std::string &key : info.Get("extensions").Keys())
+                infoExts[key] = info.Get("extensions").Get(key);
+        p.transmissionTexture =
+            textureInfo(transmissionTex, static_cast<int>(number(&info, "texCoord", 0)), infoExts,
+                        path + ".extensions.KHR_materials_transmission.transmissionTexture", false);
+        mean.transmission *= textureMean(p.transmissionTexture, 0);
+    }
+    if (gm.normalTexture.index >= 0 && gm.normalTexture.scale != 0) {
+        p.normalTexture = textureInfo(gm.normalTexture.index, gm.normalTexture.texCoord,
+                                      gm.normalTexture.extensions, path + ".normalTexture", false);
+        p.normalScale = gm.normalTexture.scale;
+    }
+    if (gm.occlusionTexture.index >= 0 && gm.occlusionTexture.strength != 0) {
+        p.occlusionTexture =
+            textureInfo(gm.occlusionTexture.index, gm.occlusionTexture.texCoord,
+                        gm.occlusionTexture.extensions, path + ".occlusionTexture", false);
+        p.occlusionStrength = clamp(gm.occlusionTexture.strength, 0.0, 1.0);
+        if (p.occlusionTexture.valid())
+            mean.occlusion = 1 + p.occlusionStrength * (textureMean(p.occlusionTexture, 0) - 1);
+    }
 
-    // Transparency: transmission (tinted) and alpha coverage (untinted)
-    mat.filter = transmission * (1 - metallic);
-    if (gm.alphaMode == "BLEND") {
-        mat.transmit = clamp(1 - alpha, 0.0, 1.0);
-    } else if (gm.alphaMode == "MASK") {
-        if (alpha < gm.alphaCutoff) {
+    ir::Material mat = classicMaterial(p, mean);
+    mat.loc = ctx_.loc;
+    mat.baseColorTexture = base;
+    if (p.alphaMode == PbrMaterial::AlphaMode::Mask) {
+        if (base.valid()) {
+            mat.transmit = cutFraction;  // the constant approximation (export)
+            mat.filter = std::min(mat.filter, 1 - mat.transmit);
+        } else if (p.alpha < p.alphaCutoff) {
             hidden = true;
-            ctx_.note(path + ": alphaMode MASK with alpha " + std::to_string(alpha) +
-                      " below the cutoff " + std::to_string(gm.alphaCutoff) +
+            ctx_.note(path + ": alphaMode MASK with alpha " + std::to_string(p.alpha) +
+                      " below the cutoff " + std::to_string(p.alphaCutoff) +
                       "; its primitives are not rendered");
         }
-    } else if (gm.alphaMode != "OPAQUE") {
-        ctx_.warning(path + ": unknown alphaMode '" + gm.alphaMode + "'; OPAQUE used");
     }
-    mat.filter = std::min(mat.filter, 1 - mat.transmit);
-
-    // Local illumination
-    ir::Finish &f = mat.finish;
-    f.ambient = 0.1 * (1 - metallic * gloss);
-    f.diffuse = (1 - metallic) * (1 - transmission) + 0.5 * metallic * (1 - gloss);
-    f.brilliance = 1;
-    f.phong = 0;
-    f.specular = clamp(luminance(f0) * (exponent + 8) / 8, 0.0, 1.0);
-    f.roughness = 1 / exponent;
-    f.metallic = metallic;
-
-    // Reflection
-    if (transmission > 0) {
-        f.fresnel = true;
-        f.reflectionMin = Rgb(0);
-        f.reflectionMax = Rgb(gloss);
-        f.conserveEnergy = true;
-    } else {
-        f.reflectionMin = f0 * gloss;
-        f.reflectionMax = Rgb(gloss);
-        f.reflectionFalloff = 5;
-    }
-
-    // Emission, divided by the colour POV-Ray will multiply it with
-    for (int c = 0; c < 3; ++c) {
-        if (emissive[c] > 0) {
-            mat.color[c] = std::max(mat.color[c], kMinEmissiveColor);
-            f.emission[c] = emissive[c] / mat.color[c];
-        }
-    }
-
-    mat.interior.ior = volume && transmission > 0 ? eta : 1.0;
-
-    if (unlit) {
-        f.ambient = 1;
-        f.diffuse = 0;
-        f.specular = 0;
-        f.reflectionMin = Rgb(0);
-        f.reflectionMax = Rgb(0);
-        f.fresnel = false;
-        f.conserveEnergy = false;
-    }
+    // Kept for every material; irMaterial drops it where nothing varies per texel
+    mat.texel.pbr = std::make_shared<const PbrMaterial>(p);
     return mat;
+}
+
+double MaterialMapper::textureMean(const ir::TextureRef &ref, int channel) const {
+    if (!ref.valid()) return 1;
+    const ir::Texture &img = *scene_.textures[static_cast<size_t>(ref.texture)];
+    size_t texels = img.rgba.size() / 4;
+    if (texels == 0) return 1;
+    double sum = 0;
+    for (size_t t = 0; t < texels; ++t) sum += img.rgba[t * 4 + static_cast<size_t>(channel)];
+    return sum / static_cast<double>(texels);
 }
 
 const MaterialMapper::DecodedImage *MaterialMapper::decodedImage(int textureIndex,
@@ -426,10 +466,10 @@ const MaterialMapper::DecodedImage *MaterialMapper::decodedImage(int textureInde
     return it->second.get();
 }
 
-int MaterialMapper::irTexture(int textureIndex, const std::string &what) {
-    auto found = textures_.find(textureIndex);
+int MaterialMapper::irTexture(int textureIndex, const std::string &what, bool srgb) {
+    auto found = textures_.find({textureIndex, srgb});
     if (found != textures_.end()) return found->second;
-    int &slot = textures_[textureIndex];
+    int &slot = textures_[{textureIndex, srgb}];
     slot = -1;
     const DecodedImage *img = decodedImage(textureIndex, what);
     if (!img) return -1;
@@ -438,10 +478,11 @@ int MaterialMapper::irTexture(int textureIndex, const std::string &what) {
     tex->width = img->width;
     tex->height = img->height;
     tex->loc = ctx_.loc;
-    // Base colour is sRGB-encoded; alpha is linear
+    // Colour is sRGB-encoded, data (normals, roughness...) linear; alpha is linear
     tex->rgba.resize(img->pixels() * 4);
     for (size_t p = 0; p < img->pixels(); ++p) {
-        for (int c = 0; c < 3; ++c) tex->rgba[p * 4 + static_cast<size_t>(c)] = img->linear(p, c);
+        for (int c = 0; c < 3; ++c)
+            tex->rgba[p * 4 + static_cast<size_t>(c)] = srgb ? img->linear(p, c) : img->channel(p, c);
         tex->rgba[p * 4 + 3] = img->channel(p, 3);
     }
 
@@ -466,7 +507,7 @@ int MaterialMapper::irTexture(int textureIndex, const std::string &what) {
     }
 
     // A file-name-safe name, unique in the scene (a file may be imported more than once)
-    std::string name = ctx_.baseName + "_tex" + std::to_string(textureIndex);
+    std::string name = ctx_.baseName + "_tex" + std::to_string(textureIndex) + (srgb ? "" : "_data");
     auto taken = [&](const std::string &n) {
         return std::any_of(scene_.textures.begin(), scene_.textures.end(),
                            [&](const ir::TexturePtr &t) { return t->name == n; });
@@ -482,7 +523,7 @@ int MaterialMapper::irTexture(int textureIndex, const std::string &what) {
 
 ir::TextureRef MaterialMapper::textureInfo(int textureIndex, int texCoord,
                                            const tinygltf::ExtensionMap &extensions,
-                                           const std::string &what) {
+                                           const std::string &what, bool srgb) {
     ir::TextureRef ref;
     const tinygltf::Value *transform = extension(extensions, "KHR_texture_transform");
     if (transform) {
@@ -512,7 +553,7 @@ ir::TextureRef MaterialMapper::textureInfo(int textureIndex, int texCoord,
         return {};
     }
     ref.texCoord = texCoord;
-    ref.texture = irTexture(textureIndex, what);
+    ref.texture = irTexture(textureIndex, what, srgb);
     return ref.texture >= 0 ? ref : ir::TextureRef{};
 }
 

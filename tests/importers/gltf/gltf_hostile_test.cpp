@@ -256,9 +256,10 @@ std::string importWithTexture(const std::vector<unsigned char> &image,
     DiagnosticSink diag;
     ir::Scene scene = importGltf(tmp.file("tex.gltf"), diag, opts);
     EXPECT_EQ(instancedTriangles(scene), 1u);
-    EXPECT_TRUE(scene.textures.empty());
+    EXPECT_LE(scene.textures.size(), 1u);  // kept (for per-texel use) only when it decodes
     std::string warnings;
-    for (const auto &d : diag.all()) warnings += d.message + "\n";
+    for (const auto &d : diag.all())
+        if (d.message.find("no TEXCOORD_0") == std::string::npos) warnings += d.message + "\n";
     return warnings;
 }
 

@@ -382,7 +382,9 @@ TEST(GltfLights, LightsPunctualLampHasFivePointLights) {
     bool filterFound = false;
     for (const ir::Material &m : scene.materials) filterFound |= m.filter > 0;
     EXPECT_TRUE(filterFound);
-    EXPECT_EQ(scene.textures.size(), 2u);
+    // Base colour (2) and emissive (1) textures decoded as colour, normal (2), metallic-
+    // roughness (1) and transmission (1) textures as linear data, read per texel; all clamped
+    EXPECT_EQ(scene.textures.size(), 7u);
     for (const auto &t : scene.textures) EXPECT_FALSE(t->repeatU);
     EXPECT_EQ(diag.count(Severity::Warning), 0);
 }
