@@ -7,15 +7,18 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 
 #include "core/image/image_io.h"
 #include "core/ir/revolved_mesh.h"
+#include "core/materials/texture_sampler.h"
 #include "core/math/degree_trig.h"
 #include "core/system/temp_file.h"
 #include "exporters/povray/pov_format.h"
+#include "exporters/povray/pov_texture.h"
 
 namespace rt::pov {
 
@@ -168,7 +171,10 @@ class Writer {
     void collectUsed(const ir::Node &n) {
         if (n.kind == ir::NodeKind::Primitive) {
             used_.insert(n.material);
-            if (const auto *m = std::get_if<ir::MeshPrim>(&n.shape)) usedMeshes_.insert(m->mesh);
+            if (const auto *m = std::get_if<ir::MeshPrim>(&n.shape)) {
+                usedMeshes_.insert(m->mesh);
+                meshMaterials_[m->mesh].insert(n.material);
+            }
         }
         for (const auto &c : n.children) collectUsed(*c);
     }
@@ -268,14 +274,7 @@ class Writer {
                 << " = texture {\n";
             const ir::Texture *tex = m.baseColorTexture.valid() ? scene_.textures[m.baseColorTexture.texture].get() : nullptr;
             if (tex) {
-                // The colour factor is baked into a linear 16-bit copy of the texture; uv
-                // coordinates come from the mesh2 (v flipped: POV-Ray's image origin is at the
-                // bottom left)
-                std::string file = assetPrefix_ + "_" + materialName(i) + ".png";
-                if (images_) images_->push_back({file, bakedTexture(*tex, m.color)});
-                os_ << "    uv_mapping\n"
-                    << "    pigment { image_map { png \"" << file << "\" gamma 1.0 interpolate 2 filter all "
-                    << num(m.filter) << " transmit all " << num(m.transmit) << " } }\n";
+                os_ << "    uv_mapping\n" << texturedPigment(i, m, *tex);
             } else {
                 os_ << "    pigment { rgbft <" << num(m.color.r) << ", " << num(m.color.g) << ", "
                     << num(m.color.b) << ", " << num(m.filter) << ", " << num(m.transmit) << "> }\n";
@@ -331,14 +330,52 @@ class Writer {
         return out;
     }
 
-    static Image bakedTexture(const ir::Texture &tex, const Rgb &factor) {
-        Image img(tex.width, tex.height);
-        for (int y = 0; y < tex.height; ++y)
-            for (int x = 0; x < tex.width; ++x) {
-                const float *p = &tex.rgba[4 * (size_t(y) * tex.width + x)];
-                img.set(x, y, Rgb(p[0], p[1], p[2]) * factor);
+    /// How a material's base colour texture alpha makes it see-through. The IR carries no
+    /// alpha mode yet (the renderer reads texture alpha only through the importer's mean, in
+    /// Material::transmit), so the texture is opaque here and the material's own transmit
+    /// applies to every texel; texturePigment expresses MASK and BLEND once the IR says them.
+    static TextureAlpha textureAlpha(const ir::Material &) { return {}; }
+
+    /// The uv_mapping pigment of a textured material: colour factor, wrap modes, filter,
+    /// KHR_texture_transform and alpha baked as pov_texture.h describes; the images go to
+    /// images_. The transform's reach comes from every mesh the material is placed on.
+    std::string texturedPigment(int index, const ir::Material &m, const ir::Texture &tex) {
+        const ir::TextureRef &ref = m.baseColorTexture;
+        UvRange range;
+        for (const auto &[mesh, materials] : meshMaterials_) {
+            if (!materials.count(index)) continue;
+            const ir::Mesh &me = *scene_.meshes[mesh];
+            for (const auto &uv : ref.texCoord == 1 ? me.uvs1 : me.uvs) {
+                double u = uv[0], v = uv[1];
+                transformTexCoord(ref, &u, &v);
+                range.add(u, v);
             }
-        return img;
+        }
+        TextureAlpha alpha = textureAlpha(m);
+        double transmit = alpha.mode == TextureAlpha::Mode::Opaque ? m.transmit : 0;
+        TexturePigment p = texturePigment(tex, ref, m.color, alpha, range, m.filter, transmit,
+                                          assetPrefix_ + "_" + materialName(index));
+        if (images_)
+            for (TextureFile &f : p.files) images_->push_back(std::move(f));
+        return p.sdl;
+    }
+
+    /// The texture coordinate set mesh2 `mesh` carries (it has one uv_vectors): the one the
+    /// base colour textures placed on it read, TEXCOORD_0 when none does or when they
+    /// disagree (`note` then says so).
+    const std::vector<std::array<float, 2>> &exportedUvs(int mesh, std::string *note) const {
+        const ir::Mesh &m = *scene_.meshes[mesh];
+        std::set<int> sets;
+        auto it = meshMaterials_.find(mesh);
+        if (it != meshMaterials_.end())
+            for (int mat : it->second) {
+                const ir::TextureRef &ref = scene_.materials[mat].baseColorTexture;
+                if (ref.valid()) sets.insert(ref.texCoord);
+            }
+        if (sets.size() > 1)
+            *note = "    // scadray: textures on this mesh read both TEXCOORD_0 and TEXCOORD_1; "
+                    "mesh2 holds one set: TEXCOORD_0 written\n";
+        return sets.size() == 1 && *sets.begin() == 1 && !m.uvs1.empty() ? m.uvs1 : m.uvs;
     }
 
     /// Each mesh once, as mesh2; objects place it. A closed mesh gets an inside_vector, so
@@ -362,9 +399,11 @@ class Writer {
                 for (const Vec3 &n : m.normals) os_ << ",\n        " << vec(n);
                 os_ << "\n    }\n";
             }
-            if (!m.uvs.empty()) {
-                os_ << "    uv_vectors {\n        " << m.uvs.size();
-                for (const auto &uv : m.uvs) os_ << ",\n        <" << num(uv[0]) << ", " << num(1.0 - double(uv[1])) << ">";
+            std::string uvNote;
+            const auto &uvs = exportedUvs(i, &uvNote);
+            if (!uvs.empty()) {
+                os_ << uvNote << "    uv_vectors {\n        " << uvs.size();
+                for (const auto &uv : uvs) os_ << ",\n        <" << num(uv[0]) << ", " << num(1.0 - double(uv[1])) << ">";
                 os_ << "\n    }\n";
             }
             os_ << "    face_indices {\n        " << faces.size();
@@ -489,6 +528,7 @@ class Writer {
     std::string assetPrefix_;
     std::vector<TextureFile> *images_;
     std::set<int> used_, usedMeshes_;
+    std::map<int, std::set<int>> meshMaterials_;  ///< mesh -> materials it is placed with
     std::ostringstream os_;
 };
 
