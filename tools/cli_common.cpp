@@ -18,6 +18,7 @@
 
 #include "core/image/image_io.h"
 #include "core/ir/scene_defaults.h"
+#include "core/render/environment.h"
 #include "exporters/povray/pov_writer.h"
 #include "importers/gltf/gltf_importer.h"
 #include "importers/mesh/mesh_reader.h"
@@ -74,6 +75,14 @@ void SceneArgs::addTo(CLI::App &cmd) {
               "Cap on .scad vector elements alive at once (about 24 bytes each), which also "
               "bounds one comparison of vectors",
               int64_t{1}, int64_t{1} << 40);
+    cmd.add_option("-e,--environment", environment,
+                   "What rays leaving the scene see: none (the background colour), studio (a "
+                   "grey gradient sky) or an equirectangular image file (.exr, .hdr; top row "
+                   "up). Default: studio for .gltf/.glb, none otherwise");
+    addNumber(cmd, "--env-rotate", environmentRotate,
+              "Turn the environment about +Z by this many degrees (counterclockwise seen "
+              "from above)",
+              -360.0, 360.0);
 }
 
 LoadOptions SceneArgs::loadOptions(bool quiet) const {
@@ -86,6 +95,8 @@ LoadOptions SceneArgs::loadOptions(bool quiet) const {
     auto mode = ir::parseFacetMode(facets.empty() ? "auto" : facets);
     if (!mode) throw std::invalid_argument("--facets must be smooth, openscad or auto");
     lo.facets = *mode;
+    lo.environment = environment;
+    lo.environmentRotate = environmentRotate;
     return lo;
 }
 
@@ -131,6 +142,23 @@ ir::Scene loadScene(const std::string &path, DiagnosticSink &diag, const LoadOpt
     requireRegularFile(path);
     std::string ext = fs::path(path).extension().string();
     for (auto &ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    // The environment first, so a bad -e image fails before a long evaluation: glTF models
+    // get the studio sky unless -e says otherwise
+    std::string envName = opts.environment.empty()
+                              ? (ext == ".gltf" || ext == ".glb" ? "studio" : "none")
+                              : opts.environment;
+    ir::Environment env;
+    if (envName == "studio") {
+        env = ir::studioEnvironment();
+        env.rotateDegrees = opts.environmentRotate;
+    } else if (envName != "none") {
+        try {
+            requireRegularFile(envName);
+        } catch (const std::exception &e) {
+            throw std::runtime_error(std::string("environment image (-e) ") + e.what());
+        }
+        env = loadEnvironmentImage(envName, opts.environmentRotate, diag);
+    }
     ir::Scene scene;
     if (ext == ".scad") {
         scad::ImportOptions io;
@@ -158,9 +186,13 @@ ir::Scene loadScene(const std::string &path, DiagnosticSink &diag, const LoadOpt
         throw std::runtime_error(path + ": unknown scene type '" + ext +
                                  "' (scadray reads .scad, .gltf, .glb, .stl and .off)");
     }
+    scene.settings.environment = std::move(env);
     // Facets first: the automatic camera frames the solids as they will be drawn
     ir::applyFacets(scene, opts.facets, diag);
-    ir::completeScene(scene, diag);
+    ir::CompleteOptions co;
+    co.framing = ext != ".scad" ? ir::Framing::Viewer : ir::Framing::OpenScad;
+    co.aspect = opts.aspect;
+    ir::completeScene(scene, diag, co);
     return scene;
 }
 

@@ -34,6 +34,13 @@ struct LoadOptions {
     ir::FacetMode facets = ir::FacetMode::Auto;
     int64_t maxSteps = scad::kDefaultMaxSteps;  ///< .scad evaluation step cap; 0 = none
     int64_t maxElements = scad::kDefaultMaxElements;  ///< .scad vector elements alive at once
+    /// `-e`: empty (the file type's default: the studio sky for glTF, none otherwise), "none",
+    /// "studio" or an equirectangular image file; `--env-rotate` degrees about +Z.
+    std::string environment;
+    double environmentRotate = 0;
+    /// Picture width / height when the command knows it (the automatic camera of glTF, STL
+    /// and OFF files fits the smaller side); 0 when unknown.
+    double aspect = 0;
 };
 
 /// The scene argument and the options every scene-reading subcommand takes (-D, -L,
@@ -44,6 +51,8 @@ struct SceneArgs {
     std::string facets;  ///< as given; empty when not given (auto)
     int64_t maxSteps = scad::kDefaultMaxSteps;
     int64_t maxElements = scad::kDefaultMaxElements;
+    std::string environment;  ///< -e as given
+    double environmentRotate = 0;
 
     /// Registers the positional scene and -D/-L on a subcommand.
     void addTo(CLI::App &cmd);
@@ -95,7 +104,9 @@ void requireOutputFile(const std::string &path, const std::string &option);
 /// a folder, a FIFO, a device such as /dev/zero or a socket could block or never end.
 void requireRegularFile(const std::string &path);
 
-/// Reads a scene by extension (.scad) and completes it (automatic camera, default lights).
+/// Reads a scene by extension (.scad) and completes it (automatic camera, default lights), with
+/// the environment opts.environment names (an image that cannot be read is a
+/// std::runtime_error naming it, raised before anything is written).
 /// The path must be a regular file (requireRegularFile).
 /// Throws LocatedError for problems in the file, std::runtime_error for others. A .scad
 /// evaluation that takes over a second shows an `evaluating: N M steps` line on a terminal

@@ -88,6 +88,7 @@ int runOpenScadCheck(const CheckArgs &a) {
         throw std::invalid_argument("OpenSCAD (openscad) is not installed; tools/setup.sh installs it");
     CheckFiles file(a);
     LoadOptions lo = a.scene.loadOptions(true);
+    lo.aspect = double(a.width) / a.height;
     // Spheres and cylinders as OpenSCAD tessellates them: the referee's geometry, not a sphere
     lo.facets = ir::FacetMode::OpenScad;
 
@@ -159,7 +160,9 @@ int runCheck(const CheckArgs &a) {
 
     DiagnosticSink diag;
     DiagnosticPrinter printer(diag, true);
-    ir::Scene scene = loadScene(a.scene.input, diag, a.scene.loadOptions(a.quiet));
+    LoadOptions lo = a.scene.loadOptions(a.quiet);
+    lo.aspect = double(a.width) / a.height;
+    ir::Scene scene = loadScene(a.scene.input, diag, lo);
 
     // POV-Ray: export, render k times larger without antialiasing, box-downsample
     PovReference pov = renderPovReference(scene, dir.string(), stem,

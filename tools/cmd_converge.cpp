@@ -107,6 +107,7 @@ std::string readSlope(double slope) {
 
 int runConverge(const ConvergeArgs &a) {
     LoadOptions lo = a.scene.loadOptions(a.quiet);
+    lo.aspect = double(a.width) / a.height;
     // Check every option before reading the scene
     RenderOptions base;
     base.width = a.width;

@@ -32,7 +32,9 @@ int runExport(const ExportArgs &a) {
     requireOutputFile(pov.string(), "-o");
     DiagnosticSink diag;
     DiagnosticPrinter printer(diag, a.quiet);
-    ir::Scene scene = loadScene(a.scene.input, diag, a.scene.loadOptions(a.quiet));
+    LoadOptions lo = a.scene.loadOptions(a.quiet);
+    lo.aspect = double(a.width) / a.height;
+    ir::Scene scene = loadScene(a.scene.input, diag, lo);
     pov::IniOptions ini;
     ini.outputFile = pov.stem().string() + "_povray.png";
     ini.width = a.width;

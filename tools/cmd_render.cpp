@@ -53,6 +53,7 @@ std::string sppText(const RenderResult &r) {
 
 int runRender(const RenderArgs &a) {
     LoadOptions lo = a.scene.loadOptions(a.quiet);
+    lo.aspect = double(a.width) / a.height;
     RenderOptions ro;
     ro.width = a.width;
     ro.height = a.height;

@@ -9,7 +9,7 @@ packages=(
     g++ cmake ninja-build pkg-config
     libopenimageio-dev libpng-dev libcli11-dev
     libgtest-dev libgmock-dev libbenchmark-dev
-    libtinygltf-dev libpolyclipping-dev libxml2-dev
+    libtinygltf-dev libdraco-dev libmeshoptimizer-dev nlohmann-json3-dev libpolyclipping-dev libxml2-dev
     libfreetype-dev libharfbuzz-dev libfontconfig-dev fonts-liberation
     povray openscad
     openscad-mcad

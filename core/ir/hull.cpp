@@ -8,6 +8,7 @@
 #include <cfloat>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <numeric>
 #include <optional>
 #include <unordered_map>
@@ -698,21 +699,37 @@ class HullGatherer {
 };
 
 /// Whether the mesh's surface is that of its convex hull: every triangle lies in the plane of
-/// a hull face (within the hull's tolerance), which holds for a closed convex mesh only.
+/// a hull face (within the hull's tolerance), which holds for a closed convex mesh only. A
+/// triangle is tried first against the planes of the hull faces around its corners (a convex
+/// mesh's corners are hull vertices), so a convex mesh costs linear time; a triangle that
+/// fails there is tried against every plane, which happens at most once for a mesh that is
+/// not convex.
 bool meshIsConvex(const Mesh &mesh, const HullResult &hull) {
-    std::vector<FacePlane> planes = polytopePlanes(hull.polytope);
+    std::vector<int> faceOfPlane;
+    std::vector<FacePlane> planes = polytopePlanes(hull.polytope, &faceOfPlane);
     double tol = 4 * hullTolerance(hull.polytope.vertices);
+    auto key = [](const Vec3 &v) { return std::array<double, 3>{v.x, v.y, v.z}; };
+    std::map<std::array<double, 3>, std::vector<size_t>> planesAtCorner;
+    for (size_t k = 0; k < planes.size(); ++k)
+        for (int i : hull.polytope.faces[static_cast<size_t>(faceOfPlane[k])])
+            planesAtCorner[key(hull.polytope.vertices[static_cast<size_t>(i)])].push_back(k);
+    auto onPlane = [&](const std::array<uint32_t, 3> &t, const FacePlane &pl) {
+        for (uint32_t i : t)
+            if (std::abs(dot(pl.normal, mesh.positions[i]) - pl.offset) > tol) return false;
+        return true;
+    };
     for (const auto &t : mesh.triangles) {
         bool onSomeFace = false;
-        for (const FacePlane &pl : planes) {
-            bool on = true;
-            for (uint32_t i : t)
-                if (std::abs(dot(pl.normal, mesh.positions[i]) - pl.offset) > tol) on = false;
-            if (on) {
-                onSomeFace = true;
-                break;
-            }
+        for (uint32_t i : t) {
+            auto at = planesAtCorner.find(key(mesh.positions[i]));
+            if (at == planesAtCorner.end()) continue;
+            for (size_t k : at->second)
+                if ((onSomeFace = onPlane(t, planes[k]))) break;
+            if (onSomeFace) break;
         }
+        if (!onSomeFace)
+            onSomeFace = std::any_of(planes.begin(), planes.end(),
+                                     [&](const FacePlane &pl) { return onPlane(t, pl); });
         if (!onSomeFace) return false;
     }
     return true;

@@ -134,6 +134,15 @@ std::string dump(const Scene &scene) {
     os << "settings background " << rgb(s.background) << " ambient_light " << rgb(s.ambientLight)
        << " max_trace_level " << s.maxTraceLevel << " adc_bailout " << formatNumber(s.adcBailout)
        << "\n";
+    if (s.environment.kind == EnvironmentKind::Gradient) {
+        os << "environment gradient";
+        for (const GradientStop &g : s.environment.gradient)
+            os << " " << formatNumber(g.z) << " " << rgb(g.color);
+        os << " rotate " << formatNumber(s.environment.rotateDegrees) << "\n";
+    } else if (s.environment.kind == EnvironmentKind::Image) {
+        os << "environment image " << s.environment.imagePath << " rotate "
+           << formatNumber(s.environment.rotateDegrees) << "\n";
+    }
     if (scene.camera) {
         const Camera &c = *scene.camera;
         os << "camera " << cameraSourceName(c.source)

@@ -35,7 +35,26 @@ Camera cameraFromViewport(const Vec3 &vpt, const Vec3 &vpr, double vpd, double v
     return c;
 }
 
-void completeScene(Scene &scene, DiagnosticSink &diag) {
+/// Viewer framing (Framing::Viewer) of the bounding sphere (centre, radius).
+Camera viewerCamera(const Vec3 &centre, double radius, double aspect) {
+    // The sphere's outline, seen from distance D, has angular radius asin(r / D); its image
+    // spans tan of that over tan(fov / 2) of the smaller side
+    double halfFov = radians(kViewerFov) / 2;
+    double alpha = std::atan(kViewerFill * std::tan(halfFov));
+    double distance = radius / std::sin(alpha);
+    double az = radians(kViewerAzimuth), el = radians(kViewerElevation);
+    Vec3 dir(std::sin(az) * std::cos(el), -std::cos(az) * std::cos(el), std::sin(el));
+    Camera c;
+    c.location = centre + dir * distance;
+    c.lookAt = centre;
+    c.sky = Vec3(0, 0, 1);
+    c.fov = kViewerFov;
+    c.fovAxis = aspect > 0 && aspect < 1 ? FovAxis::Horizontal : FovAxis::Vertical;
+    c.source = CameraSource::Automatic;
+    return c;
+}
+
+void completeScene(Scene &scene, DiagnosticSink &diag, const CompleteOptions &opts) {
     validateScene(scene, diag);
     pruneEmpty(scene, diag);
     if (!scene.camera) {
@@ -46,15 +65,23 @@ void completeScene(Scene &scene, DiagnosticSink &diag) {
             centre = b.centroid();
             radius = std::max(length(b.diagonal()) / 2, 1e-300);
         }
-        // OpenSCAD's viewall + autocenter: the bounding sphere fills the vertical field of view
-        double distance = radius / std::sin(radians(kOpenScadDefaultFov) / 2);
-        Camera c = cameraFromViewport(centre, kOpenScadDefaultViewRotation, distance,
-                                      kOpenScadDefaultFov);
-        c.source = CameraSource::Automatic;
-        scene.camera = c;
         std::ostringstream msg;
-        msg << "no camera() in the scene: framing the model from OpenSCAD's default view, eye at "
-            << c.location.toString();
+        if (opts.framing == Framing::Viewer) {
+            scene.camera = viewerCamera(centre, radius, opts.aspect);
+            msg << "no camera in the scene: framing the model as a glTF viewer does (from the "
+                   "front-right, above), eye at ";
+        } else {
+            // OpenSCAD's viewall + autocenter: the bounding sphere fills the vertical field of
+            // view
+            double distance = radius / std::sin(radians(kOpenScadDefaultFov) / 2);
+            Camera c = cameraFromViewport(centre, kOpenScadDefaultViewRotation, distance,
+                                          kOpenScadDefaultFov);
+            c.source = CameraSource::Automatic;
+            scene.camera = c;
+            msg << "no camera() in the scene: framing the model from OpenSCAD's default view, "
+                   "eye at ";
+        }
+        msg << scene.camera->location.toString();
         diag.note({}, msg.str());
     }
     if (scene.lights.empty()) {

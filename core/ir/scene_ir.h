@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/ir/camera.h"
+#include "core/ir/environment.h"
 #include "core/ir/facets.h"
 #include "core/ir/light.h"
 #include "core/ir/material.h"
@@ -26,6 +27,8 @@ namespace rt::ir {
 /// Global render settings (POV-Ray global_settings and background).
 struct Settings {
     Rgb background{0};
+    /// What rays leaving the scene see; None: the background colour.
+    Environment environment;
     Rgb ambientLight{1};
     int maxTraceLevel = 5;
     double adcBailout = 1.0 / 255.0;

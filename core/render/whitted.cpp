@@ -9,6 +9,7 @@
 #include "core/materials/classic_shading.h"
 #include "core/materials/lobe_sampling.h"
 #include "core/materials/texture_sampler.h"
+#include "core/render/environment.h"
 
 namespace rt {
 
@@ -65,7 +66,7 @@ Rgb WhittedIntegrator::trace(const Ray &ray, int level, double weight, const Int
     bool hit = scene_.intersect(ray, 0, kInfinity, &si, ctx.scratch);
     ctx.tie = ctx.tie || si.tie;
     if (level == 0) ctx.firstHit = hit ? si.leaf : nullptr;  // the camera ray
-    if (!hit) return s.background;
+    if (!hit) return missRadiance(s, ray.d);  // the background or the environment
     return shade(ray, si, continued ? level : level + 1, weight, stack, blurred, ctx);
 }
 

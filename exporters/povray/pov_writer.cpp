@@ -173,7 +173,8 @@ class Writer {
             used_.insert(n.material);
             if (const auto *m = std::get_if<ir::MeshPrim>(&n.shape)) {
                 usedMeshes_.insert(m->mesh);
-                meshMaterials_[m->mesh].insert(n.material);
+                meshMaterials_.insert({m->mesh, n.material});
+                if (vertexColoured(m->mesh, n.material)) colouredMeshes_.insert({m->mesh, n.material});
             }
         }
         for (const auto &c : n.children) collectUsed(*c);
@@ -198,6 +199,29 @@ class Writer {
             << "    adc_bailout " << num(s.adcBailout) << "\n"
             << "}\n\n"
             << "background { " << rgb(s.background) << " }\n\n";
+        skySphere(s.environment);
+    }
+
+    /// The environment as a sky_sphere, looked up by ray direction exactly as scadray does
+    /// (core/render/environment.cpp): the gradient as a colour_map over the direction's z
+    /// mapped from [-1, 1] to [0, 1]; the image as a spherical image_map whose pole is turned
+    /// from +y to +Z, written beside the .pov as linear EXR.
+    void skySphere(const ir::Environment &e) {
+        if (e.kind == ir::EnvironmentKind::Gradient) {
+            os_ << "// Environment: gradient over the ray direction's height\n"
+                << "sky_sphere {\n    pigment {\n        gradient z\n        color_map {\n";
+            for (const ir::GradientStop &g : e.gradient)
+                os_ << "            [" << num((g.z + 1) / 2) << " " << rgb(g.color) << "]\n";
+            os_ << "        }\n        scale 2 translate -z\n    }\n}\n\n";
+        } else if (e.kind == ir::EnvironmentKind::Image && e.image) {
+            std::string file = assetPrefix_ + "_environment.exr";
+            if (images_) images_->push_back({file, bakedTexture(*e.image, Rgb(1))});
+            os_ << "// Environment: " << commentText(e.imagePath) << "\n"
+                << "sky_sphere {\n    pigment {\n        image_map { exr \"" << file
+                << "\" map_type 1 interpolate 2 }\n        rotate x*90\n";
+            if (e.rotateDegrees != 0) os_ << "        rotate z*" << num(e.rotateDegrees) << "\n";
+            os_ << "    }\n}\n\n";
+        }
     }
 
     void camera() {
@@ -330,6 +354,18 @@ class Writer {
         return out;
     }
 
+    /// The environment image's RGB times `factor`, as it is (base colour textures go through
+    /// texturePigment, which also bakes wrap modes).
+    static Image bakedTexture(const ir::Texture &tex, const Rgb &factor) {
+        Image img(tex.width, tex.height);
+        for (int y = 0; y < tex.height; ++y)
+            for (int x = 0; x < tex.width; ++x) {
+                const float *p = &tex.rgba[4 * (size_t(y) * tex.width + x)];
+                img.set(x, y, Rgb(p[0], p[1], p[2]) * factor);
+            }
+        return img;
+    }
+
     /// How a material's base colour texture alpha makes it see-through. The IR carries no
     /// alpha mode yet (the renderer reads texture alpha only through the importer's mean, in
     /// Material::transmit), so the texture is opaque here and the material's own transmit
@@ -342,8 +378,8 @@ class Writer {
     std::string texturedPigment(int index, const ir::Material &m, const ir::Texture &tex) {
         const ir::TextureRef &ref = m.baseColorTexture;
         UvRange range;
-        for (const auto &[mesh, materials] : meshMaterials_) {
-            if (!materials.count(index)) continue;
+        for (const auto &[mesh, material] : meshMaterials_) {
+            if (material != index) continue;
             const ir::Mesh &me = *scene_.meshes[mesh];
             for (const auto &uv : ref.texCoord == 1 ? me.uvs1 : me.uvs) {
                 double u = uv[0], v = uv[1];
@@ -363,56 +399,117 @@ class Writer {
     /// The texture coordinate set mesh2 `mesh` carries (it has one uv_vectors): the one the
     /// base colour textures placed on it read, TEXCOORD_0 when none does or when they
     /// disagree (`note` then says so).
-    const std::vector<std::array<float, 2>> &exportedUvs(int mesh, std::string *note) const {
-        const ir::Mesh &m = *scene_.meshes[mesh];
+    const std::vector<std::array<float, 2>> &exportedUvs(const ir::Mesh &m,
+                                                         std::string *note) const {
         std::set<int> sets;
-        auto it = meshMaterials_.find(mesh);
-        if (it != meshMaterials_.end())
-            for (int mat : it->second) {
-                const ir::TextureRef &ref = scene_.materials[mat].baseColorTexture;
-                if (ref.valid()) sets.insert(ref.texCoord);
-            }
+        for (const auto &[mesh, material] : meshMaterials_) {
+            const ir::TextureRef &ref = scene_.materials[material].baseColorTexture;
+            if (scene_.meshes[mesh].get() == &m && ref.valid()) sets.insert(ref.texCoord);
+        }
         if (sets.size() > 1)
             *note = "    // scadray: textures on this mesh read both TEXCOORD_0 and TEXCOORD_1; "
                     "mesh2 holds one set: TEXCOORD_0 written\n";
         return sets.size() == 1 && *sets.begin() == 1 && !m.uvs1.empty() ? m.uvs1 : m.uvs;
     }
 
+    /// Whether mesh `mesh` is written with its vertex colours for material `material`: it has
+    /// colours and the material no base colour texture (POV-Ray's mesh2 takes one texture per
+    /// vertex, so a colour per vertex excludes an image map).
+    bool vertexColoured(int mesh, int material) const {
+        return !scene_.meshes[mesh]->colors.empty() &&
+               !scene_.materials[material].baseColorTexture.valid();
+    }
+
+    /// The declared name of mesh `mesh` as material `material` shows it.
+    std::string meshName(int mesh, int material) const {
+        if (colouredMeshes_.count({mesh, material}))
+            return "Mesh_" + std::to_string(mesh) + "_" + materialName(material);
+        return "Mesh_" + std::to_string(mesh);
+    }
+
     /// Each mesh once, as mesh2; objects place it. A closed mesh gets an inside_vector, so
-    /// POV-Ray knows its inside (by parity) and it can take part in CSG.
+    /// POV-Ray knows its inside (by parity) and it can take part in CSG. A mesh with vertex
+    /// colours (glTF COLOR_0) is declared once more per material it is shown with, with a
+    /// texture per distinct colour: POV-Ray blends the three vertex textures of a triangle
+    /// with its barycentric weights, which for textures differing only in a plain pigment is
+    /// the linearly interpolated colour scadray shades with.
     void meshes() {
         if (usedMeshes_.empty()) return;
         os_ << "// Meshes\n";
-        for (int i : usedMeshes_) {
+        std::set<int> plain;  // meshes shown without vertex colours by some material
+        for (const auto &pair : meshMaterials_)
+            if (!colouredMeshes_.count(pair)) plain.insert(pair.first);
+        for (int i : plain) {
             const ir::Mesh &m = *scene_.meshes[i];
-            std::vector<std::array<uint32_t, 3>> faces;
-            for (const auto &t : m.triangles) {
-                const Vec3 &a = m.positions[t[0]], &b = m.positions[t[1]], &c = m.positions[t[2]];
-                if (lengthSquared(cross(b - a, c - a)) > 0) faces.push_back(t);  // POV drops the rest
-            }
-            os_ << comment(m.loc, "mesh '" + m.name + "'") << "#declare Mesh_" << i << " = mesh2 {\n"
-                << "    vertex_vectors {\n        " << m.positions.size();
-            for (const Vec3 &p : m.positions) os_ << ",\n        " << vec(p);
-            os_ << "\n    }\n";
-            if (!m.normals.empty()) {
-                os_ << "    normal_vectors {\n        " << m.normals.size();
-                for (const Vec3 &n : m.normals) os_ << ",\n        " << vec(n);
-                os_ << "\n    }\n";
-            }
-            std::string uvNote;
-            const auto &uvs = exportedUvs(i, &uvNote);
-            if (!uvs.empty()) {
-                os_ << uvNote << "    uv_vectors {\n        " << uvs.size();
-                for (const auto &uv : uvs) os_ << ",\n        <" << num(uv[0]) << ", " << num(1.0 - double(uv[1])) << ">";
-                os_ << "\n    }\n";
-            }
-            os_ << "    face_indices {\n        " << faces.size();
-            for (const auto &t : faces) os_ << ",\n        <" << t[0] << ", " << t[1] << ", " << t[2] << ">";
-            os_ << "\n    }\n";
-            if (ir::analyzeMesh(m).closed()) os_ << "    inside_vector <0.2718281828, 0.5772156649, 0.7071067811>\n";
-            os_ << "}\n";
+            std::string note;
+            if (!m.colors.empty())
+                note = "// scadray: the vertex colours of this mesh are left out where a material "
+                       "with a base colour texture shows it (POV-Ray's mesh2 takes either)\n";
+            mesh2(m, "Mesh_" + std::to_string(i), nullptr, note);
         }
+        for (const auto &[i, mat] : colouredMeshes_)
+            mesh2(*scene_.meshes[i], meshName(i, mat), &scene_.materials[mat], "");
         os_ << "\n";
+    }
+
+    /// One mesh2 declaration; with `coloured`, a texture_list of that material's colour times
+    /// each distinct vertex colour (its finish kept) and a texture index per face corner.
+    void mesh2(const ir::Mesh &m, const std::string &name, const ir::Material *coloured,
+               const std::string &note) {
+        std::vector<std::array<uint32_t, 3>> faces;
+        for (const auto &t : m.triangles) {
+            const Vec3 &a = m.positions[t[0]], &b = m.positions[t[1]], &c = m.positions[t[2]];
+            if (lengthSquared(cross(b - a, c - a)) > 0) faces.push_back(t);  // POV drops the rest
+        }
+        os_ << comment(m.loc, "mesh '" + m.name + "'") << note << "#declare " << name
+            << " = mesh2 {\n"
+            << "    vertex_vectors {\n        " << m.positions.size();
+        for (const Vec3 &p : m.positions) os_ << ",\n        " << vec(p);
+        os_ << "\n    }\n";
+        if (!m.normals.empty()) {
+            os_ << "    normal_vectors {\n        " << m.normals.size();
+            for (const Vec3 &n : m.normals) os_ << ",\n        " << vec(n);
+            os_ << "\n    }\n";
+        }
+        std::string uvNote;
+        const auto &uvs = exportedUvs(m, &uvNote);
+        if (!uvs.empty()) {
+            os_ << uvNote << "    uv_vectors {\n        " << uvs.size();
+            for (const auto &uv : uvs) os_ << ",\n        <" << num(uv[0]) << ", " << num(1.0 - double(uv[1])) << ">";
+            os_ << "\n    }\n";
+        }
+        // Vertex colours: one texture per distinct RGB (alpha is not used, as in the renderer)
+        std::vector<uint32_t> textureOf;
+        if (coloured) {
+            std::map<std::array<float, 3>, uint32_t> index;
+            std::vector<std::array<float, 3>> list;
+            textureOf.resize(m.colors.size());
+            for (size_t v = 0; v < m.colors.size(); ++v) {
+                std::array<float, 3> c = {m.colors[v][0], m.colors[v][1], m.colors[v][2]};
+                auto [it, isNew] = index.try_emplace(c, static_cast<uint32_t>(list.size()));
+                if (isNew) list.push_back(c);
+                textureOf[v] = it->second;
+            }
+            os_ << "    texture_list {\n        " << list.size();
+            for (const auto &c : list) {
+                Rgb col = coloured->color * Rgb(c[0], c[1], c[2]);
+                os_ << ",\n        texture {\n    pigment { rgbft <" << num(col.r) << ", "
+                    << num(col.g) << ", " << num(col.b) << ", " << num(coloured->filter) << ", "
+                    << num(coloured->transmit) << "> }\n";
+                finish(coloured->finish);
+                os_ << "        }";
+            }
+            os_ << "\n    }\n";
+        }
+        os_ << "    face_indices {\n        " << faces.size();
+        for (const auto &t : faces) {
+            os_ << ",\n        <" << t[0] << ", " << t[1] << ", " << t[2] << ">";
+            if (coloured)
+                os_ << ", " << textureOf[t[0]] << ", " << textureOf[t[1]] << ", " << textureOf[t[2]];
+        }
+        os_ << "\n    }\n";
+        if (ir::analyzeMesh(m).closed()) os_ << "    inside_vector <0.2718281828, 0.5772156649, 0.7071067811>\n";
+        os_ << "}\n";
     }
 
     static std::string comment(const SourceLoc &loc, const std::string &what) {
@@ -484,7 +581,7 @@ class Writer {
             else if (const auto *b = std::get_if<ir::BoxPrim>(&cur->shape))
                 shape = "box { " + vec(b->min) + ", " + vec(b->max);
             else if (const auto *mp = std::get_if<ir::MeshPrim>(&cur->shape))
-                shape = "object { Mesh_" + std::to_string(mp->mesh);
+                shape = "object { " + meshName(mp->mesh, cur->material);
             else if (const auto *p = std::get_if<ir::PolytopePrim>(&cur->shape)) {
                 // A convex polytope is exactly the intersection of its faces' half-spaces
                 // (POV-Ray's plane is inside on the side opposite its normal), so it stays a
@@ -528,7 +625,8 @@ class Writer {
     std::string assetPrefix_;
     std::vector<TextureFile> *images_;
     std::set<int> used_, usedMeshes_;
-    std::map<int, std::set<int>> meshMaterials_;  ///< mesh -> materials it is placed with
+    std::set<std::pair<int, int>> meshMaterials_;   ///< (mesh, material) pairs shown
+    std::set<std::pair<int, int>> colouredMeshes_;  ///< those shown with vertex colours
     std::ostringstream os_;
 };
 
@@ -551,6 +649,7 @@ void exportPov(const ir::Scene &scene, const std::string &povPath, const std::st
         WriteOptions wo;
         wo.pngDepth = PngDepth::Bits16;
         wo.linearPng = true;
+        // .exr (the environment) keeps values above 1 as float
         writeImage(t.image, (dir / t.fileName).string(), wo);
     }
     writeTextFile(povPath, sdl);

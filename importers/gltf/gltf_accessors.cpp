@@ -284,4 +284,42 @@ std::vector<uint32_t> readIndices(const ImportContext &ctx, int index, const std
     return readAccessor<uint32_t>(ctx, acc, 1, path, ToIndex{});
 }
 
+void checkAttributeType(const ImportContext &ctx, int index, const std::string &attribute,
+                        bool morphTarget, const std::string &what) {
+    const tinygltf::Accessor &acc = accessorAt(ctx, index, what);
+    int t = acc.componentType;
+    bool n = acc.normalized;
+    bool isFloat = t == TINYGLTF_COMPONENT_TYPE_FLOAT;
+    bool int8or16 = t == TINYGLTF_COMPONENT_TYPE_BYTE || t == TINYGLTF_COMPONENT_TYPE_SHORT;
+    bool uint8or16 = t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                     t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+    auto startsWith = [&](const char *prefix) { return attribute.rfind(prefix, 0) == 0; };
+    bool ok = true;
+    const char *allowed = "";
+    // glTF 3.7.2.1 and the KHR_mesh_quantization table: (unsigned) byte and short, normalized
+    // or not, for positions and texture coordinates; signed normalized for normals and tangents
+    // (and for every morph delta but the positions')
+    if (attribute == "POSITION" || startsWith("TEXCOORD_")) {
+        ok = isFloat || int8or16 || (uint8or16 && !morphTarget);
+        allowed = morphTarget ? "float or (normalized) byte/short"
+                              : "float or (normalized) byte/short, signed or unsigned";
+    } else if (attribute == "NORMAL" || attribute == "TANGENT") {
+        ok = isFloat || (int8or16 && n);
+        allowed = "float or normalized signed byte/short";
+    } else if (startsWith("COLOR_")) {
+        ok = isFloat || (uint8or16 && n);
+        allowed = "float or normalized unsigned byte/short";
+    } else if (startsWith("JOINTS_")) {
+        ok = uint8or16 && !n;
+        allowed = "unsigned byte/short";
+    } else if (startsWith("WEIGHTS_")) {
+        ok = isFloat || (uint8or16 && n);
+        allowed = "float or normalized unsigned byte/short";
+    }
+    if (!ok)
+        ctx.fail(what + " (" + jsonPath("accessors", static_cast<size_t>(index)) +
+                 "): componentType " + std::to_string(t) + (n ? " normalized" : "") +
+                 " is not allowed for " + attribute + " (" + allowed + ")");
+}
+
 }  // namespace rt::gltf::detail

@@ -22,13 +22,11 @@ namespace rt::gltf {
 namespace {
 
 /// Extensions whose meaning the importer implements; any other in extensionsRequired is refused.
-constexpr std::array<std::string_view, 7> kSupportedExtensions = {"KHR_materials_emissive_strength",
-                                                                  "KHR_texture_transform",
-                                                                  "KHR_materials_transmission",
-                                                                  "KHR_materials_ior",
-                                                                  "KHR_materials_volume",
-                                                                  "KHR_materials_unlit",
-                                                                  "KHR_lights_punctual"};
+constexpr std::array<std::string_view, 11> kSupportedExtensions = {
+    "KHR_materials_emissive_strength", "KHR_texture_transform",   "KHR_materials_transmission",
+    "KHR_materials_ior",               "KHR_materials_volume",    "KHR_materials_unlit",
+    "KHR_lights_punctual",             "KHR_mesh_quantization",   "KHR_draco_mesh_compression",
+    "EXT_meshopt_compression",         "EXT_mesh_gpu_instancing"};
 
 bool isSupported(const std::string &ext) {
     return std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), ext) !=
@@ -270,6 +268,7 @@ std::unique_ptr<LoadedFile> loadFile(const std::string &path, const SourceLoc &l
                                      DiagnosticSink &diag, bool keepImages) {
     std::vector<unsigned char> bytes = readMainFile(path, loc);
     bool binary = bytes.size() >= 4 && std::equal(bytes.begin(), bytes.begin() + 4, "glTF");
+    std::vector<size_t> fallbacks = detail::patchJsonForTinygltf(bytes, binary);
     std::string baseDir = std::filesystem::path(path).parent_path().string();
 
     detail::FileAccess files{detail::ModelFolder(path), baseDir, {}, 0, {}, 0};
@@ -302,6 +301,8 @@ std::unique_ptr<LoadedFile> loadFile(const std::string &path, const SourceLoc &l
     for (const std::string &line : splitLines(warn)) diag.warning(loc, "tinygltf: " + line);
     for (const std::string &problem : file->images.problems) diag.warning(loc, problem);
     if (!ok) failLoad(err, bytes, binary, path, loc);
+    // Before the image spans are taken: decoding adds buffers
+    detail::decodeMeshoptViews(file->model, fallbacks, loc);
     file->imageBytes = file->images.bytes();
     return file;
 }

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -123,6 +124,99 @@ FloatArray readFloats(const ImportContext &ctx, int index, int type, const std::
 
 /// Reads an index accessor (SCALAR of u8, u16 or u32), bounds-checked like readFloats.
 std::vector<uint32_t> readIndices(const ImportContext &ctx, int index, const std::string &what);
+
+/// Fails unless accessor `index`, used as vertex attribute (or morph target delta) `attribute`
+/// ("POSITION", "TEXCOORD_1", "COLOR_0", "JOINTS_0", ...), has a component type glTF allows
+/// for it, with KHR_mesh_quantization's integer types for positions, normals, tangents and
+/// texture coordinates. Attributes glTF does not define (_CUSTOM) are not checked.
+void checkAttributeType(const ImportContext &ctx, int index, const std::string &attribute,
+                        bool morphTarget, const std::string &what);
+
+// Compressed geometry (gltf_compression.cpp)
+
+/// Most bytes one decoded EXT_meshopt_compression bufferView may take (count x byteStride),
+/// and most vertices and triangles one KHR_draco_mesh_compression primitive may decode to.
+constexpr uint64_t kMaxMeshoptViewBytes = uint64_t(1) << 31;
+constexpr uint64_t kMaxDracoElements = uint64_t(1) << 27;
+
+/// Rewrites the JSON text (of a .gltf, or the JSON chunk of the .glb `bytes`) where tinygltf
+/// 2.7 would refuse valid compressed files: an EXT_meshopt_compression fallback buffer (no
+/// `uri`, `fallback: true`; tinygltf refuses a uri-less buffer in a .gltf and copies the BIN
+/// chunk into it in a .glb) names a three-byte data: URI instead, and a
+/// KHR_draco_mesh_compression primitive loses its `indices` when that accessor has no
+/// bufferView (tinygltf requires one: "accessor[N] invalid bufferView"; the Draco data holds
+/// the indices). Returns the indices of the fallback buffers rewritten; `bytes` is unchanged
+/// when there is nothing to rewrite or the JSON does not parse.
+std::vector<size_t> patchJsonForTinygltf(std::vector<unsigned char> &bytes, bool binary);
+
+/// Decodes every bufferView that carries EXT_meshopt_compression into a new buffer and points
+/// the view at it; `fallbacks` (from patchJsonForTinygltf) are emptied. Corrupt data is
+/// a ParseError at `loc` naming the extension and the bufferView.
+void decodeMeshoptViews(tinygltf::Model &model, const std::vector<size_t> &fallbacks,
+                        const SourceLoc &loc);
+
+/// A primitive's KHR_draco_mesh_compression data, decoded.
+class DracoPrimitive {
+  public:
+    /// Null when the primitive has no KHR_draco_mesh_compression extension; fails (naming the
+    /// extension and `path`) when its data does not decode.
+    static std::unique_ptr<DracoPrimitive> decode(const ImportContext &ctx,
+                                                  const tinygltf::Primitive &prim,
+                                                  const std::string &path);
+    ~DracoPrimitive();
+    /// Whether the compressed data holds attribute `name` ("POSITION", ...).
+    bool has(const std::string &name) const;
+    /// Attribute `name` as `components` floats per vertex (fails if it has fewer).
+    FloatArray floats(const std::string &name, int components) const;
+    /// Three vertex indices per triangle.
+    std::vector<uint32_t> indices() const;
+    size_t vertexCount() const;
+
+  private:
+    struct Impl;
+    explicit DracoPrimitive(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
+// Morph targets and skins (gltf_skin.cpp)
+
+/// Reads a vertex attribute of the primitive being built by name (from its accessor, or from
+/// its Draco data), checked to have `type`; nothing when the primitive has no such attribute.
+using AttributeReader = std::function<std::optional<FloatArray>(const std::string &name, int type)>;
+
+/// Most morph targets applied to one primitive; most JOINTS_n/WEIGHTS_n sets read per vertex.
+constexpr size_t kMaxMorphTargets = 256;
+constexpr int kMaxSkinSets = 8;
+
+/// The node's local matrix: `matrix` (column-major) or T * R * S (gltf_scene.cpp).
+Mat4 localMatrix(const ImportContext &ctx, const tinygltf::Node &node, const std::string &path);
+
+/// Poses meshes as the file stores them: morph target weights and skins.
+class Poser {
+  public:
+    explicit Poser(const ImportContext &ctx) : ctx_(ctx) {}
+    /// The morph weights of node `nodeIndex`'s mesh: node.weights, else mesh.weights, else
+    /// none; warns when their number differs from the mesh's targets.
+    std::vector<double> weights(size_t nodeIndex) const;
+    /// Adds the weighted POSITION, NORMAL and TANGENT deltas of `prim`'s targets to `mesh`
+    /// (normals and tangents not yet normalised).
+    void morph(const tinygltf::Primitive &prim, const std::string &path,
+               const std::vector<double> &weights, ir::Mesh &mesh) const;
+    /// Moves `mesh`'s vertices (and normals, tangents) by skin `skin` in the pose the file
+    /// stores: sum of weight x (joint's global transform x inverse bind matrix), in the glTF
+    /// scene's coordinates.
+    void skin(int skin, const AttributeReader &read, const std::string &path,
+              ir::Mesh &mesh);
+    /// Global (scene) transform of node `index` in glTF coordinates.
+    const Mat4 &global(size_t index);
+
+  private:
+    const ImportContext &ctx_;
+    std::vector<Mat4> globals_;
+    std::vector<char> globalDone_;
+    std::vector<int> parents_;
+    std::map<int, std::vector<Mat4>> jointMatrices_;  ///< by skin index
+};
 
 // Materials and textures (gltf_materials.cpp)
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <tuple>
 
 #include "core/math/float_util.h"
 #include "importers/gltf/gltf_internal.h"
@@ -48,6 +49,22 @@ bool allFinite(const std::vector<double> &v) {
     return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
 }
 
+/// The rotation of quaternion (x, y, z, w), normalised here; nothing for a zero quaternion.
+std::optional<Mat4> rotationMatrix(std::array<double, 4> q) {
+    double len = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    if (!(len > 0) || !std::isfinite(len)) return std::nullopt;
+    double x = q[0] / len, y = q[1] / len, z = q[2] / len, w = q[3] / len;
+    double rows[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)},
+                         {2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)},
+                         {2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)}};
+    Mat4 r;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) r.m[i][j] = rows[i][j];
+    return r;
+}
+
+}  // namespace
+
 /// The node's local matrix: `matrix` (16 numbers, column-major) or T * R * S with the rotation
 /// a unit quaternion stored (x, y, z, w).
 Mat4 localMatrix(const ImportContext &ctx, const tinygltf::Node &node, const std::string &path) {
@@ -76,19 +93,29 @@ Mat4 localMatrix(const ImportContext &ctx, const tinygltf::Node &node, const std
         t = Mat4::translate(Vec3(node.translation[0], node.translation[1], node.translation[2]));
     if (!node.scale.empty()) s = Mat4::scale(Vec3(node.scale[0], node.scale[1], node.scale[2]));
     if (!node.rotation.empty()) {
-        double x = node.rotation[0], y = node.rotation[1], z = node.rotation[2],
-               w = node.rotation[3];
-        double len = std::sqrt(x * x + y * y + z * z + w * w);
-        if (!(len > 0)) ctx.fail(path + ".rotation: the quaternion is zero");
-        x /= len, y /= len, z /= len, w /= len;
-        double rows[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)},
-                             {2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)},
-                             {2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)}};
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) r.m[i][j] = rows[i][j];
+        std::optional<Mat4> rot = rotationMatrix(
+            {node.rotation[0], node.rotation[1], node.rotation[2], node.rotation[3]});
+        if (!rot) ctx.fail(path + ".rotation: the quaternion is zero");
+        r = *rot;
     }
     return t * r * s;
 }
+
+namespace {
+
+/// Most instances one EXT_mesh_gpu_instancing node may place (each is an IR node).
+constexpr size_t kMaxGpuInstances = size_t(1) << 18;
+
+/// Components per element of an accessor type this file reads.
+int components(int type) {
+    switch (type) {
+        case TINYGLTF_TYPE_SCALAR: return 1;
+        case TINYGLTF_TYPE_VEC2: return 2;
+        case TINYGLTF_TYPE_VEC3: return 3;
+        default: return 4;
+    }
+}
+
 
 /// A light that waits for the scene bounds (directional lights are placed outside them).
 struct PendingLight {
@@ -166,12 +193,8 @@ class SceneBuilder {
         auto t = ir::Node::makeTransform(local, options_.nodeLoc);
         t->label = node.name.empty() ? path : "node '" + node.name + "'";
 
-        if (node.mesh >= 0) addPrimitives(*t, node.mesh, path);
+        if (node.mesh >= 0) addMesh(*t, static_cast<size_t>(index), path);
         if (node.camera >= 0) addCamera(node.camera, world, path);
-        if (node.skin >= 0 && !skinNoted_) {
-            ctx_.note(path + ": skins are not applied; meshes show their bind pose");
-            skinNoted_ = true;
-        }
         auto ext = node.extensions.find("KHR_lights_punctual");
         if (ext != node.extensions.end()) {
             std::string lightPath = path + ".extensions.KHR_lights_punctual.light";
@@ -194,15 +217,119 @@ class SceneBuilder {
         return t;
     }
 
-    /// One Primitive child per glTF primitive that has triangles to show.
-    void addPrimitives(ir::Node &parent, int meshIndex, const std::string &nodePath) {
-        if (static_cast<size_t>(meshIndex) >= model_.meshes.size())
-            ctx_.fail(nodePath + ": mesh " + std::to_string(meshIndex) +
+    /// How a node poses its mesh: morph weights (empty when all zero) and skin (-1: none).
+    struct Pose {
+        std::vector<double> weights;
+        int skin = -1;
+        bool posed() const { return !weights.empty() || skin >= 0; }
+    };
+
+    /// The node's mesh, skinned and morphed as it says, under `parent`: once, or once per
+    /// EXT_mesh_gpu_instancing instance.
+    void addMesh(ir::Node &parent, size_t nodeIndex, const std::string &path) {
+        const tinygltf::Node &node = model_.nodes[nodeIndex];
+        if (static_cast<size_t>(node.mesh) >= model_.meshes.size())
+            ctx_.fail(path + ": mesh " + std::to_string(node.mesh) +
                       " does not exist (the file has " + std::to_string(model_.meshes.size()) +
                       ")");
+        Pose pose;
+        pose.weights = poser_.weights(nodeIndex);
+        if (std::all_of(pose.weights.begin(), pose.weights.end(), [](double w) { return w == 0; }))
+            pose.weights.clear();
+        ir::Node *target = &parent;
+        if (node.skin >= 0) {
+            if (static_cast<size_t>(node.skin) >= model_.skins.size())
+                ctx_.fail(path + ".skin: skin " + std::to_string(node.skin) +
+                          " does not exist (the file has " + std::to_string(model_.skins.size()) +
+                          ")");
+            // glTF 3.7.3.3: only the joints' transforms place a skinned mesh, not its node's
+            std::optional<Mat4> inverse = poser_.global(nodeIndex).affineInverse();
+            if (!inverse) ctx_.fail(path + ": its global transform is singular");
+            pose.skin = node.skin;
+            auto skinned = ir::Node::makeTransform(*inverse, options_.nodeLoc);
+            skinned->label = path + " skinned (node transform ignored)";
+            target = skinned.get();
+            parent.children.push_back(std::move(skinned));
+        }
+        std::optional<std::vector<Mat4>> instances = gpuInstances(node, path);
+        if (!instances) {
+            addPrimitives(*target, node.mesh, pose, path);
+        } else {
+            for (size_t i = 0; i < instances->size(); ++i) {
+                auto inst = ir::Node::makeTransform((*instances)[i], options_.nodeLoc);
+                inst->label = path + " instance " + std::to_string(i);
+                addPrimitives(*inst, node.mesh, pose, path);
+                if (!inst->children.empty()) target->children.push_back(std::move(inst));
+            }
+        }
+        if (target != &parent && target->children.empty()) parent.children.pop_back();
+    }
+
+    /// The instance transforms of EXT_mesh_gpu_instancing (none without the extension).
+    std::optional<std::vector<Mat4>> gpuInstances(const tinygltf::Node &node,
+                                                  const std::string &path) {
+        auto ext = node.extensions.find("EXT_mesh_gpu_instancing");
+        if (ext == node.extensions.end()) return std::nullopt;
+        std::string extPath = path + ".extensions.EXT_mesh_gpu_instancing";
+        const tinygltf::Value &attrs = ext->second.Get("attributes");
+        if (!attrs.IsObject()) ctx_.fail(extPath + ": needs an attributes object");
+        std::optional<FloatArray> values[3];
+        const char *names[3] = {"TRANSLATION", "ROTATION", "SCALE"};
+        const int types[3] = {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4, TINYGLTF_TYPE_VEC3};
+        std::optional<size_t> count;
+        for (int k = 0; k < 3; ++k) {
+            if (!attrs.Has(names[k])) continue;
+            const tinygltf::Value &v = attrs.Get(names[k]);
+            std::string what = extPath + ".attributes." + names[k];
+            if (!v.IsNumber()) ctx_.fail(what + ": needs an accessor index");
+            double index = v.GetNumberAsDouble();
+            if (index != std::floor(index) || index < 0 || index > 1e9)
+                ctx_.fail(what + ": " + std::to_string(index) + " is not an accessor index");
+            values[k] = readFloats(ctx_, static_cast<int>(index), types[k], what);
+            if (count && *count != values[k]->count)
+                ctx_.fail(what + ": " + std::to_string(values[k]->count) +
+                          " instances, but the other attributes have " + std::to_string(*count));
+            count = values[k]->count;
+        }
+        if (!count) ctx_.fail(extPath + ": has none of TRANSLATION, ROTATION and SCALE");
+        if (*count > kMaxGpuInstances)
+            ctx_.fail(extPath + ": " + std::to_string(*count) + " instances, more than " +
+                      std::to_string(kMaxGpuInstances));
+        std::vector<Mat4> out;
+        size_t singular = 0;
+        for (size_t i = 0; i < *count; ++i) {
+            auto vec = [&](int k, size_t n, Vec3 fallback) {
+                if (!values[k]) return fallback;
+                const float *p = values[k]->values.data() + i * n;
+                return Vec3(p[0], p[1], p[2]);
+            };
+            Vec3 tr = vec(0, 3, Vec3(0, 0, 0)), sc = vec(2, 3, Vec3(1, 1, 1));
+            std::array<double, 4> q = {0, 0, 0, 1};
+            if (values[1])
+                for (int c = 0; c < 4; ++c) q[c] = values[1]->values[i * 4 + c];
+            std::optional<Mat4> rot = rotationMatrix(q);
+            if (!tr.isFinite() || !sc.isFinite() || !rot)
+                ctx_.fail(extPath + ": instance " + std::to_string(i) +
+                          " has a non-finite translation or scale or a zero rotation");
+            Mat4 m = Mat4::translate(tr) * *rot * Mat4::scale(sc);
+            if (!m.affineInverse()) {
+                ++singular;  // zero scale: hidden, as for nodes
+                continue;
+            }
+            out.push_back(m);
+        }
+        if (singular > 0)
+            ctx_.note(extPath + ": " + std::to_string(singular) +
+                      " instance(s) with a zero scale not shown");
+        return out;
+    }
+
+    /// One Primitive child per glTF primitive that has triangles to show.
+    void addPrimitives(ir::Node &parent, int meshIndex, const Pose &pose,
+                       const std::string &) {
         const tinygltf::Mesh &mesh = model_.meshes[static_cast<size_t>(meshIndex)];
         for (size_t p = 0; p < mesh.primitives.size(); ++p) {
-            int id = meshFor(static_cast<size_t>(meshIndex), p);
+            int id = meshFor(static_cast<size_t>(meshIndex), p, pose);
             if (id < 0) continue;
             std::string primPath =
                 jsonPath("meshes", static_cast<size_t>(meshIndex)) + jsonPath(".primitives", p);
@@ -222,35 +349,45 @@ class SceneBuilder {
         }
     }
 
-    /// The IR mesh of a glTF (mesh, primitive), loaded on first use and shared by every node
-    /// that uses it; -1 when it has nothing to show.
-    int meshFor(size_t meshIndex, size_t primIndex) {
+    /// The IR mesh of a glTF (mesh, primitive) in a pose, loaded on first use and shared by
+    /// every node that uses it so; -1 when it has nothing to show.
+    int meshFor(size_t meshIndex, size_t primIndex, const Pose &pose) {
+        if (pose.posed()) {
+            auto [it, isNew] = posedMeshes_.try_emplace(
+                std::tuple(meshIndex, primIndex, pose.weights, pose.skin), -1);
+            if (isNew) it->second = addMesh(loadPrimitive(meshIndex, primIndex, pose));
+            return it->second;
+        }
         std::vector<int> &ids = meshIds_[meshIndex];
         if (ids.empty()) ids.assign(model_.meshes[meshIndex].primitives.size(), kNotLoaded);
         int &id = ids[primIndex];
         if (id != kNotLoaded) return id;
 
         // Primitives of different meshes built from the same accessors (CAD exporters make one
-        // mesh per material) share one IR mesh too
+        // mesh per material) share one IR mesh too; compressed ones are decoded each
         const tinygltf::Primitive &prim = model_.meshes[meshIndex].primitives[primIndex];
+        if (prim.extensions.count("KHR_draco_mesh_compression") || !prim.targets.empty())
+            return id = addMesh(loadPrimitive(meshIndex, primIndex, pose));
         auto attribute = [&](const char *name) {
             auto it = prim.attributes.find(name);
             return it == prim.attributes.end() ? -1 : it->second;
         };
-        PrimitiveKey key{attribute("POSITION"), attribute("NORMAL"), attribute("TEXCOORD_0"),
-                         prim.indices, prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode};
+        PrimitiveKey key{attribute("POSITION"),   attribute("NORMAL"),
+                         attribute("TEXCOORD_0"), attribute("TEXCOORD_1"),
+                         attribute("TANGENT"),    attribute("COLOR_0"),
+                         prim.indices,            prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode};
         auto [shared, isNew] = sharedMeshes_.try_emplace(key, -1);
-        if (!isNew) return id = shared->second;
-
-        std::optional<ir::Mesh> mesh = loadPrimitive(meshIndex, primIndex);
-        if (mesh) {
-            scene_.meshes.push_back(std::make_shared<const ir::Mesh>(std::move(*mesh)));
-            shared->second = static_cast<int>(scene_.meshes.size()) - 1;
-        }
+        if (isNew) shared->second = addMesh(loadPrimitive(meshIndex, primIndex, pose));
         return id = shared->second;
     }
 
-    std::optional<ir::Mesh> loadPrimitive(size_t meshIndex, size_t primIndex) {
+    int addMesh(std::optional<ir::Mesh> mesh) {
+        if (!mesh) return -1;
+        scene_.meshes.push_back(std::make_shared<const ir::Mesh>(std::move(*mesh)));
+        return static_cast<int>(scene_.meshes.size()) - 1;
+    }
+
+    std::optional<ir::Mesh> loadPrimitive(size_t meshIndex, size_t primIndex, const Pose &pose) {
         const tinygltf::Mesh &gm = model_.meshes[meshIndex];
         const tinygltf::Primitive &prim = gm.primitives[primIndex];
         std::string path = jsonPath("meshes", meshIndex) + jsonPath(".primitives", primIndex);
@@ -263,56 +400,87 @@ class SceneBuilder {
             return std::nullopt;
         }
         if (mode > 6) ctx_.fail(path + ": invalid mode " + std::to_string(mode));
-        auto posIt = prim.attributes.find("POSITION");
-        if (posIt == prim.attributes.end()) {
+        if (!prim.attributes.count("POSITION")) {
             ctx_.warning(path + ": has no POSITION attribute; skipped");
             return std::nullopt;
         }
-        if (!prim.targets.empty() && !morphNoted_) {
-            ctx_.note(path + ": morph targets are not applied; the base shape is shown");
-            morphNoted_ = true;
-        }
-        if (prim.attributes.count("COLOR_0") && !colorNoted_) {
-            ctx_.note(path + ": COLOR_0 vertex colours are ignored");
-            colorNoted_ = true;
-        }
+
+        // Attributes come from their accessors, or from the Draco data that replaces them
+        std::unique_ptr<DracoPrimitive> draco = DracoPrimitive::decode(ctx_, prim, path);
+        if (draco) mode = TINYGLTF_MODE_TRIANGLES;  // Draco data holds triangles
+        AttributeReader read = [&](const std::string &name,
+                                   int type) -> std::optional<FloatArray> {
+            auto it = prim.attributes.find(name);
+            if (it == prim.attributes.end()) return std::nullopt;
+            std::string what = path + ".attributes." + name;
+            checkAttributeType(ctx_, it->second, name, false, what);
+            if (!draco || !draco->has(name)) return readFloats(ctx_, it->second, type, what);
+            const tinygltf::Accessor &acc = model_.accessors[static_cast<size_t>(it->second)];
+            if (acc.type != type)
+                ctx_.fail(what + " (" + jsonPath("accessors", static_cast<size_t>(it->second)) +
+                          "): the accessor's type does not fit " + name);
+            return draco->floats(name, components(type));
+        };
+        auto attributePath = [&](const char *attribute) {
+            return path + ".attributes." + attribute + " (" +
+                   jsonPath("accessors", static_cast<size_t>(prim.attributes.at(attribute))) +
+                   ")";
+        };
 
         ir::Mesh mesh;
         mesh.name = gm.name.empty() ? "mesh" + std::to_string(meshIndex) : gm.name;
         if (gm.primitives.size() > 1) mesh.name += "/" + std::to_string(primIndex);
         mesh.loc = ctx_.loc;
 
-        // Positions
-        auto accessorPath = [&](const char *attribute, int accessor) {
-            return path + ".attributes." + attribute + " (" +
-                   jsonPath("accessors", static_cast<size_t>(accessor)) + ")";
-        };
-        FloatArray pos =
-            readFloats(ctx_, posIt->second, TINYGLTF_TYPE_VEC3, path + ".attributes.POSITION");
-        std::string posPath = accessorPath("POSITION", posIt->second);
+        // Positions, normals and tangents as stored, then morphed and skinned
+        FloatArray pos = *read("POSITION", TINYGLTF_TYPE_VEC3);
         size_t nv = pos.count;
         mesh.positions.resize(nv);
-        for (size_t i = 0; i < nv; ++i) {
-            Vec3 p(pos.values[3 * i], pos.values[3 * i + 1], pos.values[3 * i + 2]);
-            if (!p.isFinite())
-                ctx_.fail(posPath + ": vertex " + std::to_string(i) + " is not finite " +
-                          p.toString());
-            mesh.positions[i] = p;
+        for (size_t i = 0; i < nv; ++i)
+            mesh.positions[i] = Vec3(pos.values[3 * i], pos.values[3 * i + 1], pos.values[3 * i + 2]);
+        auto countCheck = [&](const FloatArray &a, const char *attribute) {
+            if (a.count != nv)
+                ctx_.fail(attributePath(attribute) + ": " + std::to_string(a.count) +
+                          " elements for " + std::to_string(nv) + " vertices");
+        };
+        if (std::optional<FloatArray> nrm = read("NORMAL", TINYGLTF_TYPE_VEC3)) {
+            countCheck(*nrm, "NORMAL");
+            mesh.normals.resize(nv);
+            for (size_t i = 0; i < nv; ++i)
+                mesh.normals[i] =
+                    Vec3(nrm->values[3 * i], nrm->values[3 * i + 1], nrm->values[3 * i + 2]);
         }
+        if (std::optional<FloatArray> tan = read("TANGENT", TINYGLTF_TYPE_VEC4)) {
+            countCheck(*tan, "TANGENT");
+            mesh.tangents.resize(nv);
+            for (size_t i = 0; i < nv; ++i)
+                for (int c = 0; c < 4; ++c) mesh.tangents[i][c] = tan->values[4 * i + c];
+        }
+        if (!pose.weights.empty()) poser_.morph(prim, path, pose.weights, mesh);
+        if (pose.skin >= 0) poser_.skin(pose.skin, read, path, mesh);
+        const char *posed = pose.skin >= 0        ? " (after skinning)"
+                            : !pose.weights.empty() ? " (after morphing)"
+                                                    : "";
+        for (size_t i = 0; i < nv; ++i)
+            if (!mesh.positions[i].isFinite())
+                ctx_.fail(attributePath("POSITION") + ": vertex " + std::to_string(i) +
+                          " is not finite " + mesh.positions[i].toString() + posed);
 
-        // Vertex order: the index accessor, or the vertices as they come
+        // Vertex order: the index accessor (or the Draco faces), or the vertices as they come
         std::vector<uint32_t> indices;
-        if (prim.indices >= 0) {
+        if (draco) {
+            indices = draco->indices();
+        } else if (prim.indices >= 0) {
             indices = readIndices(ctx_, prim.indices, path + ".indices");
-            for (size_t k = 0; k < indices.size(); ++k)
-                if (indices[k] >= nv)
-                    ctx_.fail(path + ": index " + std::to_string(indices[k]) + " (indices[" +
-                              std::to_string(k) + "]) out of range for " + std::to_string(nv) +
-                              " vertices");
         } else {
             indices.resize(nv);
             std::iota(indices.begin(), indices.end(), 0u);
         }
+        for (size_t k = 0; k < indices.size(); ++k)
+            if (indices[k] >= nv)
+                ctx_.fail(path + ": index " + std::to_string(indices[k]) + " (indices[" +
+                          std::to_string(k) + "]) out of range for " + std::to_string(nv) +
+                          " vertices");
 
         // Triangles; strips alternate their winding so every triangle stays counter-clockwise
         size_t n = indices.size();
@@ -352,46 +520,83 @@ class SceneBuilder {
         }
 
         // Normals: renormalised; without them the renderer shades flat (glTF 3.7.2.1)
-        auto normIt = prim.attributes.find("NORMAL");
-        if (normIt != prim.attributes.end()) {
-            FloatArray nrm =
-                readFloats(ctx_, normIt->second, TINYGLTF_TYPE_VEC3, path + ".attributes.NORMAL");
-            std::string normPath = accessorPath("NORMAL", normIt->second);
-            if (nrm.count != nv)
-                ctx_.fail(normPath + ": " + std::to_string(nrm.count) + " normals for " +
-                          std::to_string(nv) + " vertices");
-            mesh.normals.resize(nv);
+        if (!mesh.normals.empty()) {
             bool zero = false;
             for (size_t i = 0; i < nv && !zero; ++i) {
-                Vec3 v(nrm.values[3 * i], nrm.values[3 * i + 1], nrm.values[3 * i + 2]);
+                Vec3 v = mesh.normals[i];
                 if (!v.isFinite())
-                    ctx_.fail(normPath + ": normal " + std::to_string(i) + " is not finite " +
-                              v.toString());
+                    ctx_.fail(attributePath("NORMAL") + ": normal " + std::to_string(i) +
+                              " is not finite " + v.toString() + posed);
                 double len = length(v);
                 zero = !(len > 0) || !std::isfinite(1 / len);
                 mesh.normals[i] = v / len;
             }
             if (zero) {
-                ctx_.warning(normPath + ": contains a zero-length normal; flat shading used");
+                ctx_.warning(attributePath("NORMAL") +
+                             ": contains a zero-length normal; flat shading used");
                 mesh.normals.clear();
             }
         }
 
-        // Texture coordinates (TEXCOORD_1 and up are not used)
-        auto uvIt = prim.attributes.find("TEXCOORD_0");
-        if (uvIt != prim.attributes.end()) {
-            FloatArray uv =
-                readFloats(ctx_, uvIt->second, TINYGLTF_TYPE_VEC2, path + ".attributes.TEXCOORD_0");
-            std::string uvPath = accessorPath("TEXCOORD_0", uvIt->second);
-            if (uv.count != nv)
-                ctx_.fail(uvPath + ": " + std::to_string(uv.count) + " coordinates for " +
-                          std::to_string(nv) + " vertices");
-            mesh.uvs.resize(nv);
+        // Tangents: a unit xyz and the sign of w; ignored without normals (glTF 3.7.2.1)
+        if (!mesh.tangents.empty() && mesh.normals.empty()) {
+            ctx_.note(attributePath("TANGENT") + ": ignored without normals");
+            mesh.tangents.clear();
+        }
+        for (size_t i = 0; i < mesh.tangents.size(); ++i) {
+            std::array<float, 4> &t = mesh.tangents[i];
+            Vec3 v(t[0], t[1], t[2]);
+            double len = length(v);
+            if (!v.isFinite() || !std::isfinite(t[3]))
+                ctx_.fail(attributePath("TANGENT") + ": tangent " + std::to_string(i) +
+                          " is not finite" + posed);
+            if (!(len > 0) || !std::isfinite(1 / len)) {
+                ctx_.warning(attributePath("TANGENT") + ": tangent " + std::to_string(i) +
+                             " has zero length; the tangents are ignored");
+                mesh.tangents.clear();
+                break;
+            }
+            t = {static_cast<float>(v.x / len), static_cast<float>(v.y / len),
+                 static_cast<float>(v.z / len), t[3] < 0 ? -1.0f : 1.0f};
+        }
+
+        // Texture coordinate sets 0 and 1 (TEXCOORD_2 and up are not used)
+        auto readUvs = [&](const char *name, std::vector<std::array<float, 2>> &out) {
+            std::optional<FloatArray> uv = read(name, TINYGLTF_TYPE_VEC2);
+            if (!uv) return;
+            countCheck(*uv, name);
+            out.resize(nv);
             for (size_t i = 0; i < nv; ++i) {
-                float u = uv.values[2 * i], v = uv.values[2 * i + 1];
+                float u = uv->values[2 * i], v = uv->values[2 * i + 1];
                 if (!std::isfinite(u) || !std::isfinite(v))
-                    ctx_.fail(uvPath + ": coordinate " + std::to_string(i) + " is not finite");
-                mesh.uvs[i] = {u, v};
+                    ctx_.fail(attributePath(name) + ": coordinate " + std::to_string(i) +
+                              " is not finite");
+                out[i] = {u, v};
+            }
+        };
+        readUvs("TEXCOORD_0", mesh.uvs);
+        readUvs("TEXCOORD_1", mesh.uvs1);
+
+        // COLOR_0: linear RGB or RGBA (alpha 1 for RGB), multiplying the base colour
+        auto colorIt = prim.attributes.find("COLOR_0");
+        if (colorIt != prim.attributes.end()) {
+            int index = colorIt->second;
+            bool rgb = index >= 0 && static_cast<size_t>(index) < model_.accessors.size() &&
+                       model_.accessors[static_cast<size_t>(index)].type == TINYGLTF_TYPE_VEC3;
+            FloatArray c = *read("COLOR_0", rgb ? TINYGLTF_TYPE_VEC3 : TINYGLTF_TYPE_VEC4);
+            countCheck(c, "COLOR_0");
+            size_t channels = rgb ? 3 : 4;
+            mesh.colors.resize(nv);
+            for (size_t i = 0; i < nv; ++i) {
+                std::array<float, 4> rgba = {0, 0, 0, 1};
+                for (size_t k = 0; k < channels; ++k) {
+                    float v = c.values[i * channels + k];
+                    if (!std::isfinite(v))
+                        ctx_.fail(attributePath("COLOR_0") + ": colour " + std::to_string(i) +
+                                  " is not finite");
+                    rgba[k] = v;
+                }
+                mesh.colors[i] = rgba;
             }
         }
         return mesh;
@@ -528,8 +733,9 @@ class SceneBuilder {
     }
 
     static constexpr int kNotLoaded = -2;
-    /// POSITION, NORMAL, TEXCOORD_0 and index accessors and the mode of a primitive.
-    using PrimitiveKey = std::array<int, 5>;
+    /// POSITION, NORMAL, TEXCOORD_0, TEXCOORD_1, TANGENT, COLOR_0 and index accessors and the
+    /// mode of a primitive.
+    using PrimitiveKey = std::array<int, 8>;
 
     const ImportContext &ctx_;
     const tinygltf::Model &model_;
@@ -539,10 +745,12 @@ class SceneBuilder {
     std::vector<char> visited_;
     std::vector<std::vector<int>> meshIds_;  ///< IR mesh per (mesh, primitive); -1 = none
     std::map<PrimitiveKey, int> sharedMeshes_;
+    /// IR mesh per (mesh, primitive, morph weights, skin) for posed meshes
+    std::map<std::tuple<size_t, size_t, std::vector<double>, int>, int> posedMeshes_;
+    Poser poser_{ctx_};
     std::vector<PendingLight> pendingLights_;
     size_t droppedTriangles_ = 0, primitivesWithDropped_ = 0;
     int extraCameras_ = 0, ignoredCameras_ = 0;
-    bool skinNoted_ = false, morphNoted_ = false, colorNoted_ = false;
 };
 
 }  // namespace

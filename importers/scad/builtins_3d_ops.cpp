@@ -167,18 +167,14 @@ ir::NodePtr Evaluator::moduleMinkowski(const ModuleInstantiation &inst, const Fr
             Part p;
             p.solid = &n;
             p.placement = m;
-            size_t faces = projectionFaces(n, scene_);
-            chargeGeometryWork(inst.loc, "minkowski()", static_cast<int64_t>(faces * faces));
-            p.pieces = withClipper(n.loc, [&] { return solidBoundary(n, m, scene_); });
+            Tessellation tess(n, m, scene_);
+            chargeGeometryWork(inst.loc, "minkowski()", static_cast<int64_t>(tess.faces() * tess.faces()));
+            p.pieces = withClipper(n.loc, [&] { return solidBoundary(tess, n); });
             if (!p.pieces.empty()) solids.push_back(std::move(p));
         });
         for (auto &pts : convex) out.push_back(Part{nullptr, Mat4(), {std::move(pts)}});
         for (auto &p : solids) out.push_back(std::move(p));
         return ok;
-    };
-    auto tooMany = [&](size_t count) {
-        warn(inst.loc, "minkowski(): " + std::to_string(count) + " convex parts would be summed, "
-                           "more than the " + std::to_string(kMaxMinkowskiParts) + " allowed; left out");
     };
     auto hullOfSums = [&](const std::vector<Vec3> &p, const std::vector<Vec3> &q,
                           std::vector<Part> &out) {
@@ -225,7 +221,8 @@ ir::NodePtr Evaluator::moduleMinkowski(const ModuleInstantiation &inst, const Fr
             for (const Part &b : parts)
                 count += a.pieces.size() * b.pieces.size();
         if (count > kMaxMinkowskiParts) {
-            tooMany(count);
+            warn(inst.loc, "minkowski(): " + std::to_string(count) + " convex parts would be summed, "
+                               "more than the " + std::to_string(kMaxMinkowskiParts) + " allowed; left out");
             return newNode(ir::NodeKind::Group, inst.loc);
         }
         std::vector<Part> next;
@@ -276,10 +273,11 @@ ir::NodePtr Evaluator::moduleProjection(const ModuleInstantiation &inst, const F
         warn(inst.loc, "projection(): its 2D children are ignored, as in OpenSCAD, which "
                        "projects 3D geometry only");
     if (!(contentsOf(*children) & 2)) return newNode(ir::NodeKind::Group, inst.loc);
-    size_t faces = projectionFaces(*children, scene_);
+    Tessellation tess(*children, Mat4(), scene_);
+    size_t faces = tess.faces();
     chargeGeometryWork(inst.loc, "projection()", static_cast<int64_t>(cut ? faces : faces * faces));
     clipper2d::PolygonSet result = withClipper(inst.loc, [&] {
-        return cut ? projectCut(*children, scene_) : projectShadow(*children, scene_);
+        return cut ? projectCut(tess, *children) : projectShadow(tess, *children);
     });
     if (result.empty()) {
         if (cut && backgroundDepth_ == 0)

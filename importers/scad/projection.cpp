@@ -22,29 +22,7 @@ namespace {
 using clipper2d::BoolOp;
 using clipper2d::PolygonSet;
 
-/// A primitive of the tree with its faces in the tree's root coordinates.
-struct Leaf {
-    const ir::Node *node = nullptr;
-    ir::PolytopePrim mesh;
-    Bounds3 bounds;
-};
-
-void collectLeaves(const ir::Node &n, const Mat4 &rootFromNode, const ir::Scene &scene,
-                   std::vector<Leaf> &out) {
-    if (n.kind == ir::NodeKind::Primitive) {
-        Leaf leaf;
-        leaf.node = &n;
-        leaf.mesh = ir::openscadPolyhedron(n, scene);
-        for (Vec3 &v : leaf.mesh.vertices) {
-            v = rootFromNode.transformPoint(v);
-            leaf.bounds = unionBounds(leaf.bounds, v);
-        }
-        out.push_back(std::move(leaf));
-        return;
-    }
-    Mat4 m = n.kind == ir::NodeKind::Transform ? rootFromNode * n.matrix : rootFromNode;
-    for (const auto &c : n.children) collectLeaves(*c, m, scene, out);
-}
+using Leaf = TessellatedLeaf;
 
 /// The plane dot(normal, p) = offset.
 struct Plane {
@@ -226,28 +204,34 @@ bool mappedFace(const ir::PolytopePrim &mesh, const std::vector<int> &face, cons
 /// coordinates: where the tree, evaluated in the face's plane with every other primitive as
 /// its section there, changes when the face's primitive is taken away.
 template <typename FrameOf, typename Visit>
-void boundaryParts(const ir::Node &tree, const Mat4 &rootFromTree, const ir::Scene &scene,
-                   const FrameOf &frameOf, const Visit &visit) {
-    std::vector<Leaf> leaves;
-    collectLeaves(tree, rootFromTree, scene, leaves);
+void boundaryParts(const Tessellation &tess, const ir::Node &tree, const FrameOf &frameOf,
+                   const Visit &visit) {
+    std::vector<const Leaf *> leaves = tess.leavesUnder(tree);
     std::unordered_map<const ir::Node *, PolygonSet> sets;
-    for (const Leaf &p : leaves) {
+    for (const Leaf *leaf : leaves) {
+        const Leaf &p = *leaf;
         // The primitive's faces by plane (a prism's cap is many triangles in one plane): each
         // plane is evaluated once, for the union of its faces
         double extent = std::max(length(p.bounds.diagonal()), 1e-300);
-        std::map<std::array<long long, 4>, std::vector<size_t>> planes;
+        struct PlaneFaces {
+            Vec3 normal;  ///< Newell normal of the first face (not normalised)
+            std::vector<size_t> faces;
+        };
+        std::map<std::array<long long, 4>, PlaneFaces> planes;
         for (size_t f = 0; f < p.mesh.faces.size(); ++f) {
             const auto &face = p.mesh.faces[f];
-            Vec3 n = faceNormal(p.mesh.vertices, face);
-            if (!(length(n) > 0)) continue;
-            n = normalize(n);
+            Vec3 newell = faceNormal(p.mesh.vertices, face);
+            if (!(length(newell) > 0)) continue;
+            Vec3 n = normalize(newell);
             double d = dot(n, p.mesh.vertices[face[0]]) / extent;
             constexpr double q = 1099511627776.0;  // 2^40: equal up to rounding
-            planes[{std::llround(n.x * q), std::llround(n.y * q), std::llround(n.z * q),
-                    std::llround(d * q)}]
-                .push_back(f);
+            PlaneFaces &group = planes[{std::llround(n.x * q), std::llround(n.y * q),
+                                        std::llround(n.z * q), std::llround(d * q)}];
+            if (group.faces.empty()) group.normal = newell;
+            group.faces.push_back(f);
         }
-        for (const auto &[key, faces] : planes) {
+        for (const auto &[key, group] : planes) {
+            const std::vector<size_t> &faces = group.faces;
             const auto &face = p.mesh.faces[faces[0]];
             auto frame = frameOf(p.mesh, face);
             if (!frame) continue;
@@ -258,13 +242,13 @@ void boundaryParts(const ir::Node &tree, const Mat4 &rootFromTree, const ir::Sce
             }
             if (pieces.empty()) continue;
             PolygonSet mapped = pieces.size() == 1 ? pieces[0] : clipper2d::apply(pieces, BoolOp::Union);
-            Vec3 n = faceNormal(p.mesh.vertices, face);
+            const Vec3 &n = group.normal;
             Plane pl{n, 0};
             for (int i : face) pl.offset += dot(n, p.mesh.vertices[i]);
             pl.offset /= static_cast<double>(face.size());
             sets.clear();
-            for (const Leaf &q : leaves)
-                if (&q != &p) sets[q.node] = section(q, pl, *frame);
+            for (const Leaf *q : leaves)
+                if (q != &p) sets[q->node] = section(*q, pl, *frame);
             sets[p.node] = mapped;
             PolygonSet with = evaluate(tree, sets);
             sets[p.node] = PolygonSet{};
@@ -277,32 +261,27 @@ void boundaryParts(const ir::Node &tree, const Mat4 &rootFromTree, const ir::Sce
 
 /// The shadow of a difference or intersection subtree: the parts of its primitives' faces on
 /// the result's boundary, projected (vertical faces have no area there).
-void boundaryShadow(const ir::Node &tree, const Mat4 &rootFromTree, const ir::Scene &scene,
-                    std::vector<PolygonSet> &out) {
+void boundaryShadow(const Tessellation &tess, const ir::Node &tree, std::vector<PolygonSet> &out) {
     auto topView = [](const ir::PolytopePrim &, const std::vector<int> &) {
         return std::optional<TopView>(TopView{});
     };
-    boundaryParts(tree, rootFromTree, scene, topView, [&](const TopView &, PolygonSet part) {
+    boundaryParts(tess, tree, topView, [&](const TopView &, PolygonSet part) {
         if (!part.empty()) out.push_back(std::move(part));
     });
 }
 
-void shadow(const ir::Node &n, const Mat4 &rootFromNode, const ir::Scene &scene,
-            std::vector<PolygonSet> &out) {
+void shadow(const Tessellation &tess, const ir::Node &n, std::vector<PolygonSet> &out) {
     switch (n.kind) {
         case ir::NodeKind::Group:
         case ir::NodeKind::Union:
-            for (const auto &c : n.children) shadow(*c, rootFromNode, scene, out);
-            return;
         case ir::NodeKind::Transform:
-            for (const auto &c : n.children) shadow(*c, rootFromNode * n.matrix, scene, out);
+            for (const auto &c : n.children) shadow(tess, *c, out);
             return;
         case ir::NodeKind::Intersection:
-        case ir::NodeKind::Difference: boundaryShadow(n, rootFromNode, scene, out); return;
+        case ir::NodeKind::Difference: boundaryShadow(tess, n, out); return;
         case ir::NodeKind::Primitive: break;
     }
-    ir::PolytopePrim mesh = ir::openscadPolyhedron(n, scene);
-    for (Vec3 &v : mesh.vertices) v = rootFromNode.transformPoint(v);
+    const ir::PolytopePrim &mesh = tess.leaf(n).mesh;
     for (const auto &face : mesh.faces) {
         PolygonSet projected;
         if (mappedFace(mesh, face, TopView{}, projected)) out.push_back(std::move(projected));
@@ -367,52 +346,72 @@ std::vector<std::vector<std::pair<int, int>>> convexPieces(const std::vector<ir:
 
 }  // namespace
 
-size_t projectionFaces(const ir::Node &root, const ir::Scene &scene) {
-    if (root.kind == ir::NodeKind::Primitive) return ir::openscadPolyhedron(root, scene).faces.size();
-    size_t n = 0;
-    for (const auto &c : root.children) n += projectionFaces(*c, scene);
-    return n;
+Tessellation::Tessellation(const ir::Node &root, const Mat4 &rootFromNode, const ir::Scene &scene) {
+    add(root, rootFromNode, scene);
 }
 
-clipper2d::PolygonSet projectCut(const ir::Node &root, const ir::Scene &scene) {
-    std::vector<Leaf> leaves;
-    collectLeaves(root, Mat4(), scene, leaves);
+void Tessellation::add(const ir::Node &n, const Mat4 &rootFromNode, const ir::Scene &scene) {
+    if (n.kind == ir::NodeKind::Primitive) {
+        Leaf leaf;
+        leaf.node = &n;
+        leaf.mesh = ir::openscadPolyhedron(n, scene);
+        for (Vec3 &v : leaf.mesh.vertices) {
+            v = rootFromNode.transformPoint(v);
+            leaf.bounds = unionBounds(leaf.bounds, v);
+        }
+        faces_ += leaf.mesh.faces.size();
+        index_[&n] = leaves_.size();
+        leaves_.push_back(std::move(leaf));
+        return;
+    }
+    Mat4 m = n.kind == ir::NodeKind::Transform ? rootFromNode * n.matrix : rootFromNode;
+    for (const auto &c : n.children) add(*c, m, scene);
+}
+
+std::vector<const TessellatedLeaf *> Tessellation::leavesUnder(const ir::Node &subtree) const {
+    std::vector<const TessellatedLeaf *> out;
+    auto walk = [&](const auto &self, const ir::Node &n) -> void {
+        if (n.kind == ir::NodeKind::Primitive) {
+            out.push_back(&leaf(n));
+            return;
+        }
+        for (const auto &c : n.children) self(self, *c);
+    };
+    walk(walk, subtree);
+    return out;
+}
+
+clipper2d::PolygonSet projectCut(const Tessellation &tess, const ir::Node &root) {
     const Plane z0{Vec3(0, 0, 1), 0};
     std::unordered_map<const ir::Node *, PolygonSet> sets;
-    for (const Leaf &leaf : leaves) sets[leaf.node] = section(leaf, z0, TopView{});
+    for (const Leaf *leaf : tess.leavesUnder(root)) sets[leaf->node] = section(*leaf, z0, TopView{});
     return evaluate(root, sets);
 }
 
-clipper2d::PolygonSet projectShadow(const ir::Node &root, const ir::Scene &scene) {
+clipper2d::PolygonSet projectShadow(const Tessellation &tess, const ir::Node &root) {
     std::vector<PolygonSet> parts;
-    shadow(root, Mat4(), scene, parts);
+    shadow(tess, root, parts);
     parts.erase(std::remove_if(parts.begin(), parts.end(), [](const PolygonSet &p) { return p.empty(); }),
                 parts.end());
     if (parts.empty()) return {};
     return clipper2d::apply(parts, BoolOp::Union);
 }
 
-std::vector<std::vector<Vec3>> solidBoundary(const ir::Node &node, const Mat4 &rootFromNode,
-                                             const ir::Scene &scene) {
+std::vector<std::vector<Vec3>> solidBoundary(const Tessellation &tess, const ir::Node &node) {
     std::vector<std::vector<Vec3>> out;
+    std::vector<const Leaf *> leaves = tess.leavesUnder(node);
     if (node.kind != ir::NodeKind::Difference && node.kind != ir::NodeKind::Intersection) {
         // Every face of the primitives: a face inside a union is still inside the solid
-        std::vector<Leaf> leaves;
-        collectLeaves(node, rootFromNode, scene, leaves);
-        for (const Leaf &leaf : leaves)
-            for (const auto &face : leaf.mesh.faces) {
+        for (const Leaf *leaf : leaves)
+            for (const auto &face : leaf->mesh.faces) {
                 std::vector<Vec3> pts;
-                for (int i : face) pts.push_back(leaf.mesh.vertices[i]);
+                for (int i : face) pts.push_back(leaf->mesh.vertices[i]);
                 out.push_back(std::move(pts));
             }
         return out;
     }
     Bounds3 extent;
-    {
-        std::vector<Leaf> leaves;
-        collectLeaves(node, rootFromNode, scene, leaves);
-        for (const Leaf &leaf : leaves) extent = unionBounds(extent, leaf.bounds);
-    }
+    for (const Leaf *leaf : leaves) extent = unionBounds(extent, leaf->bounds);
     if (extent.isEmpty()) return out;
     double size = std::max(length(extent.diagonal()), 1e-300);
     double scale = std::ldexp(1.0, 30 - std::ilogb(size) - 1);
@@ -430,7 +429,7 @@ std::vector<std::vector<Vec3>> solidBoundary(const ir::Node &node, const Mat4 &r
         f.scale = scale;
         return std::optional<PlaneFrame>(f);
     };
-    boundaryParts(node, rootFromNode, scene, frameOf, [&](const PlaneFrame &f, const PolygonSet &part) {
+    boundaryParts(tess, node, frameOf, [&](const PlaneFrame &f, const PolygonSet &part) {
         std::vector<ir::ProfileOutline> outlines;
         for (const Outline &o : part.outlines) {
             ir::ProfileOutline po;

@@ -173,11 +173,11 @@ TEST(GltfErrors, UnsupportedRequiredExtension) {
     REQUIRE_GLTF_SAMPLE("Box.gltf");
     TempDir tmp;
     std::string text = readText(sample("Box.gltf"));
-    text.insert(1, R"("extensionsUsed": ["KHR_draco_mesh_compression"],
-        "extensionsRequired": ["KHR_draco_mesh_compression"],)");
-    writeText(tmp.file("draco.gltf"), text);
-    expectError<ParseError>(tmp.file("draco.gltf"),
-                            {"requires extension KHR_draco_mesh_compression, which scadray "
+    text.insert(1, R"("extensionsUsed": ["EXT_scadray_test_unknown"],
+        "extensionsRequired": ["EXT_scadray_test_unknown"],)");
+    writeText(tmp.file("unknown.gltf"), text);
+    expectError<ParseError>(tmp.file("unknown.gltf"),
+                            {"requires extension EXT_scadray_test_unknown, which scadray "
                              "does not support"});
 
     // A supported required extension is fine

@@ -111,6 +111,27 @@ TEST(ScadMinkowski, NonConvexOperandIsMovedAndItsBoundarySwept) {
     EXPECT_NEAR(b.min.x, 0, 1e-12);
 }
 
+TEST(ScadMinkowski, ConvexMeshIsOnePolytopeAndAConcaveOneIsSwept) {
+    // A cube as a polyhedron with two triangles per face (every corner a hull vertex): convex,
+    // one hull of sums
+    const char *cube =
+        "polyhedron([[0,0,0],[2,0,0],[2,2,0],[0,2,0],[0,0,2],[2,0,2],[2,2,2],[0,2,2]], "
+        "[[0,1,2],[0,2,3],[4,6,5],[4,7,6],[0,4,5],[0,5,1],[1,5,6],[1,6,2],[2,6,7],[2,7,3],"
+        "[3,7,4],[3,4,0]])";
+    Imported convex = importText(std::string("minkowski() { ") + cube + "; cube(1); }");
+    auto prims = primitives(*convex.scene.root);
+    ASSERT_EQ(prims.size(), 1u);
+    EXPECT_EQ(std::get<ir::PolytopePrim>(prims[0].node->shape).vertices.size(), 8u);
+    // The same cube with a notch pressed into its top (a vertex below the top face): not
+    // convex, so it is moved and its boundary swept, giving more than one part
+    const char *notched =
+        "polyhedron([[0,0,0],[2,0,0],[2,2,0],[0,2,0],[0,0,2],[2,0,2],[2,2,2],[0,2,2],[1,1,1]], "
+        "[[0,1,2],[0,2,3],[4,8,5],[5,8,6],[6,8,7],[7,8,4],[0,4,5],[0,5,1],[1,5,6],[1,6,2],"
+        "[2,6,7],[2,7,3],[3,7,4],[3,4,0]])";
+    Imported concave = importText(std::string("minkowski() { ") + notched + "; cube(1); }");
+    EXPECT_GT(primitives(*concave.scene.root).size(), 1u);
+}
+
 TEST(ScadMinkowski, TwoDimensionalSumIsAPolygon) {
     Imported r = importText("linear_extrude(1) minkowski() { square(2); circle(1, $fn=4); }");
     EXPECT_TRUE(r.warnings().empty());
