@@ -66,6 +66,49 @@ Rgb heat(double d, double scale) {
 
 }  // namespace
 
+Image planeResidualSpread(const Image &fine, int k) {
+    int w = fine.width() / k, h = fine.height() / k;
+    Image out(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            // The block and the ring of sub-samples around it, as downsample's spread
+            int j0 = std::max(0, y * k - 1), j1 = std::min(fine.height() - 1, y * k + k);
+            int i0 = std::max(0, x * k - 1), i1 = std::min(fine.width() - 1, x * k + k);
+            double n = 0, si = 0, sj = 0, sii = 0, sjj = 0;
+            Rgb sc(0), sci(0), scj(0);
+            for (int j = j0; j <= j1; ++j)
+                for (int i = i0; i <= i1; ++i) {
+                    Rgb c = fine.at(i, j);
+                    n += 1;
+                    si += i;
+                    sj += j;
+                    sii += double(i) * i;
+                    sjj += double(j) * j;
+                    sc += c;
+                    sci += c * double(i);
+                    scj += c * double(j);
+                }
+            // Least squares over a rectangle of samples: the two slopes are independent
+            double mi = si / n, mj = sj / n;
+            double vii = sii - n * mi * mi, vjj = sjj - n * mj * mj;
+            Rgb mc = sc / n;
+            Rgb gi = vii > 0 ? (sci - mc * si) / vii : Rgb(0);
+            Rgb gj = vjj > 0 ? (scj - mc * sj) / vjj : Rgb(0);
+            double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+            for (int j = j0; j <= j1; ++j)
+                for (int i = i0; i <= i1; ++i) {
+                    Rgb c = fine.at(i, j);
+                    for (int ch = 0; ch < 3; ++ch) {
+                        double r = c[ch] - (mc[ch] + gi[ch] * (i - mi) + gj[ch] * (j - mj));
+                        lo[ch] = std::min(lo[ch], r);
+                        hi[ch] = std::max(hi[ch], r);
+                    }
+                }
+            out.set(x, y, Rgb(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]));
+        }
+    return out;
+}
+
 CompareResult compareImages(const ImageEstimate &test, const ImageEstimate &reference,
                             const CompareOptions &o) {
     const Image &a = test.mean, &b = reference.mean;

@@ -62,6 +62,13 @@ struct CompareResult {
     std::string summary(const CompareOptions &o) const;
 };
 
+/// Spread of each k x k block of a supersampled `fine` image (and the ring of sub-samples
+/// around it) about the block's least-squares plane, per channel: near 0 where the picture
+/// varies smoothly at the sub-sample scale (shading, a magnified bilinear texture: the
+/// block's mean is then the pixel's mean), large at steps and thin lines (silhouettes, texel
+/// edges, texture detail smaller than a pixel), where the k x k grid misses the pixel's mean.
+Image planeResidualSpread(const Image &fine, int k);
+
 /// Compares `test` with `reference` (same size, else std::invalid_argument). Statistics use
 /// test.variance when present (independent pixels: tile variance is the sum of pixel variances
 /// over n^2, degrees of freedom by Welch-Satterthwaite from the batch count); otherwise the

@@ -65,8 +65,12 @@ void validateMesh(const Mesh &mesh);
 struct Texture {
     int width = 0, height = 0;
     std::vector<float> rgba;  ///< 4 floats per pixel, linear (sRGB already decoded)
-    /// Outside [0,1]: repeat (glTF REPEAT, the default) or clamp to the edge.
-    bool repeatU = true, repeatV = true;
+    /// What lies outside [0,1] along an axis (glTF sampler wrapS / wrapT).
+    enum class Wrap { Repeat, ClampToEdge, MirroredRepeat };
+    Wrap wrapU = Wrap::Repeat, wrapV = Wrap::Repeat;
+    /// Texel lookup (glTF magFilter; there are no mipmaps, so minification filters the same
+    /// way): bilinear between the four nearest texels, or the texel under the point.
+    bool nearest = false;
     std::string name;  ///< for file names in exports
     SourceLoc loc;
 };

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Texture lookup as POV-Ray 3.7 does it for `uv_mapping image_map { ... interpolate 2 }`
-// (backend/support/imageutil.cpp: map_pos, Interp, bilinear), so textured surfaces render the
-// same in both renderers.
+// Texture lookup as POV-Ray 3.7 does it for `uv_mapping image_map { ... }` (backend/support/
+// imageutil.cpp: map_pos, no_interpolation, Interp, bilinear), extended by glTF's sampler wrap
+// modes and filters in a way the POV-Ray exporter reproduces exactly with baked images.
 #pragma once
 
 #include "core/geometry/hit.h"
@@ -11,9 +11,26 @@
 
 namespace rt {
 
-/// Bilinearly interpolated RGB at texture coordinates (u, v), glTF convention (origin at the
-/// top-left, v down). The image repeats outside [0,1].
+/// The texel an index `i` along an axis of `n` texels reads under `wrap`: modulo n (repeat),
+/// clamped to [0, n-1] (clamp to edge) or reflected with period 2n (mirrored repeat).
+int wrapTexel(int i, int n, ir::Texture::Wrap wrap);
+
+/// RGBA at texture coordinates (u, v), glTF convention (origin at the top-left, v down), with
+/// the texture's wrap modes and filter: bilinear between the four texels around the point
+/// (texel centres at half-integers, as POV-Ray's `interpolate 2`) or, with `nearest`, the
+/// texel under it (as POV-Ray's image_map without interpolation). No mipmaps: minification
+/// filters the same way.
+void sampleTexture(const ir::Texture &tex, double u, double v, float rgba[4]);
+
+/// RGB of sampleTexture above (white for an empty texture).
 Rgb sampleTexture(const ir::Texture &tex, double u, double v);
+
+/// KHR_texture_transform of `ref` applied to (u, v): scale, then rotate, then offset. The
+/// rotation turns counter-clockwise as seen in uv space with v pointing down, as the extension
+/// describes, the glTF-Sample-Viewer renders it and the TextureTransformTest sample checks it:
+/// u' = cos r u + sin r v, v' = -sin r u + cos r v (KhronosGroup/glTF issue 1563: the GLSL
+/// listing in the extension text turns the other way).
+void transformTexCoord(const ir::TextureRef &ref, double *u, double *v);
 
 /// The texture coordinates a TextureRef reads at a hit: its coordinate set (false when the
 /// surface has none) with KHR_texture_transform applied.

@@ -14,9 +14,12 @@
 
 #include "core/image/image_io.h"
 #include "core/ir/revolved_mesh.h"
+#include "core/materials/pbr_material.h"
+#include "core/materials/texture_sampler.h"
 #include "core/math/degree_trig.h"
 #include "core/system/temp_file.h"
 #include "exporters/povray/pov_format.h"
+#include "exporters/povray/pov_texture.h"
 
 namespace rt::pov {
 
@@ -296,14 +299,7 @@ class Writer {
                 << " = texture {\n";
             const ir::Texture *tex = m.baseColorTexture.valid() ? scene_.textures[m.baseColorTexture.texture].get() : nullptr;
             if (tex) {
-                // The colour factor is baked into a linear 16-bit copy of the texture; uv
-                // coordinates come from the mesh2 (v flipped: POV-Ray's image origin is at the
-                // bottom left)
-                std::string file = assetPrefix_ + "_" + materialName(i) + ".png";
-                if (images_) images_->push_back({file, bakedTexture(*tex, m.color)});
-                os_ << "    uv_mapping\n"
-                    << "    pigment { image_map { png \"" << file << "\" gamma 1.0 interpolate 2 filter all "
-                    << num(m.filter) << " transmit all " << num(m.transmit) << " } }\n";
+                os_ << "    uv_mapping\n" << texturedPigment(i, m, *tex);
             } else {
                 os_ << "    pigment { rgbft <" << num(m.color.r) << ", " << num(m.color.g) << ", "
                     << num(m.color.b) << ", " << num(m.filter) << ", " << num(m.transmit) << "> }\n";
@@ -359,6 +355,8 @@ class Writer {
         return out;
     }
 
+    /// The environment image's RGB times `factor`, as it is (base colour textures go through
+    /// texturePigment, which also bakes wrap modes).
     static Image bakedTexture(const ir::Texture &tex, const Rgb &factor) {
         Image img(tex.width, tex.height);
         for (int y = 0; y < tex.height; ++y)
@@ -367,6 +365,63 @@ class Writer {
                 img.set(x, y, Rgb(p[0], p[1], p[2]) * factor);
             }
         return img;
+    }
+
+    /// How a material's base colour texture alpha makes it see-through: glTF's alpha mode,
+    /// factor and cutoff from its per-texel description (the renderer cuts or blends each
+    /// texel by them); opaque for every other material, whose own transmit then applies.
+    static TextureAlpha textureAlpha(const ir::Material &m) {
+        TextureAlpha a;
+        if (!m.texel.pbr) return a;
+        const PbrMaterial &p = *m.texel.pbr;
+        switch (p.alphaMode) {
+            case PbrMaterial::AlphaMode::Opaque: return a;
+            case PbrMaterial::AlphaMode::Mask: a.mode = TextureAlpha::Mode::Mask; break;
+            case PbrMaterial::AlphaMode::Blend: a.mode = TextureAlpha::Mode::Blend; break;
+        }
+        a.factor = p.alpha;
+        a.cutoff = p.alphaCutoff;
+        return a;
+    }
+
+    /// The uv_mapping pigment of a textured material: colour factor, wrap modes, filter,
+    /// KHR_texture_transform and alpha baked as pov_texture.h describes; the images go to
+    /// images_. The transform's reach comes from every mesh the material is placed on.
+    std::string texturedPigment(int index, const ir::Material &m, const ir::Texture &tex) {
+        const ir::TextureRef &ref = m.baseColorTexture;
+        UvRange range;
+        for (const auto &[mesh, material] : meshMaterials_) {
+            if (material != index) continue;
+            const ir::Mesh &me = *scene_.meshes[mesh];
+            for (const auto &uv : ref.texCoord == 1 ? me.uvs1 : me.uvs) {
+                double u = uv[0], v = uv[1];
+                transformTexCoord(ref, &u, &v);
+                range.add(u, v);
+            }
+        }
+        TextureAlpha alpha = textureAlpha(m);
+        double transmit = alpha.mode == TextureAlpha::Mode::Opaque ? m.transmit : 0;
+        TexturePigment p = texturePigment(tex, ref, m.color, alpha, range, m.filter, transmit,
+                                          assetPrefix_ + "_" + materialName(index));
+        if (images_)
+            for (TextureFile &f : p.files) images_->push_back(std::move(f));
+        return p.sdl;
+    }
+
+    /// The texture coordinate set mesh2 `mesh` carries (it has one uv_vectors): the one the
+    /// base colour textures placed on it read, TEXCOORD_0 when none does or when they
+    /// disagree (`note` then says so).
+    const std::vector<std::array<float, 2>> &exportedUvs(const ir::Mesh &m,
+                                                         std::string *note) const {
+        std::set<int> sets;
+        for (const auto &[mesh, material] : meshMaterials_) {
+            const ir::TextureRef &ref = scene_.materials[material].baseColorTexture;
+            if (scene_.meshes[mesh].get() == &m && ref.valid()) sets.insert(ref.texCoord);
+        }
+        if (sets.size() > 1)
+            *note = "    // scadray: textures on this mesh read both TEXCOORD_0 and TEXCOORD_1; "
+                    "mesh2 holds one set: TEXCOORD_0 written\n";
+        return sets.size() == 1 && *sets.begin() == 1 && !m.uvs1.empty() ? m.uvs1 : m.uvs;
     }
 
     /// Whether mesh `mesh` is written with its vertex colours for material `material`: it has
@@ -428,9 +483,11 @@ class Writer {
             for (const Vec3 &n : m.normals) os_ << ",\n        " << vec(n);
             os_ << "\n    }\n";
         }
-        if (!m.uvs.empty()) {
-            os_ << "    uv_vectors {\n        " << m.uvs.size();
-            for (const auto &uv : m.uvs) os_ << ",\n        <" << num(uv[0]) << ", " << num(1.0 - double(uv[1])) << ">";
+        std::string uvNote;
+        const auto &uvs = exportedUvs(m, &uvNote);
+        if (!uvs.empty()) {
+            os_ << uvNote << "    uv_vectors {\n        " << uvs.size();
+            for (const auto &uv : uvs) os_ << ",\n        <" << num(uv[0]) << ", " << num(1.0 - double(uv[1])) << ">";
             os_ << "\n    }\n";
         }
         // Vertex colours: one texture per distinct RGB (alpha is not used, as in the renderer)

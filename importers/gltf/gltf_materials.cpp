@@ -95,6 +95,11 @@ namespace {
 constexpr int kWrapRepeat = 10497;
 constexpr int kWrapClamp = 33071;
 constexpr int kWrapMirror = 33648;
+// glTF sampler filters: NEAREST, LINEAR, and the four *_MIPMAP_* minification filters
+constexpr int kFilterNearest = 9728;
+constexpr int kFilterLinear = 9729;
+constexpr int kMinFilterFirstMip = 9984;  // NEAREST_MIPMAP_NEAREST
+constexpr int kMinFilterLastMip = 9987;   // LINEAR_MIPMAP_LINEAR
 
 /// The material extensions the mapping reads (pbr_material.cpp); any other KHR_materials_*
 /// extension a file uses is warned about once.
@@ -486,24 +491,40 @@ int MaterialMapper::irTexture(int textureIndex, const std::string &what, bool sr
         tex->rgba[p * 4 + 3] = img->channel(p, 3);
     }
 
-    // Sampler wrap modes
+    // Sampler: wrap modes per axis and the filter
     const tinygltf::Texture &gt = ctx_.model.textures[static_cast<size_t>(textureIndex)];
     if (gt.sampler >= 0) {
         if (static_cast<size_t>(gt.sampler) >= ctx_.model.samplers.size())
             ctx_.fail(jsonPath("textures", static_cast<size_t>(textureIndex)) + ": sampler " +
                       std::to_string(gt.sampler) + " does not exist");
         const tinygltf::Sampler &s = ctx_.model.samplers[static_cast<size_t>(gt.sampler)];
-        auto repeat = [&](int wrap, const char *axis) {
-            if (wrap == kWrapMirror)
-                ctx_.warning(jsonPath("samplers", static_cast<size_t>(gt.sampler)) + ": " + axis +
-                             " MIRRORED_REPEAT is not supported; REPEAT used");
-            else if (wrap != kWrapRepeat && wrap != kWrapClamp)
-                ctx_.warning(jsonPath("samplers", static_cast<size_t>(gt.sampler)) + ": " + axis +
-                             " " + std::to_string(wrap) + " is not a wrap mode; REPEAT used");
-            return wrap != kWrapClamp;
+        std::string samplerPath = jsonPath("samplers", static_cast<size_t>(gt.sampler));
+        auto wrapMode = [&](int wrap, const char *axis) {
+            switch (wrap) {
+                case kWrapRepeat: return ir::Texture::Wrap::Repeat;
+                case kWrapClamp: return ir::Texture::Wrap::ClampToEdge;
+                case kWrapMirror: return ir::Texture::Wrap::MirroredRepeat;
+                default:
+                    ctx_.warning(samplerPath + "." + axis + ": " + std::to_string(wrap) +
+                                 " is not a wrap mode; REPEAT used");
+                    return ir::Texture::Wrap::Repeat;
+            }
         };
-        tex->repeatU = repeat(s.wrapS, "wrapS");
-        tex->repeatV = repeat(s.wrapT, "wrapT");
+        tex->wrapU = wrapMode(s.wrapS, "wrapS");
+        tex->wrapV = wrapMode(s.wrapT, "wrapT");
+        // magFilter decides the lookup (-1: unset, the implementation's choice: linear).
+        // minFilter is checked for validity only: without mipmaps a minified texture is
+        // filtered as a magnified one
+        if (s.magFilter == kFilterNearest)
+            tex->nearest = true;
+        else if (s.magFilter != -1 && s.magFilter != kFilterLinear)
+            ctx_.warning(samplerPath + ".magFilter: " + std::to_string(s.magFilter) +
+                         " is not NEAREST (9728) or LINEAR (9729); LINEAR used");
+        if (s.minFilter != -1 && (s.minFilter < kFilterNearest ||
+                                  (s.minFilter > kFilterLinear && s.minFilter < kMinFilterFirstMip) ||
+                                  s.minFilter > kMinFilterLastMip))
+            ctx_.warning(samplerPath + ".minFilter: " + std::to_string(s.minFilter) +
+                         " is not a glTF minification filter; ignored");
     }
 
     // A file-name-safe name, unique in the scene (a file may be imported more than once)

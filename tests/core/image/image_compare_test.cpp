@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/image/image_compare.h"
+#include "core/image/image_io.h"
 #include "core/math/rng.h"
 
 namespace rt {
@@ -193,6 +194,35 @@ TEST(ImageCompare, ReportsTheSmallestDetectableBias) {
     EXPECT_NEAR(quiet.detectableMedian, 0.01 * 0.5, 0.003);
     EXPECT_GT(noisy.detectableMedian, 0.02);
     EXPECT_GE(noisy.detectableP95, noisy.detectableMedian);
+}
+
+}  // namespace
+}  // namespace rt
+
+namespace rt {
+namespace {
+
+TEST(PlaneResidualSpread, GradientsAreNoEdgesStepsAre) {
+    // 3x3 blocks of a steep linear ramp (0.04 per sub-sample, 0.12 per pixel): no edge
+    Image ramp(30, 30);
+    for (int y = 0; y < 30; ++y)
+        for (int x = 0; x < 30; ++x) ramp.set(x, y, Rgb(0.04 * x, 0.01 * y, 0.5));
+    Image r = planeResidualSpread(ramp, 3);
+    ASSERT_EQ(r.width(), 10);
+    for (int y = 0; y < 10; ++y)
+        for (int x = 0; x < 10; ++x) EXPECT_LT(r.at(x, y).maxComponent(), 1e-6);  // float pixels
+    // The usual range spread calls the same ramp an edge everywhere
+    EXPECT_GT(downsample(ramp, 3).spread.at(4, 4).r, 0.05);
+    // A step of 0.1 between sub-samples 14 and 15 (inside pixel 4 and beside pixel 5): an edge
+    // for both, none far from it
+    Image step(30, 30);
+    for (int y = 0; y < 30; ++y)
+        for (int x = 0; x < 30; ++x) step.set(x, y, Rgb(x < 15 ? 0.2 : 0.3));
+    Image s = planeResidualSpread(step, 3);
+    EXPECT_GT(s.at(4, 4).r, 0.05);
+    EXPECT_GT(s.at(5, 4).r, 0.05);
+    EXPECT_LT(s.at(1, 4).r, 1e-6);
+    EXPECT_LT(s.at(8, 4).r, 1e-6);
 }
 
 }  // namespace

@@ -311,8 +311,8 @@ TEST(GltfImport, DuckDecodesItsTextureAndCamera) {
     EXPECT_EQ(tex.width, 512);
     EXPECT_EQ(tex.height, 512);
     EXPECT_EQ(tex.name, "Duck_tex0");
-    EXPECT_TRUE(tex.repeatU);
-    EXPECT_TRUE(tex.repeatV);
+    EXPECT_EQ(tex.wrapU, ir::Texture::Wrap::Repeat);
+    EXPECT_EQ(tex.wrapV, ir::Texture::Wrap::Repeat);
     ASSERT_EQ(tex.rgba.size(), 512u * 512u * 4u);
     auto [lo, hi] = std::minmax_element(tex.rgba.begin(), tex.rgba.end());
     EXPECT_GE(*lo, 0.0f);

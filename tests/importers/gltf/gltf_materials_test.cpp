@@ -213,8 +213,9 @@ TEST(GltfTexture, DecodesSrgbTopRowFirstWithWrapModes) {
     EXPECT_EQ(tex.name, "my_model_tex0");
     ASSERT_EQ(tex.width, 2);
     ASSERT_EQ(tex.height, 2);
-    EXPECT_FALSE(tex.repeatU);  // CLAMP_TO_EDGE
-    EXPECT_TRUE(tex.repeatV);
+    EXPECT_EQ(tex.wrapU, ir::Texture::Wrap::ClampToEdge);
+    EXPECT_EQ(tex.wrapV, ir::Texture::Wrap::Repeat);
+    EXPECT_FALSE(tex.nearest);  // no magFilter: linear
     auto texel = [&](int x, int y, int c) {
         return tex.rgba[static_cast<size_t>((y * 2 + x) * 4 + c)];
     };
@@ -230,13 +231,38 @@ TEST(GltfTexture, DecodesSrgbTopRowFirstWithWrapModes) {
     EXPECT_EQ(im->diag.count(Severity::Warning), 0);
 }
 
-TEST(GltfTexture, MirroredRepeatWarnsAndRepeats) {
+TEST(GltfTexture, SamplerWrapModesAndFilters) {
     TempDir tmp;
     std::string uri = "data:image/bmp;base64," + base64Encode(bmp2x2(0, 0, 0, 0));
-    auto im = importText(tmp, texturedTriangle(uri, R"({"wrapS":33648})"));
+    auto im = importText(tmp, texturedTriangle(uri, R"({"wrapS":33648,"wrapT":33071,)"
+                                                    R"("magFilter":9728,"minFilter":9987})"));
     ASSERT_EQ(im->scene.textures.size(), 1u);
-    EXPECT_TRUE(im->scene.textures[0]->repeatU);
-    EXPECT_EQ(im->diag.countContaining("MIRRORED_REPEAT"), 1);
+    const ir::Texture &tex = *im->scene.textures[0];
+    EXPECT_EQ(tex.wrapU, ir::Texture::Wrap::MirroredRepeat);
+    EXPECT_EQ(tex.wrapV, ir::Texture::Wrap::ClampToEdge);
+    EXPECT_TRUE(tex.nearest);
+    EXPECT_EQ(im->diag.count(Severity::Warning), 0);
+
+    auto linear = importText(tmp, texturedTriangle(uri, R"({"magFilter":9729,"minFilter":9728})"));
+    ASSERT_EQ(linear->scene.textures.size(), 1u);
+    EXPECT_FALSE(linear->scene.textures[0]->nearest);
+    EXPECT_EQ(linear->scene.textures[0]->wrapU, ir::Texture::Wrap::Repeat);
+    EXPECT_EQ(linear->diag.count(Severity::Warning), 0);
+}
+
+TEST(GltfTexture, InvalidSamplerValuesWarnWithTheirPath) {
+    TempDir tmp;
+    std::string uri = "data:image/bmp;base64," + base64Encode(bmp2x2(0, 0, 0, 0));
+    auto im = importText(tmp, texturedTriangle(uri, R"({"wrapS":1234,"wrapT":33648,)"
+                                                    R"("magFilter":9984,"minFilter":5})"));
+    ASSERT_EQ(im->scene.textures.size(), 1u);
+    const ir::Texture &tex = *im->scene.textures[0];
+    EXPECT_EQ(tex.wrapU, ir::Texture::Wrap::Repeat);
+    EXPECT_EQ(tex.wrapV, ir::Texture::Wrap::MirroredRepeat);
+    EXPECT_FALSE(tex.nearest);
+    EXPECT_EQ(im->diag.countContaining("samplers[0].wrapS: 1234 is not a wrap mode"), 1);
+    EXPECT_EQ(im->diag.countContaining("samplers[0].magFilter: 9984"), 1);
+    EXPECT_EQ(im->diag.countContaining("samplers[0].minFilter: 5"), 1);
 }
 
 TEST(GltfTexture, UndecodableOrMissingImagesCostOnlyTheTexture) {
@@ -385,7 +411,7 @@ TEST(GltfLights, LightsPunctualLampHasFivePointLights) {
     // Base colour (2) and emissive (1) textures decoded as colour, normal (2), metallic-
     // roughness (1) and transmission (1) textures as linear data, read per texel; all clamped
     EXPECT_EQ(scene.textures.size(), 7u);
-    for (const auto &t : scene.textures) EXPECT_FALSE(t->repeatU);
+    for (const auto &t : scene.textures) EXPECT_EQ(t->wrapU, ir::Texture::Wrap::ClampToEdge);
     EXPECT_EQ(diag.count(Severity::Warning), 0);
 }
 
