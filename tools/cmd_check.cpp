@@ -198,6 +198,9 @@ int runCheck(const CheckArgs &a) {
         std::vector<ir::Material> saved = scene.materials;
         for (ir::Material &m : scene.materials) {
             if (!m.baseColorTexture.valid()) continue;
+            // A texture whose alpha cuts or blends the surface shapes silhouettes and shadows:
+            // it stays, so their edges are masked like any geometry's
+            if (m.texel.pbr && m.texel.pbr->alphaMode != PbrMaterial::AlphaMode::Opaque) continue;
             const ir::Texture &t = *scene.textures[size_t(m.baseColorTexture.texture)];
             Rgb sum(0);
             for (size_t p = 0; p + 3 < t.rgba.size(); p += 4)

@@ -6,12 +6,13 @@
 import base64, json, struct, zlib
 
 def png(width, height, pixels):
-    """8-bit RGB PNG; pixels[y][x] = (r, g, b), row 0 at the top."""
+    """8-bit RGB or RGBA PNG; pixels[y][x] = (r, g, b[, a]), row 0 at the top."""
     raw = b"".join(b"\0" + bytes(c for p in row for c in p) for row in pixels)
+    colour_type = 6 if len(pixels[0][0]) == 4 else 2
     def chunk(kind, data):
         return (struct.pack(">I", len(data)) + kind + data +
                 struct.pack(">I", zlib.crc32(kind + data) & 0xffffffff))
-    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)) +
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, colour_type, 0, 0, 0)) +
             chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
 
 # 8 x 8 texels, each its own colour: red rises to the right, green downwards, blue in a
@@ -24,7 +25,10 @@ with open("texaddr.png", "wb") as f:
 
 def quad_model(quads, name, camera_distance=3.2):
     """quads: list of dicts with centre (x, y), uv0 ((u0, v0), (u1, v1)), optional uv1,
-    sampler (dict) and textureInfo (dict). Each quad is 1 x 1 in glTF's xy plane facing +z."""
+    sampler (dict), textureInfo (dict), image (default texaddr.png), z (default 0), size
+    (default 1) and material (extra material properties). Each quad is size x size in glTF's xy
+    plane facing +z."""
+    images = []
     buf = bytearray()
     views, accessors, meshes, nodes, materials, samplers, textures = [], [], [], [], [], [], []
     def add(data, count, kind, target=34962):
@@ -38,10 +42,11 @@ def quad_model(quads, name, camera_distance=3.2):
         return len(accessors) - 1, acc
     for i, q in enumerate(quads):
         cx, cy = q["centre"]
-        pos = [(cx - .5, cy - .5, 0), (cx + .5, cy - .5, 0), (cx + .5, cy + .5, 0), (cx - .5, cy + .5, 0)]
+        z, h = q.get("z", 0), q.get("size", 1) / 2
+        pos = [(cx - h, cy - h, z), (cx + h, cy - h, z), (cx + h, cy + h, z), (cx - h, cy + h, z)]
         pi, pacc = add(b"".join(struct.pack("<3f", *p) for p in pos), 4, "VEC3")
-        pacc["min"] = [cx - .5, cy - .5, 0]
-        pacc["max"] = [cx + .5, cy + .5, 0]
+        pacc["min"] = [cx - h, cy - h, z]
+        pacc["max"] = [cx + h, cy + h, z]
         ni, _ = add(struct.pack("<3f", 0, 0, 1) * 4, 4, "VEC3")
         def uvs(r):
             (u0, v0), (u1, v1) = r
@@ -53,10 +58,13 @@ def quad_model(quads, name, camera_distance=3.2):
             attrs["TEXCOORD_1"], _ = add(uvs(q["uv1"]), 4, "VEC2")
         ii, _ = add(struct.pack("<6H", 0, 1, 2, 0, 2, 3), 6, "SCALAR", 34963)
         samplers.append(q["sampler"])
-        textures.append({"source": 0, "sampler": i})
+        image = q.get("image", "texaddr.png")
+        if image not in images: images.append(image)
+        textures.append({"source": images.index(image), "sampler": i})
         info = dict({"index": i}, **q.get("textureInfo", {}))
-        materials.append({"name": q["name"], "pbrMetallicRoughness": {
-            "baseColorTexture": info, "metallicFactor": 0.0, "roughnessFactor": 1.0}})
+        materials.append(dict({"name": q["name"], "pbrMetallicRoughness": {
+            "baseColorTexture": info, "metallicFactor": 0.0, "roughnessFactor": 1.0}},
+            **q.get("material", {})))
         meshes.append({"name": q["name"], "primitives": [{"attributes": attrs, "indices": ii, "material": i}]})
         nodes.append({"mesh": i, "name": q["name"]})
     nodes.append({"camera": 0, "translation": [0, 0, camera_distance], "name": "camera"})
@@ -65,7 +73,7 @@ def quad_model(quads, name, camera_distance=3.2):
         "extensionsUsed": ["KHR_texture_transform"],
         "scene": 0, "scenes": [{"nodes": list(range(len(nodes)))}],
         "nodes": nodes, "meshes": meshes, "materials": materials,
-        "textures": textures, "samplers": samplers, "images": [{"uri": "texaddr.png"}],
+        "textures": textures, "samplers": samplers, "images": [{"uri": i} for i in images],
         "cameras": [{"type": "perspective", "perspective": {"yfov": 0.75, "aspectRatio": 4 / 3, "znear": 0.1}}],
         "accessors": accessors, "bufferViews": views,
         "buffers": [{"byteLength": len(buf),
@@ -95,3 +103,23 @@ quad_model([
     {"name": "texcoord1", "centre": (0, 0), "uv0": ((0.01, 0.01), (0.01, 0.01)),
      "uv1": ((0, 0), (1, 1)), "sampler": {"magFilter": NEAREST}, "textureInfo": {"texCoord": 1}},
 ], "texaddr_uv1.gltf", camera_distance=1.8)
+
+# Alpha per texel: a checkerboard of opaque and clear texels (alpha 255 / 0, a soft 96 on the
+# diagonal squares of the second half) over a white floor lit by the automatic lights. MASK
+# cuts the clear texels out (the floor and the shadow show the checkerboard), BLEND lets
+# light through by 1 - alpha
+A = 8
+rgba = [[(220, 60 + 20 * x, 40, 255 if (x + y) % 2 == 0 else (0 if x < A // 2 else 96))
+         for x in range(A)] for y in range(A)]
+with open("texaddr_alpha.png", "wb") as f:
+    f.write(png(A, A, rgba))
+quad_model([
+    {"name": "floor", "centre": (0, 0), "z": -0.6, "size": 3.2, "uv0": ((0, 0), (0.001, 0.001)),
+     "sampler": {}, "image": "texaddr.png", "textureInfo": {},
+     "material": {"pbrMetallicRoughness": {"baseColorFactor": [1, 1, 1, 1], "metallicFactor": 0.0,
+                                           "roughnessFactor": 1.0}}},
+    {"name": "mask", "centre": (-.6, 0), "uv0": ((0, 0), (1, 1)), "image": "texaddr_alpha.png",
+     "sampler": {"magFilter": NEAREST}, "material": {"alphaMode": "MASK", "alphaCutoff": 0.5}},
+    {"name": "blend", "centre": (.6, 0), "uv0": ((0, 0), (1, 1)), "image": "texaddr_alpha.png",
+     "sampler": {"magFilter": NEAREST}, "material": {"alphaMode": "BLEND"}},
+], "texaddr_alpha.gltf", camera_distance=3.0)
