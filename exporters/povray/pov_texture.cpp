@@ -13,10 +13,12 @@
 // texel under the point, as the sampler does.
 //
 // Alpha (glTF MASK and BLEND): an image_pattern over a grey image of alpha x factor, read with
-// the same filter, selects in a pigment_map between the colour image made clear (transmit all
-// 1) and the colour image itself: BLEND ramps between them (transmit 1 - alpha, filtered
-// colour and alpha as the sampler's straight RGBA), MASK steps at the cutoff (the filtered
-// alpha compared with it, as glTF says).
+// the same filter. BLEND ramps in a pigment_map between the colour image made clear (transmit
+// all 1) and the colour image itself (transmit 1 - alpha, filtered colour and alpha as the
+// sampler's straight RGBA). MASK steps at the cutoff (the filtered alpha compared with it, as
+// glTF says) in a texture_map between nothing at all (no pigment colour, no finish: POV-Ray
+// still adds the highlights of a pigment with transmit 1, and a cut-out texel is not there)
+// and the colour image with the material's finish.
 #include "exporters/povray/pov_texture.h"
 
 #include <algorithm>
@@ -157,22 +159,37 @@ TexturePigment texturePigment(const ir::Texture &tex, const ir::TextureRef &ref,
     std::string map = imageSpec("image_map", file, tex.nearest);
     std::ostringstream os;
     os << note << "    pigment {\n";
+    if (alpha.mode == TextureAlpha::Mode::Mask) {
+        // The texels that are there; the cut-out ones are body()'s texture_map entry
+        os << "        " << map << " filter all " << num(filter) << " transmit all " << num(transmit)
+           << " }\n    }\n";
+        out.sdl = os.str();
+        out.cutOutPattern = "    " + imageSpec("image_pattern", alphaFile, tex.nearest) + " }\n";
+        out.matrix = matrixLine;
+        out.cutoff = alpha.cutoff;
+        return out;
+    }
     if (!withAlpha) {
         os << "        " << map << " filter all " << num(filter) << " transmit all " << num(transmit)
            << " }\n";
     } else {
-        bool mask = alpha.mode == TextureAlpha::Mode::Mask;
-        std::string at = mask ? num(alpha.cutoff) : "0", to = mask ? num(alpha.cutoff) : "1";
         os << "        " << imageSpec("image_pattern", alphaFile, tex.nearest) << " }\n"
            << "        pigment_map {\n"
-           << "            [" << at << " " << map << " transmit all 1 }]\n"
-           << "            [" << to << " " << map << " filter all " << num(filter)
-           << " transmit all " << num(transmit) << " }]\n"
+           << "            [0 " << map << " transmit all 1 }]\n"
+           << "            [1 " << map << " filter all " << num(filter) << " transmit all "
+           << num(transmit) << " }]\n"
            << "        }\n";
     }
     os << matrixLine << "    }\n";
     out.sdl = os.str();
     return out;
+}
+
+std::string TexturePigment::body(const std::string &finish) const {
+    if (cutOutPattern.empty()) return sdl + finish;
+    return cutOutPattern + "    texture_map {\n" + "        [" + num(cutoff) +
+           " pigment { rgbt 1 } finish { ambient 0 diffuse 0 }]\n" + "        [" + num(cutoff) +
+           "\n" + sdl + finish + "        ]\n    }\n" + matrix;
 }
 
 }  // namespace rt::pov

@@ -38,7 +38,19 @@ constexpr int kMaxBakedTextureSide = 8192;
 
 struct TexturePigment {
     std::vector<TextureFile> files;  ///< images to write beside the scene
-    std::string sdl;                 ///< `pigment { ... }` lines, each indented by 4
+    /// `pigment { ... }` lines, each indented by 4; for MASK the pigment of the texels that
+    /// are there (body() adds the rest)
+    std::string sdl;
+    /// MASK only: the image_pattern over the alpha image, the cutoff and the pigment matrix,
+    /// which body() puts on the whole texture
+    std::string cutOutPattern, matrix;
+    double cutoff = 0.5;
+
+    /// The texture body after `uv_mapping`, given the material's `finish { ... }` lines: the
+    /// pigment then the finish; for MASK a texture_map whose cut-out entry has no pigment and
+    /// no finish, since POV-Ray adds the highlights of a pigment with transmit 1 and a glTF
+    /// cut-out texel is not there at all.
+    std::string body(const std::string &finish) const;
 };
 
 /// The pigment for `tex` read through `ref` (its RGB multiplied by `factor`), with `filter`

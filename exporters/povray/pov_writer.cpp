@@ -299,12 +299,12 @@ class Writer {
                 << " = texture {\n";
             const ir::Texture *tex = m.baseColorTexture.valid() ? scene_.textures[m.baseColorTexture.texture].get() : nullptr;
             if (tex) {
-                os_ << "    uv_mapping\n" << texturedPigment(i, m, *tex);
+                os_ << "    uv_mapping\n" << texturedPigment(i, m, *tex).body(finish(f));
             } else {
                 os_ << "    pigment { rgbft <" << num(m.color.r) << ", " << num(m.color.g) << ", "
-                    << num(m.color.b) << ", " << num(m.filter) << ", " << num(m.transmit) << "> }\n";
+                    << num(m.color.b) << ", " << num(m.filter) << ", " << num(m.transmit) << "> }\n"
+                    << finish(f);
             }
-            finish(f);
             os_ << "}\n";
         }
         os_ << "\n";
@@ -315,7 +315,8 @@ class Writer {
     /// term at POV-Ray's default (emission 0, phong 0, specular 0, no reflection) is left
     /// out, and so are the parameters of a term that is off (phong_size without phong,
     /// roughness without specular, metallic without highlights, brilliance without diffuse).
-    void finish(const ir::Finish &f) {
+    static std::string finish(const ir::Finish &f) {
+        std::ostringstream os_;  // the writer's name, so the terms read as everywhere else
         os_ << "    finish {\n"
             << "        ambient " << num(f.ambient) << "\n";
         if (!f.emission.isBlack()) os_ << "        emission " << rgb(f.emission) << "\n";
@@ -337,6 +338,7 @@ class Writer {
         }
         if (f.conserveEnergy) os_ << "        conserve_energy\n";
         os_ << "    }\n";
+        return os_.str();
     }
 
     /// POV-Ray 3.7 has no blurred reflection or refraction: the nearest equivalent is the sharp
@@ -387,7 +389,7 @@ class Writer {
     /// The uv_mapping pigment of a textured material: colour factor, wrap modes, filter,
     /// KHR_texture_transform and alpha baked as pov_texture.h describes; the images go to
     /// images_. The transform's reach comes from every mesh the material is placed on.
-    std::string texturedPigment(int index, const ir::Material &m, const ir::Texture &tex) {
+    TexturePigment texturedPigment(int index, const ir::Material &m, const ir::Texture &tex) {
         const ir::TextureRef &ref = m.baseColorTexture;
         UvRange range;
         for (const auto &[mesh, material] : meshMaterials_) {
@@ -405,7 +407,7 @@ class Writer {
                                           assetPrefix_ + "_" + materialName(index));
         if (images_)
             for (TextureFile &f : p.files) images_->push_back(std::move(f));
-        return p.sdl;
+        return p;
     }
 
     /// The texture coordinate set mesh2 `mesh` carries (it has one uv_vectors): the one the
@@ -508,7 +510,7 @@ class Writer {
                 os_ << ",\n        texture {\n    pigment { rgbft <" << num(col.r) << ", "
                     << num(col.g) << ", " << num(col.b) << ", " << num(coloured->filter) << ", "
                     << num(coloured->transmit) << "> }\n";
-                finish(coloured->finish);
+                os_ << finish(coloured->finish);
                 os_ << "        }";
             }
             os_ << "\n    }\n";
