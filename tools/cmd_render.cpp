@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <tuple>
 
 #include "core/image/image_io.h"
 #include "core/render/render_plan.h"
@@ -14,6 +15,7 @@
 #include "core/render/renderer.h"
 #include "tools/cli_common.h"
 #include "tools/commands.h"
+#include "tools/tiles.h"
 
 namespace rt::cli {
 
@@ -22,6 +24,7 @@ namespace {
 struct RenderArgs {
     SceneArgs scene;
     std::string output;
+    std::string tile;  ///< --tile K/N
     int width = 640, height = 480, samples = 1, threads = 0, bits = 8;
     uint64_t seed = 0;
     bool linear = false, quiet = false, plan = false, noPlan = false, noAa = false;
@@ -64,9 +67,17 @@ int runRender(const RenderArgs &a) {
     ro.adaptiveThreshold = a.aaThreshold;
     ro.adaptiveTolerance = a.aaTolerance;
     ro.adaptive = !a.samplesGiven && !a.noAa;
+    TileSpec tile = a.tile.empty() ? TileSpec{} : parseTile(a.tile);
+    if (tile) std::tie(ro.rowBegin, ro.rowEnd) = tileRows(tile.index - 1, tile.count, a.height);
     validateRenderOptions(ro);  // fail on bad options before reading the scene
     std::string output = a.output;
-    if (output.empty()) output = std::filesystem::path(a.scene.input).stem().string() + ".png";
+    std::string stem = std::filesystem::path(a.scene.input).stem().string();
+    if (output.empty())
+        output = tile ? stem + "_tile" + std::to_string(tile.index) + "of" + std::to_string(tile.count) + ".exr"
+                      : stem + ".png";
+    if (tile && std::filesystem::path(output).extension() != ".exr")
+        throw std::invalid_argument("--tile writes an OpenEXR tile (-o name.exr), not '" + output +
+                                    "'; `scadray merge` makes the picture");
     requireOutputFile(output, "-o");
 
     DiagnosticSink diag;
@@ -99,7 +110,12 @@ int runRender(const RenderArgs &a) {
     WriteOptions wo;
     wo.pngDepth = a.bits == 16 ? PngDepth::Bits16 : PngDepth::Bits8;
     wo.linearPng = a.linear;
-    writeImage(r.image, output, wo);
+    if (tile)
+        writeTile(r, output, {tile, a.scene.input, sceneFingerprint(a.scene.input, scene),
+                              pixelOptions(ro, a.scene, a.noPlan), "", r.samples, ro.rowBegin,
+                              r.image.height(), a.width, a.height});
+    else
+        writeImage(r.image, output, wo);
 
     if (!a.quiet) {
         const RayStats &s = r.stats;
@@ -174,6 +190,9 @@ void addRenderCommand(CLI::App &app, std::function<int()> &action) {
         ->check(CLI::IsMember({8, 16}))
         ->capture_default_str();
     cmd->add_flag("--linear", args->linear, "Write PNG values linear instead of sRGB");
+    cmd->add_option("--tile", args->tile,
+                    "Render tile K of N horizontal bands (1 <= K <= N, as SLURM_ARRAY_TASK_ID with "
+                    "--array=1-N) to an .exr that `scadray merge` assembles");
     cmd->add_flag("-q,--quiet", args->quiet, "Only warnings and errors");
     cmd->callback([args, cmd, &action]() {
         args->samplesGiven = cmd->count("--samples") > 0;

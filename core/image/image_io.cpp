@@ -62,6 +62,7 @@ struct RawImage {
     int batches = 0;
     std::vector<std::string> channelNames;
     std::vector<float> pixels;
+    ImageMetadata meta;
 };
 
 /// Refuses what a header declares beyond the limits (image_limits.h), before any pixel memory is
@@ -99,6 +100,8 @@ std::optional<RawImage> readPngRaw(const std::string &path, uint64_t fileBytes) 
     raw.integer = true;
     raw.linear = png.linear();
     raw.pixels = png.readPixels();
+    raw.meta.fullWidth = raw.width;
+    raw.meta.fullHeight = raw.height;
     return raw;
 }
 
@@ -121,6 +124,12 @@ RawImage readOiioRaw(const std::string &path) {
     raw.batches = h.batches;
     for (int c = 0; c < std::min(h.channels, SCADRAY_OIIO_MAX_NAMED_CHANNELS); ++c)
         raw.channelNames.emplace_back(h.channelNames[c]);
+    raw.meta.x = h.x;
+    raw.meta.y = h.y;
+    raw.meta.fullWidth = h.fullWidth;
+    raw.meta.fullHeight = h.fullHeight;
+    for (int i = 0; i < std::min(h.attributeCount, SCADRAY_OIIO_MAX_ATTRIBUTES); ++i)
+        raw.meta.attributes.emplace_back(h.attributeNames[i], h.attributeValues[i]);
     raw.pixels.resize(size_t(h.width) * size_t(h.height) * size_t(h.channels));
     if (!oiio.readPixels(in, raw.pixels.data(), error, sizeof error))
         throw std::runtime_error("cannot read image '" + path + "': " + error);
@@ -223,7 +232,13 @@ void writeImageWithOiio(const Image &img, const std::string &path, const WriteOp
     writeImageOiio(img, path, opts);
 }
 
-void writeEstimate(const ImageEstimate &est, const std::string &path) {
+std::string ImageMetadata::attribute(const std::string &name) const {
+    for (const auto &[n, v] : attributes)
+        if (n == name) return v;
+    return {};
+}
+
+void writeEstimate(const ImageEstimate &est, const std::string &path, const ImageMetadata &meta) {
     if (lowerExtension(path) != ".exr")
         throw std::runtime_error("image estimates are written as .exr, not '" + path + "'");
     const Image &m = est.mean;
@@ -244,6 +259,23 @@ void writeEstimate(const ImageEstimate &est, const std::string &path) {
     spec.type = SCADRAY_OIIO_FLOAT;
     spec.channelNames = namePtrs.data();
     spec.batches = est.batches;
+    spec.x = meta.x;
+    spec.y = meta.y;
+    spec.fullWidth = meta.fullWidth;
+    spec.fullHeight = meta.fullHeight;
+    std::vector<const char *> attrNames, attrValues;
+    for (const auto &[n, v] : meta.attributes) {
+        if (n.size() >= SCADRAY_OIIO_NAME_SIZE || v.size() >= SCADRAY_OIIO_VALUE_SIZE)
+            throw std::runtime_error("image attribute '" + n + "' is too long to keep");
+        attrNames.push_back(n.c_str());
+        attrValues.push_back(v.c_str());
+    }
+    if (attrNames.size() > SCADRAY_OIIO_MAX_ATTRIBUTES)
+        throw std::runtime_error("more than " + std::to_string(SCADRAY_OIIO_MAX_ATTRIBUTES) +
+                                 " image attributes");
+    spec.attributeCount = static_cast<int>(attrNames.size());
+    spec.attributeNames = attrNames.data();
+    spec.attributeValues = attrValues.data();
     std::vector<float> px(size_t(m.width()) * m.height() * nch);
     for (size_t p = 0; p < size_t(m.width()) * m.height(); ++p)
         for (size_t l = 0; l < layers.size(); ++l)
@@ -251,8 +283,9 @@ void writeEstimate(const ImageEstimate &est, const std::string &path) {
     writeOiio(spec, px.data(), path);
 }
 
-ImageEstimate readEstimate(const std::string &path, bool assumeLinear) {
+ImageEstimate readEstimate(const std::string &path, bool assumeLinear, ImageMetadata *meta) {
     RawImage raw = readRaw(path);
+    if (meta) *meta = raw.meta;
     auto channel = [&](const std::string &name) {
         for (size_t i = 0; i < raw.channelNames.size(); ++i)
             if (raw.channelNames[i] == name) return static_cast<int>(i);

@@ -6,6 +6,8 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "core/image/image.h"
 
@@ -29,13 +31,28 @@ double srgbDecode(double encoded);
 /// including a module that cannot be loaded; the target is then left as it was.
 void writeImage(const Image &img, const std::string &path, const WriteOptions &opts = {});
 
+/// What an OpenEXR header says about an image beyond its pixels: its place in a larger picture
+/// (a tile of `render --tile`) and scadray's string attributes.
+struct ImageMetadata {
+    /// The image's top-left pixel in the picture (the data window) and the picture's size (the
+    /// display window); fullWidth = fullHeight = 0 when writing: the image is the whole picture.
+    int x = 0, y = 0, fullWidth = 0, fullHeight = 0;
+    /// Attributes named "scadray:...", in the order written (at most 16, values up to 2047 bytes).
+    std::vector<std::pair<std::string, std::string>> attributes;
+    /// The value of attribute `name`, empty when absent.
+    std::string attribute(const std::string &name) const;
+};
+
 /// Writes an estimate as OpenEXR: channels R, G, B (the mean), var.R/G/B, spread.R/G/B and
-/// ties.R/G/B when present, and the batch count as the header attribute "scadray:batches".
-void writeEstimate(const ImageEstimate &est, const std::string &path);
+/// ties.R/G/B when present, the batch count as the header attribute "scadray:batches", and
+/// `meta`'s place in the picture and attributes.
+void writeEstimate(const ImageEstimate &est, const std::string &path, const ImageMetadata &meta = {});
 
 /// Reads an image written by writeEstimate, or any image (then only the mean is filled); checked
-/// as readImage is.
-ImageEstimate readEstimate(const std::string &path, bool assumeLinear = false);
+/// as readImage is. `meta`, when given, receives the header's place and attributes (a format
+/// without them: the image as the whole picture and none).
+ImageEstimate readEstimate(const std::string &path, bool assumeLinear = false,
+                           ImageMetadata *meta = nullptr);
 
 /// Box-filters each k x k block into one pixel; `spread` receives max - min over the block and
 /// the ring of sub-samples bordering it.

@@ -11,12 +11,15 @@ extern "C" {
 
 /// Changes whenever a struct or a function below changes; the loader refuses a module built
 /// with another value.
-#define SCADRAY_OIIO_ABI_VERSION 1
+#define SCADRAY_OIIO_ABI_VERSION 2
 /// The one symbol the module exports.
 #define SCADRAY_OIIO_ENTRY "scadray_oiio_api"
 /// Most channel names a header carries (more channels are counted, not named).
 #define SCADRAY_OIIO_MAX_NAMED_CHANNELS 16
 #define SCADRAY_OIIO_NAME_SIZE 64
+/// Most "scadray:" string attributes a header carries, and the room for each value.
+#define SCADRAY_OIIO_MAX_ATTRIBUTES 16
+#define SCADRAY_OIIO_VALUE_SIZE 2048
 
 enum { SCADRAY_OIIO_UINT8 = 0, SCADRAY_OIIO_UINT16 = 1, SCADRAY_OIIO_FLOAT = 2 };
 
@@ -27,6 +30,13 @@ struct ScadrayOiioHeader {
     int linear;   ///< its colour space is "linear" (any case)
     int batches;  ///< the "scadray:batches" attribute, 0 when absent
     char channelNames[SCADRAY_OIIO_MAX_NAMED_CHANNELS][SCADRAY_OIIO_NAME_SIZE];
+    /// The pixels' place in the whole picture (OpenEXR's data window) and the picture's size
+    /// (its display window); x = y = 0 and the image's own size where a format has no such thing.
+    int x, y, fullWidth, fullHeight;
+    /// String attributes whose names start with "scadray:" (values cut to fit).
+    int attributeCount;
+    char attributeNames[SCADRAY_OIIO_MAX_ATTRIBUTES][SCADRAY_OIIO_NAME_SIZE];
+    char attributeValues[SCADRAY_OIIO_MAX_ATTRIBUTES][SCADRAY_OIIO_VALUE_SIZE];
 };
 
 /// What to write: interleaved pixels of `type`, top row first.
@@ -36,6 +46,13 @@ struct ScadrayOiioWriteSpec {
     const char *colorSpace;           ///< "oiio:ColorSpace", or null
     float gamma;                      ///< "oiio:Gamma" when > 0
     int batches;                      ///< "scadray:batches" when >= 0
+    /// The pixels' place in a larger picture of fullWidth x fullHeight (0: the image is the whole
+    /// picture); formats without a data window ignore it.
+    int x, y, fullWidth, fullHeight;
+    /// String attributes written to the header.
+    int attributeCount;
+    const char *const *attributeNames;
+    const char *const *attributeValues;
 };
 
 /// The module's functions. Each returns null or 0 on failure with a message (NUL-terminated,

@@ -45,6 +45,18 @@ void *openInput(const char *path, ScadrayOiioHeader *header, char *error, size_t
         int named = std::min(spec.nchannels, SCADRAY_OIIO_MAX_NAMED_CHANNELS);
         for (int i = 0; i < named && i < int(spec.channelnames.size()); ++i)
             setError(header->channelNames[i], SCADRAY_OIIO_NAME_SIZE, spec.channelnames[i]);
+        header->x = spec.x - spec.full_x;
+        header->y = spec.y - spec.full_y;
+        header->fullWidth = spec.full_width;
+        header->fullHeight = spec.full_height;
+        for (const OIIO::ParamValue &p : spec.extra_attribs) {
+            std::string name = p.name().string();
+            if (name.rfind("scadray:", 0) != 0 || p.type() != OIIO::TypeDesc::STRING) continue;
+            if (header->attributeCount == SCADRAY_OIIO_MAX_ATTRIBUTES) break;
+            int i = header->attributeCount++;
+            setError(header->attributeNames[i], SCADRAY_OIIO_NAME_SIZE, name);
+            setError(header->attributeValues[i], SCADRAY_OIIO_VALUE_SIZE, p.get_string());
+        }
         return in.release();
     } catch (const std::exception &e) {
         setError(error, errorSize, e.what());
@@ -102,6 +114,15 @@ int writePixels(void *output, const char *file, const ScadrayOiioWriteSpec *ws,
         }
         if (ws->colorSpace) spec.attribute("oiio:ColorSpace", ws->colorSpace);
         if (ws->batches >= 0) spec.attribute("scadray:batches", ws->batches);
+        if (ws->fullWidth > 0 && ws->fullHeight > 0) {
+            spec.x = ws->x;
+            spec.y = ws->y;
+            spec.full_x = spec.full_y = 0;
+            spec.full_width = ws->fullWidth;
+            spec.full_height = ws->fullHeight;
+        }
+        for (int i = 0; i < ws->attributeCount; ++i)
+            spec.attribute(ws->attributeNames[i], ws->attributeValues[i]);
         spec.attribute("Software", "scadray");
         if (ws->gamma > 0) spec.attribute("oiio:Gamma", ws->gamma);
         bool ok = out->open(file, spec) && out->write_image(type, pixels);

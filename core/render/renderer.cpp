@@ -51,6 +51,11 @@ void validateRenderOptions(const RenderOptions &o) {
     if (!(o.sampleClamp >= 0)) throw std::invalid_argument("sample clamp must not be negative");
     if (o.threads < 0) throw std::invalid_argument("thread count must not be negative");
     if (o.tileSize < 1) throw std::invalid_argument("tile size must be positive");
+    if (o.rowBegin < 0 || o.rowEnd < 0 || o.rowBegin >= (o.rowEnd > 0 ? o.rowEnd : o.height) ||
+        o.rowEnd > o.height)
+        throw std::invalid_argument("rows " + std::to_string(o.rowBegin) + ".." +
+                                    std::to_string(o.rowEnd) + " are not a band of a picture " +
+                                    std::to_string(o.height) + " rows high");
     if (o.adaptive) {
         if (o.adaptiveMax != 1 << (2 * adaptiveLevels(o.adaptiveMax)))
             throw std::invalid_argument("adaptive antialiasing needs a maximum of 4, 16, 64, 256, "
@@ -61,6 +66,17 @@ void validateRenderOptions(const RenderOptions &o) {
         if (o.batches != 1 || o.jitterSingleSample)
             throw std::invalid_argument("adaptive antialiasing renders one batch of samples");
     }
+}
+
+std::pair<int, int> tileRows(int tile, int tiles, int height) {
+    if (tiles < 1 || tiles > height)
+        throw std::invalid_argument("a picture " + std::to_string(height) + " rows high splits into 1 to " +
+                                    std::to_string(height) + " tiles, not " + std::to_string(tiles));
+    if (tile < 0 || tile >= tiles)
+        throw std::invalid_argument("tile " + std::to_string(tile + 1) + " is not one of 1.." +
+                                    std::to_string(tiles));
+    auto begin = [&](int k) { return static_cast<int>(int64_t(k) * height / tiles); };
+    return {begin(tile), begin(tile + 1)};
 }
 
 void strataGrid(int n, int &columns, int &rows) {
@@ -108,16 +124,22 @@ void runJobs(int threads, int jobs, const RenderOptions &opts, double from, doub
     for (const auto &s : threadStats) stats += s;
 }
 
+/// Last row (exclusive) of the rows the options ask for.
+int endRow(const RenderOptions &o) { return o.rowEnd > 0 ? o.rowEnd : o.height; }
+
+/// The thread tiles (tileSize squares) covering rows [rowBegin, rowEnd) of the picture.
 struct Tiles {
-    int x = 0, count = 0;
-    Tiles(const RenderOptions &o) : x((o.width + o.tileSize - 1) / o.tileSize) {
-        count = x * ((o.height + o.tileSize - 1) / o.tileSize);
+    int x = 0, count = 0, rowBegin = 0, rowEnd = 0;
+    Tiles(const RenderOptions &o, int rowBegin, int rowEnd)
+        : x((o.width + o.tileSize - 1) / o.tileSize), rowBegin(rowBegin), rowEnd(rowEnd) {
+        count = x * ((rowEnd - rowBegin + o.tileSize - 1) / o.tileSize);
     }
-    /// Calls f(x, y) for each pixel of tile `t`.
+    explicit Tiles(const RenderOptions &o) : Tiles(o, o.rowBegin, endRow(o)) {}
+    /// Calls f(x, y) for each pixel of tile `t` (picture coordinates).
     template <typename F>
     void forPixels(const RenderOptions &o, int t, F f) const {
-        int x0 = (t % x) * o.tileSize, y0 = (t / x) * o.tileSize;
-        int x1 = std::min(x0 + o.tileSize, o.width), y1 = std::min(y0 + o.tileSize, o.height);
+        int x0 = (t % x) * o.tileSize, y0 = rowBegin + (t / x) * o.tileSize;
+        int x1 = std::min(x0 + o.tileSize, o.width), y1 = std::min(y0 + o.tileSize, rowEnd);
         for (int y = y0; y < y1; ++y)
             for (int px = x0; px < x1; ++px) f(px, y);
     }
@@ -136,7 +158,8 @@ void renderUniform(const Camera &camera, const WhittedIntegrator &integrator,
     strataGrid(opts.samplesPerPixel, columns, rows);
     bool jitter = opts.samplesPerPixel > 1 || opts.batches > 1 || opts.jitterSingleSample;
     double invSamples = 1.0 / opts.samplesPerPixel;
-    if (opts.batches > 1) result.variance = Image(opts.width, opts.height);
+    int y0 = opts.rowBegin, bandRows = endRow(opts) - y0;
+    if (opts.batches > 1) result.variance = Image(opts.width, bandRows);
     runJobs(threads, tiles.count, opts, 0, 1, result.stats, [&](int tile, TraceContext &ctx) {
         tiles.forPixels(opts, tile, [&](int x, int y) {
             uint64_t pixel = uint64_t(y) * opts.width + x;
@@ -164,13 +187,13 @@ void renderUniform(const Camera &camera, const WhittedIntegrator &integrator,
                 mean += delta / double(b + 1);
                 m2 += delta * (batchMean - mean);
             }
-            result.image.set(x, y, mean);
-            result.ties.set(x, y, Rgb(double(tiedSamples) / (opts.batches * opts.samplesPerPixel)));
+            result.image.set(x, y - y0, mean);
+            result.ties.set(x, y - y0, Rgb(double(tiedSamples) / (opts.batches * opts.samplesPerPixel)));
             if (opts.batches > 1)
-                result.variance.set(x, y, m2 / double(opts.batches - 1) / double(opts.batches));
+                result.variance.set(x, y - y0, m2 / double(opts.batches - 1) / double(opts.batches));
         });
     });
-    result.samples = int64_t(opts.width) * opts.height * opts.samplesPerPixel * opts.batches;
+    result.samples = int64_t(opts.width) * bandRows * opts.samplesPerPixel * opts.batches;
 }
 
 /// Display value of a linear colour for the refinement decisions: the square root (close to
@@ -209,8 +232,9 @@ bool samplesDiffer(uint32_t hitA, const std::array<uint8_t, 3> &a, uint32_t hitB
 
 /// What pass 1 leaves for pass 2: per pixel 8 bytes (the pages a pass touches are much of its
 /// cost), the primitive hit and the display value of its centre sample, and the pixels to refine
-/// in index order.
+/// (picture indices) in index order. Its per-pixel vectors start at row `firstRow`.
 struct FirstPass {
+    int firstRow = 0;
     std::vector<uint32_t> hits;
     std::vector<std::array<uint8_t, 3>> display;
     /// Per pixel, the sides (kLeft ...) of the neighbours that differ from it.
@@ -237,36 +261,43 @@ int facingQuadrants(uint8_t sides) {
     return mask;
 }
 
-/// Pass 1: every pixel's centre; zeroes result.pixelLevels and finds the pixels to refine.
+/// Pass 1: every pixel's centre; zeroes result.pixelLevels and finds the pixels to refine. A
+/// band of the picture (rowBegin, rowEnd) also traces the centres of the rows bordering it: its
+/// pixels' decisions read them, and must be those of the whole picture.
 FirstPass adaptiveFirstPass(const Camera &camera, const WhittedIntegrator &integrator,
                                    const RenderOptions &opts, int threads, RenderResult &result) {
-    Tiles tiles(opts);
-    int w = opts.width, h = opts.height;
+    int y0 = opts.rowBegin, y1 = endRow(opts);
+    int e0 = std::max(0, y0 - 1), e1 = std::min(opts.height, y1 + 1);
+    Tiles tiles(opts, e0, e1);
+    int w = opts.width, h = e1 - e0;
     FirstPass first;
+    first.firstRow = e0;
     std::vector<uint32_t> &hits = first.hits;
     std::vector<std::array<uint8_t, 3>> &display = first.display;
     hits.resize(size_t(w) * h);
     display.resize(size_t(w) * h);
     runJobs(threads, tiles.count, opts, 0, 0.5, result.stats, [&](int tile, TraceContext &ctx) {
         tiles.forPixels(opts, tile, [&](int x, int y) {
-            size_t pixel = size_t(y) * w + x;
+            size_t pixel = size_t(y) * opts.width + x;
             // The centre sample has no jitter and no distributed ray: its stream is that of
             // uniform sampling's single sample
             ctx.rng = Rng::forSample(pixel, 0, opts.seed);
             ctx.tie = false;
             ctx.firstHit = nullptr;
             Rgb c = clampSample(integrator.li(camera.generateRay(x + 0.5, y + 0.5), ctx), opts);
-            result.image.set(x, y, c);
-            result.ties.set(x, y, Rgb(ctx.tie ? 1.0 : 0.0));
-            hits[pixel] = hitKey(ctx.firstHit);
-            display[pixel] = displayBytes(displayValue(c));
+            if (y >= y0 && y < y1) {
+                result.image.set(x, y - y0, c);
+                result.ties.set(x, y - y0, Rgb(ctx.tie ? 1.0 : 0.0));
+            }
+            hits[pixel - size_t(e0) * w] = hitKey(ctx.firstHit);
+            display[pixel - size_t(e0) * w] = displayBytes(displayValue(c));
         });
     });
     // Mark both pixels of each neighbouring pair that differ in colour or primitive, each with
     // the side the other lies on
     std::vector<uint8_t> &sides = first.sides;
     sides.assign(size_t(w) * h, 0);
-    result.pixelLevels.assign(size_t(w) * h, 0);
+    result.pixelLevels.assign(size_t(w) * (y1 - y0), 0);
     int threshold = thresholdBytes(opts);
     auto pair = [&](size_t a, size_t b, uint8_t sideOfB, uint8_t sideOfA) {
         if (samplesDiffer(hits[a], display[a], hits[b], display[b], threshold)) {
@@ -282,8 +313,9 @@ FirstPass adaptiveFirstPass(const Camera &camera, const WhittedIntegrator &integ
             if (x + 1 < w) pair(p, p + 1, kRight, kLeft);
             if (y + 1 < h) pair(p, p + w, kBelow, kAbove);
         }
-    for (size_t p = 0; p < sides.size(); ++p)
-        if (sides[p]) first.refine.push_back(static_cast<int>(p));
+    // The band's own rows: the bordering ones only lent their centres
+    for (size_t p = size_t(y0 - e0) * w; p < size_t(y1 - e0) * w; ++p)
+        if (sides[p]) first.refine.push_back(static_cast<int>(p + size_t(e0) * w));
     return first;
 }
 
@@ -329,10 +361,12 @@ void renderAdaptive(const Camera &camera, const WhittedIntegrator &integrator, c
                     int threads, RenderResult &result) {
     // Monte Carlo noise: every pixel from round 1 on, with no centre pass
     FirstPass first;
+    int y0 = opts.rowBegin;
     if (opts.adaptiveNoise) {
-        result.pixelLevels.assign(size_t(opts.width) * opts.height, 0);
+        result.pixelLevels.assign(size_t(opts.width) * (endRow(opts) - y0), 0);
         first.refine.resize(result.pixelLevels.size());
-        for (size_t p = 0; p < first.refine.size(); ++p) first.refine[p] = static_cast<int>(p);
+        for (size_t p = 0; p < first.refine.size(); ++p)
+            first.refine[p] = static_cast<int>(p + size_t(y0) * opts.width);
     } else {
         first = adaptiveFirstPass(camera, integrator, opts, threads, result);
     }
@@ -350,6 +384,9 @@ void renderAdaptive(const Camera &camera, const WhittedIntegrator &integrator, c
         size_t end = std::min(refine.size(), size_t(chunk + 1) * kChunk);
         for (size_t i = size_t(chunk) * kChunk; i < end; ++i) {
             int pixel = refine[i], x = pixel % opts.width, y = pixel / opts.width;
+            // Its index into the result's vectors and into pass 1's
+            size_t own = size_t(pixel) - size_t(y0) * opts.width;
+            size_t firstOwn = size_t(pixel) - size_t(first.firstRow) * opts.width;
             uint64_t key = mixBits(uint64_t(pixel) ^ mixBits(opts.seed ^ 0x5ca1ab1e0ddba11ULL));
             int tied = 0;
             // Sample j of the pixel: the cell's sample exactly as uniform sampling at
@@ -375,7 +412,7 @@ void renderAdaptive(const Camera &camera, const WhittedIntegrator &integrator, c
             // centre's primitive and display value, the contrast lies in the neighbours' boxes:
             // the pixel keeps its centre (a checked pixel)
             int n = 0, k = 0;
-            int facing = opts.adaptiveNoise ? 0xf : facingQuadrants(first.sides[pixel]);
+            int facing = opts.adaptiveNoise ? 0xf : facingQuadrants(first.sides[firstOwn]);
             if (facing != 0xf) {
                 // quadrant q holds sample q ^ (round 1's scramble), as adaptiveCell places them
                 int scramble = static_cast<int>(mixBits(key ^ mixBits(1)) & 3);
@@ -386,11 +423,11 @@ void renderAdaptive(const Camera &camera, const WhittedIntegrator &integrator, c
                         int j = q ^ scramble;
                         sample(j);
                         ++probes;
-                        flat = flat && !samplesDiffer(hits[j], displayBytes(display[j]), first.hits[pixel],
-                                                      first.display[pixel], kProbeAgreement);
+                        flat = flat && !samplesDiffer(hits[j], displayBytes(display[j]), first.hits[firstOwn],
+                                                      first.display[firstOwn], kProbeAgreement);
                     }
                 if (flat) {
-                    result.pixelChecked[pixel] = static_cast<uint8_t>(probes);
+                    result.pixelChecked[own] = static_cast<uint8_t>(probes);
                     continue;
                 }
                 for (int q = 0; q < 4; ++q)
@@ -410,18 +447,21 @@ void renderAdaptive(const Camera &camera, const WhittedIntegrator &integrator, c
             Rgb sum(0);
             for (int j : byCell)
                 if (j >= 0) sum += values[j];
-            result.image.set(x, y, sum * (1.0 / n));
-            result.ties.set(x, y, Rgb(double(tied) / n));
-            result.pixelLevels[pixel] = static_cast<uint8_t>(k);
+            result.image.set(x, y - y0, sum * (1.0 / n));
+            result.ties.set(x, y - y0, Rgb(double(tied) / n));
+            result.pixelLevels[own] = static_cast<uint8_t>(k);
         }
     });
+    // Counted over the band's pixels (a band's bordering centres are not among its samples)
+    int64_t pixels = int64_t(result.pixelLevels.size());
     result.pixelsBySamples.assign(levels + 1, 0);
-    result.pixelsBySamples[0] = int64_t(opts.width) * opts.height - int64_t(refine.size());
-    result.samples = opts.adaptiveNoise ? 0 : int64_t(opts.width) * opts.height;
+    result.pixelsBySamples[0] = pixels - int64_t(refine.size());
+    result.samples = opts.adaptiveNoise ? 0 : pixels;
     result.checkedPixels = 0;
     for (int pixel : refine) {
-        int k = result.pixelLevels[pixel];
-        int probes = result.pixelChecked[pixel];
+        size_t own = size_t(pixel) - size_t(y0) * opts.width;
+        int k = result.pixelLevels[own];
+        int probes = result.pixelChecked[own];
         ++result.pixelsBySamples[k];
         result.checkedPixels += probes > 0;
         result.samples += probes > 0 ? probes : int64_t(1) << (2 * k);
@@ -465,8 +505,8 @@ RenderResult renderImage(const RenderScene &scene, const RenderOptions &opts) {
     WhittedIntegrator integrator(scene, camera.position());
     int threads = opts.threads > 0 ? opts.threads : std::max(1u, std::thread::hardware_concurrency());
     RenderResult result;
-    result.image = Image(opts.width, opts.height);
-    result.ties = Image(opts.width, opts.height);
+    result.image = Image(opts.width, endRow(opts) - opts.rowBegin);
+    result.ties = Image(opts.width, endRow(opts) - opts.rowBegin);
     result.threads = std::min(threads, Tiles(opts).count);
     if (opts.adaptive)
         renderAdaptive(camera, integrator, opts, threads, result);

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/image/image.h"
@@ -68,9 +69,22 @@ struct RenderOptions {
     /// 0.15: at 0.1, 2.5 % of glass.scad's pixels took 16 samples (against 0.8 %), for a
     /// picture that passed `compare` against uniform 64 either way.
     double adaptiveTolerance = 0.15;
+    /// Rows [rowBegin, rowEnd) of the picture only (rowEnd 0: to its last row), as one tile of
+    /// a picture rendered in horizontal bands (`render --tile`, tileRows): the result's images
+    /// and per-pixel vectors hold those rows (their row 0 is row rowBegin), and every pixel is
+    /// bit for bit the pixel the whole picture has. Edge-adaptive sampling also traces the
+    /// centres of the rows just above and below the band, which its refinement decisions read.
+    int rowBegin = 0;
+    int rowEnd = 0;
     /// Called from the calling thread about four times a second with the finished fraction.
     std::function<void(double)> progress;
 };
+
+/// Rows [begin, end) of tile `tile` (0-based) of `tiles` horizontal bands of a picture
+/// `height` rows high: begin = floor(tile * height / tiles), so bands differ by at most one
+/// row and the later ones are the taller. Throws std::invalid_argument unless
+/// 0 <= tile < tiles <= height.
+std::pair<int, int> tileRows(int tile, int tiles, int height);
 
 struct RenderResult {
     Image image;
