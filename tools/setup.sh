@@ -15,6 +15,8 @@ packages=(
     openscad-mcad
     clang libclang-rt-14-dev
     libembree-dev
+    # A private Slurm cluster for the tests of tools/slurm/ (tests/slurm/cluster.sh)
+    slurm-wlm munge
 )
 
 missing=()
