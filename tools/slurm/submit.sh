@@ -15,7 +15,7 @@
 #
 # Common options: --scadray PATH (the binary; default scadray on PATH, else the build beside
 # this script), --sbatch 'ARGS' (more sbatch options for every job: partition, time limit,
-# --cpus-per-task ...), --wait (return when the last job has ended, with its status). Prints the
+# --cpus-per-task ...), --wait (return when the last job has ended: 0 when it completed). Prints the
 # array's and the last job's ids. Every path must be on a filesystem the nodes share.
 set -euo pipefail
 
@@ -67,17 +67,25 @@ command -v sbatch >/dev/null || die "sbatch not found (is this a Slurm login nod
 # shellcheck disable=SC2206 # --sbatch takes several words
 extra=($sbatch_extra)
 submit() { sbatch --parsable "${extra[@]}" "$@" | cut -d ';' -f 1; }
+# Waits for job `id` to end and returns 0 when it completed. Polls squeue every second at first,
+# less often as the wait grows (at most every 10 s): sbatch --wait polls at doubling intervals
+# and can add half a minute to a job of seconds.
+wait_for() {
+    local id=$1 start=$SECONDS state
+    while [ -n "$(squeue -h -j "$id" -o %i 2>/dev/null)" ]; do
+        sleep $((1 + (SECONDS - start) / 30 > 10 ? 10 : 1 + (SECONDS - start) / 30))
+    done
+    state=$(scontrol show job -o "$id" 2>/dev/null | grep -o 'JobState=[A-Z_]*' | cut -d= -f2 || true)
+    echo "$mode: job $id ended: ${state:-state unknown}" >&2
+    [ "$state" = COMPLETED ]
+}
 finish() {
     local array=$1
     shift
     local last
-    if [ "$wait" -eq 1 ]; then
-        echo "$mode: array job $array submitted; waiting for the last job" >&2
-        sbatch --wait "${extra[@]}" "$@"
-        return
-    fi
     last=$(submit "$@")
     echo "$mode: array job $array, then job $last"
+    [ "$wait" -eq 0 ] || wait_for "$last"
 }
 
 case $mode in
