@@ -7,7 +7,8 @@
 #
 #   tests/slurm/cluster.sh run -- COMMAND [ARGS...]
 #       starts the cluster, runs COMMAND with SLURM_CONF (and PATH) set for sbatch, squeue and
-#       scontrol, stops the cluster, and exits with COMMAND's status.
+#       scontrol, stops the cluster, and exits with COMMAND's status. A watchdog stops it too
+#       should this script be killed outright (SIGKILL).
 #
 # Needs root (slurmd runs jobs as their user; CI runs as root) and slurmctld, slurmd, munged,
 # mungekey, sbatch, squeue and scontrol (Debian: slurm-wlm, munge). Exits 77, naming what is
@@ -162,6 +163,9 @@ ConstrainRAMSpace=no
 EOF
     : >"$d/plugstack.conf"
     export SLURM_CONF="$d/slurm.conf"
+    # A watchdog in a session of its own stops the cluster should this shell be killed past its
+    # traps (SIGKILL from a test driver's timeout)
+    setsid bash "${BASH_SOURCE[0]}" watch "$$" "$d" </dev/null >/dev/null 2>&1 &
 
     slurmctld -f "$SLURM_CONF" -i
     slurmd -f "$SLURM_CONF" -N "$host"
@@ -178,6 +182,14 @@ EOF
 }
 
 main() {
+    # Internal: watch PID DIR stops the cluster in DIR once process PID has gone
+    if [ "${1:-}" = "watch" ] && [ $# -eq 3 ]; then
+        while kill -0 "$2" 2>/dev/null && [ -d "$3" ]; do sleep 2; done
+        [ -d "$3" ] || exit 0
+        CLUSTER_DIR=$3
+        stop_cluster
+        exit 0
+    fi
     [ "${1:-}" = "run" ] && [ "${2:-}" = "--" ] && [ $# -ge 3 ] || {
         echo "usage: $0 run -- COMMAND [ARGS...]" >&2
         exit 2

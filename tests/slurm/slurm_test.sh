@@ -25,8 +25,8 @@ rm -rf "$work"
 mkdir -p "$work"
 start_cluster || exit 1
 submit="$src/tools/slurm/submit.sh"
-# Minutes a submission may take before the test gives up on it
-limit=300
+# Seconds a submission may take before the test gives up on it (3 of them within ctest's 900)
+limit=240
 failures=0
 fail() {
     echo "FAIL: $*"
