@@ -45,7 +45,6 @@ free_port() {
 }
 
 CLUSTER_DIR=""
-cluster_pids=()
 
 # The processes descended from `pid`, deepest first
 descendants() {
@@ -68,7 +67,7 @@ stop_cluster() {
     fi
     # slurmd first (it ends the job steps it runs), then the controller, then munge
     for name in slurmd slurmctld munged; do
-        [ -n "$CLUSTER_DIR" ] && [ -f "$CLUSTER_DIR/$name.pid" ] || continue
+        if [ -z "$CLUSTER_DIR" ] || [ ! -f "$CLUSTER_DIR/$name.pid" ]; then continue; fi
         pid=$(cat "$CLUSTER_DIR/$name.pid" 2>/dev/null || true)
         [ -n "$pid" ] || continue
         kill "$pid" 2>/dev/null || continue
@@ -190,10 +189,10 @@ main() {
         stop_cluster
         exit 0
     fi
-    [ "${1:-}" = "run" ] && [ "${2:-}" = "--" ] && [ $# -ge 3 ] || {
+    if [ "${1:-}" != "run" ] || [ "${2:-}" != "--" ] || [ $# -lt 3 ]; then
         echo "usage: $0 run -- COMMAND [ARGS...]" >&2
         exit 2
-    }
+    fi
     shift 2
     require_cluster_tools
     trap stop_cluster EXIT

@@ -15,7 +15,7 @@ set -euo pipefail
 }
 scadray=$1 src=$2 work=$3
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-# shellcheck source=cluster.sh
+# shellcheck source=tests/slurm/cluster.sh
 source "$here/cluster.sh"
 require_cluster_tools
 
@@ -41,7 +41,8 @@ start=$(date +%s%N)
 if timeout "$limit" "$submit" render --wait -n 4 --scadray "$scadray" -o "$work/tiled.png" "$scene" "${size[@]}"; then
     echo "tiled render: $((($(date +%s%N) - start) / 1000000)) ms through Slurm"
     cmp "$work/single.png" "$work/tiled.png" || fail "the merged picture differs from the single render's"
-    [ "$(ls "$work/tiled.png.tiles"/tile_*.exr | wc -l)" -eq 4 ] || fail "not 4 tiles in $work/tiled.png.tiles"
+    tiles=("$work/tiled.png.tiles"/tile_*.exr)
+    [ ${#tiles[@]} -eq 4 ] || fail "not 4 tiles in $work/tiled.png.tiles"
 else
     fail "the tiled render did not finish (logs: $work/tiled.png.tiles/logs)"
     cat "$work/tiled.png.tiles/logs"/* 2>/dev/null | tail -n 20
