@@ -21,7 +21,7 @@ fi
 
 # One line per skipped test: NAME<TAB>MESSAGE, the message's lines joined by " / ". A gtest's
 # message is what follows its "file:line: Skipped" line; a script's, its lines that say "skip";
-# otherwise its last three lines, or ctest's reason where it printed nothing.
+# otherwise its last three lines; ctest's reason where none of these says anything.
 skipped=$(awk '
     function unescape(s) {
         gsub(/&lt;/, "<", s); gsub(/&gt;/, ">", s); gsub(/&quot;/, "\"", s)
@@ -48,7 +48,7 @@ skipped=$(awk '
                 for (i = first; i <= nout; ++i) if (out[i] != "") msg = msg (msg == "" ? "" : " / ") out[i]
             }
         }
-        if (msg == "") msg = "(no output; ctest: " reason ")"
+        if (msg == "") msg = "(no message; ctest: " reason ")"
         gsub(/\t/, " ", msg)
         print name "\t" msg
     }
