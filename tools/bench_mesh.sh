@@ -17,7 +17,7 @@ run() {
 }
 echo "1.31 M distinct triangles:"
 run "$tmp/icosphere.stl" -o "$tmp/icosphere.png" -W 640 -H 480
-samples=${SCADRAY_SHARED_DIR:-../shared}/gltf/MetalRoughSpheresNoTextures.glb
+samples=tests/data/gltf/khronos/MetalRoughSpheresNoTextures.glb
 if [ -f "$samples" ]; then
     echo "1.04 M instanced triangles (MetalRoughSpheresNoTextures.glb):"
     run "$samples" -o "$tmp/spheres.png" -W 640 -H 480

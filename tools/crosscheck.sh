@@ -9,10 +9,11 @@ build=${1:-build}
 shift || true
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-shared=${SCADRAY_SHARED_DIR:-../shared}
+samples=tests/data/gltf/khronos
 shopt -s nullglob
 for scene in scenes/*.scad scenes/crosscheck/*.scad scenes/gltf/*.gltf \
-             "$shared"/gltf/*.gltf "$shared"/gltf/*.glb "$shared"/gltf/*/*.gltf; do
+             "$samples"/*.gltf "$samples"/*.glb "$samples"/*/*.gltf \
+             tests/data/gltf/*.gltf tests/data/gltf/*.glb tests/data/gltf/assets/*.glb; do
     [ "$(basename "$scene")" = scadray.scad ] && continue
     name=$(basename "$scene"); name=${name%.*}
     "$build/tools/scadray" check "$scene" -o "$out/$name" -q --csv "$out/all.csv" "$@" || true
@@ -21,5 +22,5 @@ echo "| scene | verdict | RMSE | max error | masked | tiles failed / tested | PO
 echo "|---|---|---|---|---|---|---|---|"
 tail -n +2 "$out/all.csv" | while IFS=, read -r scene verdict rmse maxe masked tested failed det pw pt sw sr; do
     printf '| `%s` | %s | %s | %s | %s%% | %s / %s | %.2f s (%.2f s) | %.2f s |\n' \
-        "$(echo "$scene" | sed -e "s|^scenes/||" -e "s|^$shared/|shared/|")" "$verdict" "$rmse" "$maxe" "$masked" "$failed" "$tested" "$pw" "$pt" "$sw"
+        "$(echo "$scene" | sed -e "s|^scenes/||" -e "s|^tests/data/gltf/khronos/|khronos/|" -e "s|^tests/data/|data/|")" "$verdict" "$rmse" "$maxe" "$masked" "$failed" "$tested" "$pw" "$pt" "$sw"
 done

@@ -25,7 +25,6 @@ done
 
 ./tools/sanitize.sh --build "${targets[@]/%/_fuzz}"
 
-shared=${SCADRAY_SHARED_DIR:-$root/../shared}
 work=$root/build-asan/fuzz
 mkdir -p "$work"
 
@@ -51,9 +50,9 @@ run_one() {  # run_one TARGET
               # OpenSCAD's examples are GPL: read in place when installed, never copied into the repo
               seed scad '*.scad' scenes tests/importers tests/integration tests/bench /usr/share/openscad/examples ;;
         gltf) max_len=65536; dict=(-dict=tests/fuzz/gltf.dict)
-              seed gltf '*.gltf' scenes "$shared/gltf" ;;
+              seed gltf '*.gltf' scenes tests/data/gltf ;;
         glb)  max_len=131072; dict=(-dict=tests/fuzz/gltf.dict)
-              seed glb '*.glb' scenes "$shared/gltf" ;;
+              seed glb '*.glb' scenes tests/data/gltf ;;
         stl)  max_len=65536; seed stl '*.stl' scenes ;;
         off)  max_len=16384; seed off '*.off' scenes ;;
         image) max_len=16384 ;;
@@ -90,7 +89,7 @@ run_one() {  # run_one TARGET
 
 # Two at a time (2 cores); xargs fails when any target does
 export -f seed run_one
-export root work seconds shared
+export root work seconds
 if ! printf '%s\n' "${targets[@]}" | xargs -P 2 -I{} bash -c 'run_one "$1"' _ {}; then
     echo "fuzz: a target failed (see above)" >&2
     exit 1

@@ -13,8 +13,6 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./tools/setup.sh
-shared=()
-if [[ -n "${SCADRAY_SHARED_DIR:-}" ]]; then shared=(-DSCADRAY_SHARED_DIR="$SCADRAY_SHARED_DIR"); fi
 launcher=()
 if command -v ccache >/dev/null; then
     launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
@@ -22,7 +20,7 @@ fi
 # Debug keeps assertions; -O1 keeps sanitized code quick
 CC=clang CXX=clang++ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug \
     -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" -DSCADRAY_SANITIZE=ON -DSCADRAY_FUZZ=ON \
-    "${launcher[@]}" "${shared[@]}" >/dev/null
+    "${launcher[@]}" >/dev/null
 
 if [[ "${1:-}" == --build ]]; then
     shift

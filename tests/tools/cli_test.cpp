@@ -327,11 +327,11 @@ TEST_F(Cli, CheckWithoutPovRayIsAClearError) {
 TEST_F(Cli, MeshFilesRenderOnTheirOwn) {
     // glTF, STL and OFF files are scenes by themselves: automatic camera and lights where the
     // file has none, the file's own camera and lights where it has them
-    std::vector<std::string> files = {scene("gltf/lights_ortho.gltf"),
-                                      scene("crosscheck/assets/torus.stl"),
-                                      scene("crosscheck/assets/frustum.off")};
-    std::string duck = std::string(SCADRAY_SHARED_DIR) + "/gltf/Duck.glb";
-    if (fs::exists(duck)) files.push_back(duck);
+    // (textured_camera.glb: its own camera, an embedded PNG texture, no lights)
+    std::vector<std::string> files = {
+        scene("gltf/lights_ortho.gltf"), scene("crosscheck/assets/torus.stl"),
+        scene("crosscheck/assets/frustum.off"),
+        std::string(SCADRAY_SOURCE_DIR) + "/tests/data/gltf/textured_camera.glb"};
     for (const auto &file : files) {
         SCOPED_TRACE(file);
         std::string out = (dir / (fs::path(file).stem().string() + ".png")).string();

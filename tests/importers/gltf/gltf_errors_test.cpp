@@ -342,11 +342,11 @@ TEST(GltfFuzz, TruncatedGlbAtEveryLength) {
         DiagnosticSink sink;
         EXPECT_THROW(importGltf(path, sink), ParseError) << n;
     }
-    // A larger model with an image, cut at a few hundred lengths
-    REQUIRE_GLTF_SAMPLE("Duck.glb");
-    std::vector<unsigned char> duck = readBytes(sample("Duck.glb"));
-    for (size_t n = 0; n < duck.size(); n += 397) {
-        writeBytes(path, duck.data(), n);
+    // A larger model with an embedded PNG, cut at a few hundred lengths
+    std::vector<unsigned char> textured = readBytes(testModel("textured_camera.glb"));
+    ASSERT_GT(textured.size(), 60000u);
+    for (size_t n = 0; n < textured.size(); n += 197) {
+        writeBytes(path, textured.data(), n);
         DiagnosticSink sink;
         EXPECT_THROW(importGltf(path, sink), ParseError) << n;
     }
@@ -368,12 +368,12 @@ int fuzzRounds(int fallback) {
     return env ? std::max(1, std::atoi(env)) : fallback;
 }
 
-/// Imports corrupted copies of a sample: half the edits change a digit (in the JSON: valid
+/// Imports corrupted copies of a model: half the edits change a digit (in the JSON: valid
 /// JSON with wrong counts, offsets, strides and indices), the others any byte.
-void fuzzSample(const std::string &name, int rounds, unsigned seed) {
-    SCOPED_TRACE(name);
+void fuzzSample(const std::string &file, int rounds, unsigned seed) {
+    SCOPED_TRACE(file);
     TempDir tmp;
-    std::vector<unsigned char> original = readBytes(sample(name));
+    std::vector<unsigned char> original = readBytes(file);
     std::vector<size_t> digits;
     for (size_t i = 0; i < original.size(); ++i)
         if (std::isdigit(original[i])) digits.push_back(i);
@@ -398,10 +398,10 @@ TEST(GltfFuzz, CorruptedBytes) {
     for (const char *name : {"BoxInterleaved.glb", "SimpleSparseAccessor.gltf",
                              "MeshPrimitiveModes.gltf", "Cameras.gltf", "OrientationTest.glb"}) {
         REQUIRE_GLTF_SAMPLE(name);
-        fuzzSample(name, fuzzRounds(300), 12345);
+        fuzzSample(sample(name), fuzzRounds(300), 12345);
     }
-    REQUIRE_GLTF_SAMPLE("Duck.glb");  // with an embedded PNG (decoded on every round)
-    fuzzSample("Duck.glb", fuzzRounds(300) / 5, 777);
+    // With an embedded PNG (decoded on every round)
+    fuzzSample(testModel("textured_camera.glb"), fuzzRounds(300) / 5, 777);
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Helpers for the glTF importer tests: the shared sample models, temp files and the IR tree.
+// Helpers for the glTF importer tests: the Khronos sample models, temp files and the IR tree.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -17,17 +17,26 @@
 
 namespace rt::gltf::test {
 
-/// The glTF sample corpus (never copied into the repository).
-inline std::string samplesDir() { return std::string(SCADRAY_SHARED_DIR) + "/gltf"; }
+/// The Khronos glTF sample models, kept in the repository with their licences
+/// (tests/data/gltf/khronos/README.md).
+inline std::string samplesDir() {
+    return std::string(SCADRAY_SOURCE_DIR) + "/tests/data/gltf/khronos";
+}
 
 inline std::string sample(const std::string &name) { return samplesDir() + "/" + name; }
 
-/// Skips the calling test when the sample corpus is not there.
-#define REQUIRE_GLTF_SAMPLE(name)                                                             \
-    do {                                                                                      \
-        if (!std::filesystem::exists(::rt::gltf::test::sample(name)))                         \
-            GTEST_SKIP() << "glTF sample " << ::rt::gltf::test::sample(name)                  \
-                         << " not found (the corpus lives in shared/gltf, outside the repo)"; \
+/// A model made for scadray's tests by a script beside it in tests/data/gltf/.
+inline std::string testModel(const std::string &name) {
+    return std::string(SCADRAY_SOURCE_DIR) + "/tests/data/gltf/" + name;
+}
+
+/// Fails the calling test when a sample model is missing: they are part of the checkout, so a
+/// missing one is a broken tree, never a reason to skip.
+#define REQUIRE_GLTF_SAMPLE(name)                                                           \
+    do {                                                                                    \
+        ASSERT_TRUE(std::filesystem::exists(::rt::gltf::test::sample(name)))                \
+            << "glTF sample " << ::rt::gltf::test::sample(name)                             \
+            << " is missing from the checkout (tests/data/gltf/khronos)";                   \
     } while (0)
 
 inline std::vector<unsigned char> readBytes(const std::string &path) {

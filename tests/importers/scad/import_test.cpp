@@ -282,20 +282,11 @@ TEST(Import, OpenMeshesWarnAndBackgroundImportsAreNotRead) {
 }
 
 TEST(Import, GltfFilesGoThroughTheGltfImporter) {
-    std::string box = std::string(SCADRAY_SHARED_DIR) + "/gltf/Box.gltf";
-    if (!fs::exists(box)) GTEST_SKIP() << box << " is missing";
+    std::string box = std::string(SCADRAY_SOURCE_DIR) + "/tests/data/gltf/khronos/Box.gltf";
+    ASSERT_TRUE(fs::exists(box)) << box << " is missing from the checkout";
     std::string src = "import(\"" + box + "\");\ncolor(\"red\") import(\"" + box +
                       "\");\nimport(\"" + box + "\");\n";
-    Imported r;
-    try {
-        r = importText(src);
-    } catch (const LocatedError &) {
-        throw;
-    } catch (const std::exception &e) {
-        if (std::string(e.what()).find("not implemented") != std::string::npos)
-            GTEST_SKIP() << "glTF import is not implemented yet: " << e.what();
-        throw;
-    }
+    Imported r = importText(src);
     ASSERT_EQ(r.scene.root->children.size(), 3u);
     size_t meshesAfterOne = r.scene.meshes.size();
     EXPECT_GE(meshesAfterOne, 1u);
