@@ -23,6 +23,7 @@ int main(int argc, char **argv) {
     cli::addCompareCommand(app, action);
     cli::addCheckCommand(app, action);
     cli::addConvergeCommand(app, action);
+    cli::addReportCommand(app, action);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError &e) {

@@ -15,6 +15,8 @@ packages=(
     openscad-mcad
     clang libclang-rt-14-dev
     libembree-dev
+    libjs-chart.js  # Chart.js, embedded into `scadray report` pages for the converge plots
+    chromium  # the headless browser of the report's test (tests/integration/report_browser.sh)
 )
 
 missing=()
