@@ -139,6 +139,13 @@ const char *kScript = R"JS(
       rows.forEach(r => body.appendChild(r));
     });
   });
+  // A link may ask for an order: #sort=N (column N, from 0, ascending) or #sort=N-desc
+  const asked = /^#sort=(\d+)(-desc)?$/.exec(location.hash);
+  const headings = table.tHead.rows[0].cells;
+  if (asked && +asked[1] < headings.length) {
+    headings[+asked[1]].click();
+    if (asked[2]) headings[+asked[1]].click();
+  }
 
   // Plots of error against time, log-log
   let charts = 0;

@@ -71,6 +71,9 @@ echo "report.html: rows=$rows verdicts=$verdicts images=$images broken=$broken c
 [ "$images" = "$pictures" ] || fail "expected $pictures pictures, found $images"
 [ "$broken" = 0 ] || fail "$broken pictures did not load"
 [ "$charts" = 2 ] || fail "expected 2 converge plots, found $charts"
+# The table sorts in the browser: by scene name (column 1), failures are no longer first
+selfcheck "report.html#sort=1"
+[ "$verdicts" = "pass,pass,different,error" ] || fail "sorting by name gave $verdicts"
 browse --hide-scrollbars --run-all-compositor-stages-before-draw --window-size=1280,1600 --screenshot="$out/report.png" \
     "file://$out/report.html" >/dev/null || fail "no screenshot"
 [ -s "$out/report.png" ] || fail "empty screenshot"
@@ -84,4 +87,4 @@ selfcheck linked.html
 rm "$out/suite/mirrors/mirrors_diff.png"
 selfcheck linked.html
 [ "$broken" = 1 ] || fail "a deleted picture was not counted broken ($broken)"
-echo "PASS: 4 rows failures first, $pictures pictures and 2 plots in Chromium; a missing picture is caught"
+echo "PASS: 4 rows failures first, sortable, $pictures pictures and 2 plots in Chromium; a missing picture is caught"
