@@ -63,12 +63,14 @@ std::vector<std::string> gatherScenes(const std::vector<std::string> &inputs) {
         if (fs::is_directory(p, ec)) {
             std::vector<std::string> found;
             for (const auto &e : fs::directory_iterator(p))
-                if (e.is_regular_file() && isSceneFile(e.path())) found.push_back(e.path().string());
+                if (e.is_regular_file() && isSceneFile(e.path()))
+                    found.push_back(e.path().string());
             if (found.empty())
                 std::cerr << "scadray: warning: " << in << ": no scene files in this folder\n";
             std::sort(found.begin(), found.end());
             scenes.insert(scenes.end(), found.begin(), found.end());
-        } else if (std::string ext = lower(p.extension().string()); ext == ".txt" || ext == ".list") {
+        } else if (std::string ext = lower(p.extension().string());
+                   ext == ".txt" || ext == ".list") {
             std::ifstream list(p);
             if (!list) throw std::invalid_argument(in + ": cannot read this list of scenes");
             std::string line;
@@ -162,14 +164,28 @@ ConvergeCurve runConverge(const ReportArgs &ra, const std::string &scene, const 
     std::error_code ec;
     fs::path self = fs::read_symlink("/proc/self/exe", ec);
     if (ec) throw std::runtime_error("converge: cannot find the scadray binary (/proc/self/exe)");
-    std::vector<std::string> args = {self.string(), "converge", scene, "-o", dir, "-q",
-                                     "-W", std::to_string(a.width), "-H", std::to_string(a.height),
-                                     "--max-samples", std::to_string(ra.convergeSamples),
-                                     "-t", std::to_string(a.threads),
-                                     "--supersample", std::to_string(a.supersample),
-                                     "--timeout", std::to_string(a.timeout),
-                                     "--max-steps", std::to_string(sa.maxSteps),
-                                     "--max-elements", std::to_string(sa.maxElements)};
+    std::vector<std::string> args = {self.string(),
+                                     "converge",
+                                     scene,
+                                     "-o",
+                                     dir,
+                                     "-q",
+                                     "-W",
+                                     std::to_string(a.width),
+                                     "-H",
+                                     std::to_string(a.height),
+                                     "--max-samples",
+                                     std::to_string(ra.convergeSamples),
+                                     "-t",
+                                     std::to_string(a.threads),
+                                     "--supersample",
+                                     std::to_string(a.supersample),
+                                     "--timeout",
+                                     std::to_string(a.timeout),
+                                     "--max-steps",
+                                     std::to_string(sa.maxSteps),
+                                     "--max-elements",
+                                     std::to_string(sa.maxElements)};
     if (pov::povrayAvailable()) args.push_back("--povray");
     for (const std::string &d : sa.defines) args.insert(args.end(), {"-D", d});
     for (const std::string &l : sa.libraries) args.insert(args.end(), {"-L", l});
@@ -186,8 +202,8 @@ ConvergeCurve runConverge(const ReportArgs &ra, const std::string &scene, const 
     if (pr.timedOut)
         throw std::runtime_error("converge: ran past " + std::to_string(po.timeoutSeconds) + " s");
     if (pr.exitCode != 0)
-        throw std::runtime_error("converge failed (exit " + std::to_string(pr.exitCode) +
-                                 "):\n" + lastLines(pr.log, 8));
+        throw std::runtime_error("converge failed (exit " + std::to_string(pr.exitCode) + "):\n" +
+                                 lastLines(pr.log, 8));
     ConvergeCurve c = readConvergeCsv((fs::path(dir) / (stem + "_converge.csv")).string());
     std::ifstream svg(fs::path(dir) / (stem + "_converge.svg"), std::ios::binary);
     c.svg.assign(std::istreambuf_iterator<char>(svg), std::istreambuf_iterator<char>());
@@ -236,17 +252,18 @@ int runReport(const ReportArgs &ra) {
     if (scenes.empty() && checkFiles.empty())
         throw std::invalid_argument("report: no scenes and no check figures (*_check.json) found");
     if (!scenes.empty() && !pov::povrayAvailable())
-        throw std::invalid_argument("POV-Ray (povray) is not installed; tools/setup.sh installs it");
+        throw std::invalid_argument(
+            "POV-Ray (povray) is not installed; tools/setup.sh installs it");
     if (!scenes.empty() && ra.openscad && !openscadAvailable())
-        throw std::invalid_argument("OpenSCAD (openscad) is not installed; tools/setup.sh installs it");
+        throw std::invalid_argument(
+            "OpenSCAD (openscad) is not installed; tools/setup.sh installs it");
     // Fail on a bad -D before any work
     (void)ra.check.scene.loadOptions(true);
 
     fs::path out(ra.output);
     fs::path pageDir = fs::absolute(out).parent_path();
-    fs::path filesDir = ra.filesDir.empty()
-                            ? out.parent_path() / (out.stem().string() + "_files")
-                            : fs::path(ra.filesDir);
+    fs::path filesDir = ra.filesDir.empty() ? out.parent_path() / (out.stem().string() + "_files")
+                                            : fs::path(ra.filesDir);
 
     std::vector<ReportScene> rows;
     std::map<std::string, size_t> rowOf;

@@ -33,9 +33,15 @@ std::string jsonString(const std::string &text) {
     std::string out = "\"";
     for (unsigned char c : text) {
         switch (c) {
-            case '"': out += "\\\""; break;
-            case '\\': out += "\\\\"; break;
-            case '\n': out += "\\n"; break;
+            case '"':
+                out += "\\\"";
+                break;
+            case '\\':
+                out += "\\\\";
+                break;
+            case '\n':
+                out += "\\n";
+                break;
             default:
                 if (c < 0x20 || c == '<' || c == '>' || c == '&') {
                     char buf[8];
@@ -224,8 +230,7 @@ std::string curveJson(const ReportScene &s, size_t index, const std::string &tit
             if (!(c.seconds[i] > 0) || !(y[i] > 0) || !std::isfinite(y[i])) continue;
             if (out.size() > 1) out += ",";
             out += "{\"x\":" + jsonNumber(c.seconds[i]) + ",\"y\":" + jsonNumber(y[i]) +
-                   (i < c.samples.size() ? ",\"spp\":" + std::to_string(c.samples[i]) : "") +
-                   "}";
+                   (i < c.samples.size() ? ",\"spp\":" + std::to_string(c.samples[i]) : "") + "}";
         }
         return out + "]";
     };
@@ -267,14 +272,16 @@ std::string checkSection(const CheckResult &r, const PictureSources &pics) {
     if (!r.error.empty()) return out + "<pre class=\"err\">" + htmlEscape(r.error) + "</pre>\n";
     std::string ss = std::to_string(r.supersample);
     out += "<div class=\"pics\">" +
-           figure(pics[0], openscad ? "OpenSCAD's mesh (normals)"
-                                    : "POV-Ray (" + ss + "x" + ss + " supersampled)",
+           figure(pics[0],
+                  openscad ? "OpenSCAD's mesh (normals)"
+                           : "POV-Ray (" + ss + "x" + ss + " supersampled)",
                   r.width) +
            figure(pics[1], openscad ? "scadray (normals)" : "scadray", r.width) +
-           figure(pics[2], openscad ? "difference: red depth, yellow normal, magenta coverage, "
-                                      "blue masked"
-                                    : "difference: red-yellow error, blue masked, magenta "
-                                      "failed tiles",
+           figure(pics[2],
+                  openscad ? "difference: red depth, yellow normal, magenta coverage, "
+                             "blue masked"
+                           : "difference: red-yellow error, blue masked, magenta "
+                             "failed tiles",
                   r.width) +
            "</div>\n";
     out += "<pre>" + htmlEscape(r.text) + "</pre>\n";
@@ -363,8 +370,7 @@ std::string reportHtml(const ReportPage &page) {
     h += "</head>\n<body>\n";
     h += "<h1>" + htmlEscape(page.title) + "</h1>\n";
     h += "<div class=\"meta\">" + htmlEscape(page.generated) +
-         (page.settings.empty() ? "" : " &middot; " + htmlEscape(page.settings)) +
-         "</div>\n";
+         (page.settings.empty() ? "" : " &middot; " + htmlEscape(page.settings)) + "</div>\n";
 
     // Summary
     int failed = counts[0] + counts[1];
@@ -394,7 +400,8 @@ std::string reportHtml(const ReportPage &page) {
     h += "</div>\n";
 
     // Table
-    h += "<div class=\"scroll\"><table id=\"scenes\">\n<thead><tr><th>verdict</th><th>scene</th><th>RMSE</th>"
+    h += "<div class=\"scroll\"><table "
+         "id=\"scenes\">\n<thead><tr><th>verdict</th><th>scene</th><th>RMSE</th>"
          "<th>max error</th><th>masked</th><th>tested</th><th>failed tiles</th>"
          "<th>POV-Ray s</th><th>scadray s</th><th>speed ratio</th>";
     if (anyOpenScad) h += "<th>OpenSCAD</th><th>differing px</th><th>OpenSCAD s</th>";
@@ -467,7 +474,8 @@ std::string reportHtml(const ReportPage &page) {
             h += "<p>OpenSCAD referee: " + htmlEscape(s.openscadNote) + "</p>\n";
         if (s.converge) {
             h += "<h3>Error against time (converge)</h3>\n";
-            std::string title = fs::path(s.scene).filename().string() + ": error against render time";
+            std::string title =
+                fs::path(s.scene).filename().string() + ": error against render time";
             if (!page.chartJs.empty()) {
                 h += "<div class=\"plot\"><canvas id=\"plot-" + std::to_string(i) +
                      "\" width=\"720\" height=\"440\"></canvas></div>\n";
@@ -493,12 +501,23 @@ std::string htmlEscape(const std::string &text) {
     out.reserve(text.size());
     for (char c : text) {
         switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            case '\'': out += "&#39;"; break;
-            default: out += c;
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            case '\'':
+                out += "&#39;";
+                break;
+            default:
+                out += c;
         }
     }
     return out;

@@ -55,8 +55,8 @@ void sortFailuresFirst(std::vector<ReportScene> &scenes);
 struct ReportPage {
     std::string title = "scadray report";
     std::string settings, generated;  ///< shown in the header
-    double wallSeconds = 0;               ///< the whole report's run
-    std::vector<ReportScene> scenes;      ///< in the order the table shows them
+    double wallSeconds = 0;           ///< the whole report's run
+    std::vector<ReportScene> scenes;  ///< in the order the table shows them
     /// Chart.js's UMD build, embedded once; empty: converge plots are converge's SVGs
     std::string chartJs;
 };

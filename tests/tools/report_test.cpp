@@ -222,13 +222,15 @@ TEST_F(ReportDir, FromEarlierChecks) {
     std::ofstream(b / "broken_check.json") << "{";
 
     fs::path html = dir / "r.html";
-    std::string cmd = std::string(SCADRAY_BINARY) + " report -q --from " + (dir / "suite").string() +
-                      " -o " + html.string() + " >" + (dir / "out").string() + " 2>&1";
+    std::string cmd = std::string(SCADRAY_BINARY) + " report -q --from " +
+                      (dir / "suite").string() + " -o " + html.string() + " >" +
+                      (dir / "out").string() + " 2>&1";
     int status = std::system(cmd.c_str());
     ASSERT_TRUE(WIFEXITED(status));
     EXPECT_EQ(WEXITSTATUS(status), 1) << slurp(dir / "out");
     std::string page = slurp(html);
-    size_t err = page.find("data-verdict=\"error\""), diff = page.find("data-verdict=\"different\""),
+    size_t err = page.find("data-verdict=\"error\""),
+           diff = page.find("data-verdict=\"different\""),
            pass = page.find("data-verdict=\"pass\"");
     ASSERT_NE(err, std::string::npos) << "the unreadable figures are a row";
     ASSERT_NE(diff, std::string::npos);
