@@ -386,7 +386,7 @@ int runReport(const ReportArgs &ra) {
 
     int counts[3] = {0, 0, 0};
     for (const ReportScene &s : page.scenes) ++counts[s.rank()];
-    std::printf("report: %zu scenes: %d passed, %d different, %d errors; %s (%.1f MB) in %.1f s\n",
+    std::printf("report: %zu scenes: %d passed, %d different, %d errors; %s (%.1f MB) in %.2f s\n",
                 page.scenes.size(), counts[2], counts[1], counts[0], ra.output.c_str(),
                 html.size() / 1e6, page.wallSeconds);
     return counts[0] + counts[1] == 0 ? kExitOk : kExitInputError;
