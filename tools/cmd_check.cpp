@@ -20,6 +20,7 @@
 #include "core/render/renderer.h"
 #include "exporters/povray/pov_runner.h"
 #include "exporters/povray/pov_writer.h"
+#include "tools/check.h"
 #include "tools/cli_common.h"
 #include "tools/commands.h"
 #include "tools/openscad_runner.h"
@@ -30,52 +31,47 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CheckArgs {
-    SceneArgs scene;
-    std::string outDir, csv;
-    int width = 320, height = 240;
-    int supersample = 3, batches = 8, samples = 4, threads = 0, timeout = 600;
-    uint64_t seed = 1;
-    bool quiet = false, openscad = false;
-    /// Mask texture detail as edges too (the rule before textures had their own edge picture)
-    bool maskTextureDetail = false;
-    CompareOptions compare;
-    GeometryTolerances geometry;
-};
-
 /// Output folder (created) and the path of one output file in it.
 struct CheckFiles {
     std::string stem;
     std::filesystem::path dir;
     explicit CheckFiles(const CheckArgs &a) {
         stem = fs::path(a.scene.input).stem().string();
-        dir = a.outDir.empty() ? fs::path(stem + "_check") : fs::path(a.outDir);
+        dir = checkDir(a);
         fs::create_directories(dir);
     }
     std::string operator()(const std::string &suffix) const { return (dir / (stem + suffix)).string(); }
 };
 
-/// Writes the report beside the pictures, appends the figures to --csv (the header first when
-/// the file is new), prints the report (only on failure when quiet) and maps the verdict to the
-/// exit code of `compare`.
-int finishCheck(const CheckArgs &a, const std::string &reportPath, const std::string &report,
-                const char *csvHeader, const std::string &csvRow, bool pass) {
-    pov::writeTextFile(reportPath, report);
+/// A check's row for --csv, and the header of such rows.
+struct CsvRow {
+    const char *header = "";
+    std::string row;
+};
+
+/// Writes the report and the JSON figures beside the pictures, appends the figures to --csv
+/// (the header first when the file is new), prints the report (only on failure when quiet)
+/// and maps the verdict to the exit code of `compare`.
+int finishCheck(const CheckArgs &a, const CheckResult &r, const CsvRow &csv) {
+    CheckFiles file(a);
+    pov::writeTextFile(file(r.referee == "openscad" ? "_openscad_report.txt" : "_report.txt"),
+                       r.text);
+    pov::writeTextFile(checkJsonPath(r.dir, a.scene.input, a.openscad), checkResultJson(r));
     if (!a.csv.empty()) {
         bool fresh = !fs::exists(a.csv);
         std::ofstream out(a.csv, std::ios::app);
-        if (fresh) out << csvHeader << "\n";
-        out << csvRow;
+        if (fresh) out << csv.header << "\n";
+        out << csv.row;
         if (!out) throw std::runtime_error("cannot append to '" + a.csv + "'");
     }
-    if (!a.quiet || !pass) std::cout << report;
-    return pass ? kExitOk : kExitInputError;
+    if (!a.quiet || !r.pass) std::cout << r.text;
+    return r.pass ? kExitOk : kExitInputError;
 }
 
 /// `check --openscad`: OpenSCAD exports the scene's mesh; scadray traces that mesh and the scene
 /// itself (with OpenSCAD's facets) through the scene's one camera, and the two geometry
 /// buffers are compared per pixel.
-int runOpenScadCheck(const CheckArgs &a) {
+CheckResult checkGeometry(const CheckArgs &a, CsvRow &csv) {
     using clock = std::chrono::steady_clock;
     std::string ext = fs::path(a.scene.input).extension().string();
     for (auto &ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
@@ -134,15 +130,37 @@ int runOpenScadCheck(const CheckArgs &a) {
                   a.scene.input.c_str(), cr.pass ? "pass" : "different", cr.differing(),
                   cr.coverageDiffer, cr.depthDiffer, cr.normalDiffer, cr.silhouette, cr.tied,
                   run.wallSeconds, run.renderSeconds, ourSeconds);
-    return finishCheck(a, file("_openscad_report.txt"), report,
-                       "scene,verdict,differing,coverage,depth,normal,silhouette,tied,"
-                       "openscad_wall_s,openscad_render_s,scadray_s",
-                       buf, cr.pass);
+    csv = {"scene,verdict,differing,coverage,depth,normal,silhouette,tied,"
+           "openscad_wall_s,openscad_render_s,scadray_s",
+           buf};
+
+    CheckResult r;
+    r.scene = a.scene.input;
+    r.referee = "openscad";
+    r.pass = cr.pass;
+    r.width = a.width;
+    r.height = a.height;
+    r.differing = cr.differing();
+    r.coverageDiffer = cr.coverageDiffer;
+    r.depthDiffer = cr.depthDiffer;
+    r.normalDiffer = cr.normalDiffer;
+    r.silhouette = cr.silhouette;
+    r.tied = cr.tied;
+    r.maskedShare = double(cr.silhouette + cr.tied) / (double(a.width) * a.height);
+    r.openscadSeconds = run.wallSeconds;
+    r.openscadRenderSeconds = run.renderSeconds;
+    r.triangles = long(ms->stats().triangles);
+    r.scadraySeconds = ourSeconds;
+    r.dir = file.dir.string();
+    r.refereePicture = file.stem + "_openscad_normals.png";
+    r.scadrayPicture = file.stem + "_scadray_normals.png";
+    r.diffPicture = file.stem + "_geometry_diff.png";
+    r.text = report;
+    return r;
 }
 
-int runCheck(const CheckArgs &a) {
+CheckResult checkPovray(const CheckArgs &a, CsvRow &csv) {
     using clock = std::chrono::steady_clock;
-    if (a.openscad) return runOpenScadCheck(a);
     RenderOptions ro;
     ro.width = a.width;
     ro.height = a.height;
@@ -279,14 +297,112 @@ int runCheck(const CheckArgs &a) {
                   a.scene.input.c_str(), cr.pass ? "pass" : "different", cr.rmse, cr.maxError,
                   100.0 * cr.maskedPixels / (double(a.width) * a.height), cr.tilesTested, cr.tilesFailed,
                   cr.detectableMedian, pr.wallSeconds, pr.traceSeconds, ourWall, rr.seconds);
-    return finishCheck(a, file("_report.txt"), report,
-                       "scene,verdict,rmse,max_error,masked_percent,tiles_tested,tiles_failed,"
-                       "detectable_median,povray_wall_s,povray_trace_s,scadray_wall_s,"
-                       "scadray_render_s",
-                       buf, cr.pass);
+    csv = {"scene,verdict,rmse,max_error,masked_percent,tiles_tested,tiles_failed,"
+           "detectable_median,povray_wall_s,povray_trace_s,scadray_wall_s,scadray_render_s",
+           buf};
+
+    CheckResult r;
+    r.scene = a.scene.input;
+    r.pass = cr.pass;
+    r.width = a.width;
+    r.height = a.height;
+    r.rmse = cr.rmse;
+    r.psnr = cr.psnr;
+    r.maxError = cr.maxError;
+    r.maskedShare = cr.maskedPixels / (double(a.width) * a.height);
+    r.tilesTested = cr.tilesTested;
+    r.tilesSkipped = cr.tilesSkipped;
+    r.tilesFailed = cr.tilesFailed;
+    r.testedShare = cr.tilesTested / std::max(1.0, double(cr.tilesTested + cr.tilesSkipped));
+    r.detectableMedian = cr.detectableMedian;
+    r.deterministic = cr.deterministic;
+    r.povrayWarnings = pr.warnings;
+    r.povraySeconds = pr.wallSeconds;
+    r.povrayTraceSeconds = pr.traceSeconds;
+    r.edgeMaskSeconds = edgeSeconds;
+    r.supersample = a.supersample;
+    r.scadraySeconds = ourWall;
+    r.scadrayRenderSeconds = rr.seconds;
+    r.dir = dir.string();
+    r.refereePicture = stem + "_reference.png";
+    r.scadrayPicture = stem + "_scadray.png";
+    r.diffPicture = stem + "_diff.png";
+    r.text = report;
+    return r;
+}
+
+CheckResult runOneCheck(const CheckArgs &a, CsvRow &csv) {
+    return a.openscad ? checkGeometry(a, csv) : checkPovray(a, csv);
+}
+
+/// `check`: the JSON figures of an earlier run go first, so a check that fails leaves its
+/// error there instead (what `report --from` shows), never stale figures.
+int runCheck(const CheckArgs &a) {
+    std::string dir = checkDir(a);
+    std::string json = checkJsonPath(dir, a.scene.input, a.openscad);
+    std::error_code ec;
+    fs::remove(json, ec);
+    CsvRow csv;
+    CheckResult r;
+    try {
+        r = runOneCheck(a, csv);
+    } catch (const std::exception &e) {
+        CheckResult failed;
+        failed.scene = a.scene.input;
+        failed.referee = a.openscad ? "openscad" : "povray";
+        failed.error = errorMessage(e);
+        failed.width = a.width;
+        failed.height = a.height;
+        failed.dir = dir;
+        // Best effort: the error itself is what the user must see
+        try {
+            if (fs::is_directory(dir)) pov::writeTextFile(json, checkResultJson(failed));
+        } catch (const std::exception &) {
+        }
+        throw;
+    }
+    return finishCheck(a, r, csv);
 }
 
 }  // namespace
+
+std::string checkDir(const CheckArgs &a) {
+    return a.outDir.empty() ? fs::path(a.scene.input).stem().string() + "_check" : a.outDir;
+}
+
+CheckResult checkScene(const CheckArgs &a) {
+    CsvRow unused;
+    return runOneCheck(a, unused);
+}
+
+void addCheckOptions(CLI::App &cmd, CheckArgs &a) {
+    addNumber(cmd, "-W,--width", a.width, "Image width", 1, kMaxImageSide);
+    addNumber(cmd, "-H,--height", a.height, "Image height", 1, kMaxImageSide);
+    addNumber(cmd, "--supersample", a.supersample,
+              "POV-Ray reference: k x k samples per pixel (rendered k times larger)", 1,
+              kMaxSupersample);
+    addNumber(cmd, "--batches", a.batches, "scadray: independent seeded batches", 1, kMaxBatches);
+    addNumber(cmd, "-s,--samples", a.samples, "scadray: samples per pixel in each batch", 1,
+              kMaxSamplesPerPixel);
+    addNumber(cmd, "--seed", a.seed, "scadray: seed of the first batch", uint64_t{0},
+              std::numeric_limits<uint64_t>::max());
+    addNumber(cmd, "-t,--threads", a.threads, "Threads for both renderers (0 = all)", 0,
+              kMaxThreads);
+    addNumber(cmd, "--timeout", a.timeout, "Seconds POV-Ray or OpenSCAD may run", 1,
+              kMaxTimeoutSeconds);
+    addNumber(cmd, "--depth-tol", a.geometry.depthRel,
+              "--openscad: relative depth difference allowed", 0.0,
+              std::numeric_limits<double>::max());
+    addNumber(cmd, "--normal-tol", a.geometry.normalDegrees,
+              "--openscad: normal angle difference allowed, degrees", 0.0, 180.0);
+    addNumber(cmd, "--max-differing", a.geometry.maxDiffering,
+              "--openscad: differing pixels outside the masks that still pass", 0L,
+              std::numeric_limits<long>::max());
+    cmd.add_flag("--mask-texture-detail", a.maskTextureDetail,
+                 "Mask edges from the textured POV-Ray picture itself (by default a textured "
+                 "scene's edge mask comes from a second picture without textures)");
+    addCompareOptions(cmd, a.compare);
+}
 
 void addCheckCommand(CLI::App &app, std::function<int()> &action) {
     auto args = std::make_shared<CheckArgs>();
@@ -297,38 +413,12 @@ void addCheckCommand(CLI::App &app, std::function<int()> &action) {
         "different or failed, 2 bad usage)");
     args->scene.addTo(*cmd);
     cmd->add_option("-o,--output-dir", args->outDir, "Folder for all files (default <scene>_check)");
-    addNumber(*cmd, "-W,--width", args->width, "Image width", 1, kMaxImageSide);
-    addNumber(*cmd, "-H,--height", args->height, "Image height", 1, kMaxImageSide);
-    addNumber(*cmd, "--supersample", args->supersample,
-              "POV-Ray reference: k x k samples per pixel (rendered k times larger)", 1,
-              kMaxSupersample);
-    addNumber(*cmd, "--batches", args->batches, "scadray: independent seeded batches", 1,
-              kMaxBatches);
-    addNumber(*cmd, "-s,--samples", args->samples, "scadray: samples per pixel in each batch", 1,
-              kMaxSamplesPerPixel);
-    addNumber(*cmd, "--seed", args->seed, "scadray: seed of the first batch", uint64_t{0},
-              std::numeric_limits<uint64_t>::max());
-    addNumber(*cmd, "-t,--threads", args->threads, "Threads for both renderers (0 = all)", 0,
-              kMaxThreads);
-    addNumber(*cmd, "--timeout", args->timeout, "Seconds POV-Ray or OpenSCAD may run", 1,
-              kMaxTimeoutSeconds);
     cmd->add_flag("--openscad", args->openscad,
                   "Referee OpenSCAD: compare hit/miss, depth and normal per pixel with the mesh "
                   "`openscad` exports (implies --facets openscad)");
-    addNumber(*cmd, "--depth-tol", args->geometry.depthRel,
-              "--openscad: relative depth difference allowed", 0.0,
-              std::numeric_limits<double>::max());
-    addNumber(*cmd, "--normal-tol", args->geometry.normalDegrees,
-              "--openscad: normal angle difference allowed, degrees", 0.0, 180.0);
-    addNumber(*cmd, "--max-differing", args->geometry.maxDiffering,
-              "--openscad: differing pixels outside the masks that still pass", 0L,
-              std::numeric_limits<long>::max());
-    cmd->add_flag("--mask-texture-detail", args->maskTextureDetail,
-                  "Mask edges from the textured POV-Ray picture itself (by default a textured "
-                  "scene's edge mask comes from a second picture without textures)");
+    addCheckOptions(*cmd, *args);
     cmd->add_flag("-q,--quiet", args->quiet, "Print the report only when the check fails");
     cmd->add_option("--csv", args->csv, "Append a row of figures to this CSV file");
-    addCompareOptions(*cmd, args->compare);
     cmd->callback([args, &action]() { action = [args]() { return runCheck(*args); }; });
 }
 

@@ -21,6 +21,7 @@ void addCompareCommand(CLI::App &app, std::function<int()> &action);
 void addCheckCommand(CLI::App &app, std::function<int()> &action);
 void addConvergeCommand(CLI::App &app, std::function<int()> &action);
 void addMergeCommand(CLI::App &app, std::function<int()> &action);
+void addReportCommand(CLI::App &app, std::function<int()> &action);
 /// The comparison options shared by `compare` and `check`.
 void addCompareOptions(CLI::App &cmd, CompareOptions &o);
 

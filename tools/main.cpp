@@ -24,6 +24,7 @@ int main(int argc, char **argv) {
     cli::addCheckCommand(app, action);
     cli::addConvergeCommand(app, action);
     cli::addMergeCommand(app, action);
+    cli::addReportCommand(app, action);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError &e) {

@@ -15,8 +15,9 @@ packages=(
     openscad-mcad
     clang libclang-rt-14-dev
     libembree-dev
-    # A private Slurm cluster for the tests of tools/slurm/ (tests/slurm/cluster.sh)
-    slurm-wlm munge
+    libjs-chart.js  # Chart.js, embedded into `scadray report` pages for the converge plots
+    chromium  # the headless browser of the report's test (tests/integration/report_browser.sh)
+    slurm-wlm munge  # the private Slurm cluster of the tests of tools/slurm/ (tests/slurm/cluster.sh)
 )
 
 missing=()
