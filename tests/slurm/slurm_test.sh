@@ -89,6 +89,7 @@ else
         cat "$summary"
         [ "$(grep -c -E '^(PASS|DIFFERENT): ' "$summary")" -eq 2 ] || fail "the summary has not 2 verdicts"
         grep -q -E '^[0-9]+ of 2 scenes passed$' "$summary" || fail "the summary has no count"
+        [ -s "$work/check/report.html" ] || fail "no HTML report $work/check/report.html"
     fi
 fi
 
