@@ -32,6 +32,7 @@ struct RenderArgs {
     int aaMax = 64;
     double aaThreshold = RenderOptions().adaptiveThreshold, aaTolerance = RenderOptions().adaptiveTolerance;
     AnimationArgs animation;  ///< --frames and its options
+    bool sceneGiven = false;  ///< optional with --encode-only only
 };
 
 std::string formatCount(int64_t n) {
@@ -135,7 +136,7 @@ int renderOne(const RenderArgs &a, double time, const std::string &outputName) {
 
 int runRender(const RenderArgs &a) {
     // Only --encode-only does without a scene
-    if (a.scene.input.empty() && !a.animation.encodeOnly)
+    if (!a.sceneGiven && !a.animation.encodeOnly)
         throw std::invalid_argument("render: a scene file is required");
     if (!a.animation.active()) return renderOne(a, 0, a.output);
     std::string output = a.output;
@@ -196,6 +197,7 @@ void addRenderCommand(CLI::App &app, std::function<int()> &action) {
     args->animation.addTo(*cmd);
     cmd->callback([args, cmd, &action]() {
         args->samplesGiven = cmd->count("--samples") > 0;
+        args->sceneGiven = cmd->count("scene") > 0;
         args->aaToleranceGiven = cmd->count("--aa-tolerance") > 0;
         args->aaGiven = cmd->count("--aa-max") + cmd->count("--aa-threshold") + args->aaToleranceGiven > 0;
         action = [args]() { return runRender(*args); };
