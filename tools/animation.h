@@ -19,10 +19,10 @@ constexpr int kMaxFrames = 1'000'000;
 
 /// The animation options of `render`.
 struct AnimationArgs {
-    int frames = 0;  ///< --frames N; 0 = one still picture
+    int frames = 0;     ///< --frames N; 0 = one still picture
     double fps = kDefaultFps;
-    int frame = -1;      ///< --frame I: only this frame (a job array's share); -1 = all
-    std::string video;   ///< --video; empty = <output stem>.mp4
+    int frame = -1;     ///< --frame I: only this frame (a job array's share); -1 = all
+    std::string video;  ///< --video; empty = <output stem>.mp4
     bool encodeOnly = false;
 
     /// Registers --frames, --fps, --frame, --video and --encode-only; the options that only
