@@ -18,42 +18,6 @@
 namespace rt::gltf::test {
 namespace {
 
-/// A w x h 32-bit BMP (with alpha), pixel(x, y) = 0xRRGGBBAA, y = 0 the top row.
-std::vector<unsigned char> bmp32(int w, int h, const std::function<uint32_t(int, int)> &pixel) {
-    std::vector<unsigned char> b = {'B', 'M'};
-    auto u32 = [&](uint32_t v) {
-        for (int i = 0; i < 4; ++i) b.push_back(static_cast<unsigned char>(v >> (8 * i)));
-    };
-    auto u16 = [&](uint16_t v) {
-        b.push_back(static_cast<unsigned char>(v));
-        b.push_back(static_cast<unsigned char>(v >> 8));
-    };
-    uint32_t size = static_cast<uint32_t>(w * h * 4);
-    u32(14 + 40 + size);
-    u32(0);
-    u32(14 + 40);
-    u32(40);
-    u32(static_cast<uint32_t>(w));
-    u32(static_cast<uint32_t>(h));  // bottom row first
-    u16(1);
-    u16(32);
-    u32(0);
-    u32(size);
-    u32(2835);
-    u32(2835);
-    u32(0);
-    u32(0);
-    for (int y = h - 1; y >= 0; --y)
-        for (int x = 0; x < w; ++x) {
-            uint32_t p = pixel(x, y);
-            b.push_back(static_cast<unsigned char>(p >> 8));   // B
-            b.push_back(static_cast<unsigned char>(p >> 16));  // G
-            b.push_back(static_cast<unsigned char>(p >> 24));  // R
-            b.push_back(static_cast<unsigned char>(p));        // A
-        }
-    return b;
-}
-
 std::string bmpUri(const std::vector<unsigned char> &bmp) {
     return "data:image/bmp;base64," + base64Encode(bmp);
 }
