@@ -201,11 +201,8 @@ int runCheck(const CheckArgs &a) {
             // A texture whose alpha cuts or blends the surface shapes silhouettes and shadows:
             // it stays, so their edges are masked like any geometry's
             if (m.texel.pbr && m.texel.pbr->alphaMode != PbrMaterial::AlphaMode::Opaque) continue;
-            const ir::Texture &t = *scene.textures[size_t(m.baseColorTexture.texture)];
-            Rgb sum(0);
-            for (size_t p = 0; p + 3 < t.rgba.size(); p += 4)
-                sum += Rgb(t.rgba[p], t.rgba[p + 1], t.rgba[p + 2]);
-            if (!t.rgba.empty()) m.color *= sum / double(t.rgba.size() / 4);
+            auto mean = ir::textureMean(*scene.textures[size_t(m.baseColorTexture.texture)]);
+            m.color *= Rgb(mean[0], mean[1], mean[2]);
             m.baseColorTexture = {};
         }
         PovReference edges;

@@ -376,12 +376,8 @@ ir::Material MaterialMapper::map(int index, bool &hidden) {
 
 double MaterialMapper::textureMean(const ir::TextureRef &ref, int channel) const {
     if (!ref.valid()) return 1;
-    const ir::Texture &img = *scene_.textures[static_cast<size_t>(ref.texture)];
-    size_t texels = img.rgba.size() / 4;
-    if (texels == 0) return 1;
-    double sum = 0;
-    for (size_t t = 0; t < texels; ++t) sum += img.rgba[t * 4 + static_cast<size_t>(channel)];
-    return sum / static_cast<double>(texels);
+    return ir::textureMean(*scene_.textures[static_cast<size_t>(ref.texture)])
+        [static_cast<size_t>(channel)];
 }
 
 const MaterialMapper::DecodedImage *MaterialMapper::decodedImage(int textureIndex,
