@@ -36,7 +36,6 @@
 #include "core/image/image_limits.h"
 #include "core/materials/pbr_material.h"
 #include "importers/gltf/gltf_internal.h"
-#include "importers/gltf/gltf_tangents.h"
 
 namespace rt::gltf::detail {
 
@@ -163,8 +162,7 @@ MaterialMapper::MaterialMapper(const ImportContext &ctx, ir::Scene &scene)
 
 MaterialMapper::~MaterialMapper() = default;
 
-std::optional<int> MaterialMapper::irMaterial(int index, const ir::Mesh &mesh,
-                                              const std::string &primitivePath) {
+const MaterialMapper::Mapped &MaterialMapper::mapped(int index, const std::string &primitivePath) {
     if (index < -1 || index >= static_cast<int>(ctx_.model.materials.size()))
         ctx_.fail(primitivePath + ": material " + std::to_string(index) +
                   " does not exist (the file has " + std::to_string(ctx_.model.materials.size()) +
@@ -174,6 +172,19 @@ std::optional<int> MaterialMapper::irMaterial(int index, const ir::Mesh &mesh,
         slot.material = map(index, slot.hidden);
         slot.done = true;
     }
+    return slot;
+}
+
+int MaterialMapper::tangentTexCoord(int index, const std::string &primitivePath) {
+    const Mapped &slot = mapped(index, primitivePath);
+    if (slot.hidden || !slot.material.texel.pbr) return -1;
+    const ir::TextureRef &normal = slot.material.texel.pbr->normalTexture;
+    return normal.valid() ? normal.texCoord : -1;
+}
+
+std::optional<int> MaterialMapper::irMaterial(int index, const ir::Mesh &mesh,
+                                              const std::string &primitivePath) {
+    const Mapped &slot = mapped(index, primitivePath);
     if (slot.hidden) return std::nullopt;
     ir::Material mat = slot.material;
     std::string matPath = index < 0 ? std::string("the default material")
@@ -202,15 +213,7 @@ std::optional<int> MaterialMapper::irMaterial(int index, const ir::Mesh &mesh,
             mat.texel = {};
         else if (changed)
             mat.texel.pbr = std::make_shared<const PbrMaterial>(p);
-        if (mat.texel.pbr && p.normalTexture.valid() && mesh.tangents.empty()) {
-            // No TANGENT: generated into a copy of the mesh, which replaces it in the scene
-            for (ir::MeshPtr &m : scene_.meshes) {
-                if (m.get() != &mesh) continue;
-                auto withTangents = std::make_shared<ir::Mesh>(mesh);
-                if (generateTangents(*withTangents, p.normalTexture.texCoord)) m = withTangents;
-                break;
-            }
-        }
+        // Without TANGENT the mesh builder generated them (tangentTexCoord)
     }
     return scene_.addMaterial(mat);
 }
