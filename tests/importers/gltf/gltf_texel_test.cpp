@@ -230,6 +230,56 @@ TEST(GltfTexel, NormalMappedQuadShadesLikeTheFacetsItEncodes) {
     EXPECT_GT(std::abs(pixelAt(c, v, 0.875, 0.5).r - pixelAt(a, v, 0.875, 0.5).r), 0.02);
 }
 
+// (a') Mirrored texture coordinates: the two halves of a quad read the same normal-map texels
+// with u running opposite ways, so the relief is mirrored about the seam. The vertices on the
+// seam carry both handednesses: without MikkTSpace's vertex split their tangents average to
+// nothing and the halves shade wrongly near (and, interpolated, across) them.
+TEST(GltfTexel, MirroredUvSeamSplitsTangentsAndShadesLikeTheMirroredRelief) {
+    // One tilt everywhere in the texture: towards +u and a little +v' (up the image)
+    const int red = 200, green = 150;
+    double x = 2 * red / 255.0 - 1, y = 2 * green / 255.0 - 1;
+    int blue = static_cast<int>(std::lround((std::sqrt(1 - x * x - y * y) * 0.5 + 0.5) * 255));
+    Vec3 n = normalize(Vec3(x, y, 2 * blue / 255.0 - 1));
+    auto normalMap = bmp32(4, 4, [&](int, int) {
+        return uint32_t(red) << 24 | uint32_t(green) << 16 | uint32_t(blue) << 8 | 0xff;
+    });
+    // Six vertices: x = 0, 0.5, 1 at y = 0 and y = 1; u = x on the left, 1 - x on the right
+    Prim mirrored;
+    mirrored.pos = {0, 0, 0, 0.5f, 0, 0, 1, 0, 0, 0, 1, 0, 0.5f, 1, 0, 1, 1, 0};
+    mirrored.uv = {0, 1, 0.5f, 1, 0, 1, 0, 0, 0.5f, 0, 0, 0};
+    mirrored.idx = {0, 1, 4, 0, 4, 3, 1, 2, 5, 1, 5, 4};
+    std::string mapped = R"([{"pbrMetallicRoughness":{"baseColorFactor":[0.8,0.7,0.6,1],)"
+                         R"("metallicFactor":0,"roughnessFactor":1},"normalTexture":{"index":0}}])";
+    TempDir tmp;
+    auto flat = importText(tmp, gltfOf({mirrored}, mapped, {bmpUri(normalMap)}), "mirror.gltf");
+    ASSERT_EQ(flat->scene.meshes.size(), 1u);
+    EXPECT_EQ(flat->scene.meshes[0]->tangents.size(), 8u) << "the two seam vertices split";
+
+    // The relief as geometry: left half tilted by n, right half by n mirrored in x, meeting
+    // along x = 0.5
+    Prim ridge;
+    for (int side = 0; side < 2; ++side) {
+        Vec3 ns = side == 0 ? n : Vec3(-n.x, n.y, n.z);
+        double x0 = side * 0.5, x1 = x0 + 0.5;
+        auto z = [&](double px, double py) { return -(ns.x * (px - 0.5) + ns.y * py) / ns.z; };
+        for (auto [px, py] : {std::pair{x0, 0.0}, {x1, 0.0}, {x1, 1.0}, {x0, 1.0}})
+            for (double c : {px, py, z(px, py)}) ridge.pos.push_back(float(c));
+        uint32_t b = static_cast<uint32_t>(4 * side);
+        for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) ridge.idx.push_back(b + i);
+    }
+    auto relief = importText(tmp, gltfOf({ridge}, "[" + kGrey + "]", {}), "ridge.gltf");
+
+    View v;
+    v.lightDir = Vec3(0.5, -0.3, -1);
+    Image a = render(flat->scene, v), b = render(relief->scene, v);
+    for (double px : {0.1, 0.3, 0.45, 0.55, 0.7, 0.9})
+        for (double py : {0.2, 0.5, 0.8})
+            expectSameRgb(pixelAt(a, v, px, py), pixelAt(b, v, px, py), 2e-3,
+                          "at " + std::to_string(px) + "," + std::to_string(py));
+    EXPECT_GT(std::abs(pixelAt(a, v, 0.3, 0.5).r - pixelAt(a, v, 0.7, 0.5).r), 0.02)
+        << "the halves face different ways";
+}
+
 // (b) A roughness texture in four bands equals four quads of those constant roughnesses.
 TEST(GltfTexel, RoughnessTextureEqualsQuadsOfConstantRoughness) {
     const int rough[4] = {40, 90, 150, 220};
@@ -411,6 +461,26 @@ TEST(GltfTexel, GeneratedTangentsFollowUAndTheHandedness) {
     for (auto &uv : m.uvs) uv[1] = 1 - uv[1];
     ASSERT_TRUE(detail::generateTangents(m, 0));
     for (const auto &t : m.tangents) EXPECT_EQ(t[3], -1);
+    // Mirrored in u on the right half: the seam vertices 1 and 4 split, each side its own
+    // tangent (+x on the left, -x on the right) and handedness
+    ir::Mesh seam;
+    seam.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0),
+                      Vec3(0, 1, 0), Vec3(1, 1, 0), Vec3(2, 1, 0)};
+    seam.uvs = {{0, 1}, {1, 1}, {0, 1}, {0, 0}, {1, 0}, {0, 0}};
+    seam.colors.assign(6, {0.5f, 0.5f, 0.5f, 1});
+    seam.triangles = {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}};
+    ASSERT_TRUE(detail::generateTangents(seam, 0));
+    ASSERT_EQ(seam.positions.size(), 8u);
+    ASSERT_EQ(seam.tangents.size(), 8u);
+    EXPECT_EQ(seam.colors.size(), 8u);
+    for (size_t k = 0; k < seam.triangles.size(); ++k)
+        for (uint32_t v : seam.triangles[k]) {
+            const auto &t = seam.tangents[v];
+            bool left = k < 2;
+            EXPECT_NEAR(t[0], left ? 1 : -1, 1e-6) << "triangle " << k;
+            EXPECT_EQ(t[3], left ? 1 : -1) << "triangle " << k;
+        }
+    EXPECT_TRUE(seam.positions[6] == Vec3(1, 0, 0) && seam.positions[7] == Vec3(1, 1, 0));
     // No such coordinate set: untouched
     ir::Mesh bare;
     bare.positions = m.positions;
