@@ -366,6 +366,13 @@ std::unique_ptr<RenderScene> RenderScene::compile(const ir::Scene &scene, Diagno
         images.occlusion = rs->texture(p.occlusionTexture.texture);
         images.emissive = rs->texture(p.emissiveTexture.texture);
         images.transmission = rs->texture(p.transmissionTexture.texture);
+        images.clearcoat = rs->texture(p.clearcoatTexture.texture);
+        images.clearcoatRoughness = rs->texture(p.clearcoatRoughnessTexture.texture);
+        images.sheenColor = rs->texture(p.sheenColorTexture.texture);
+        images.sheenRoughness = rs->texture(p.sheenRoughnessTexture.texture);
+        images.specular = rs->texture(p.specularTexture.texture);
+        images.specularColor = rs->texture(p.specularColorTexture.texture);
+        images.thickness = rs->texture(p.thicknessTexture.texture);
     }
     rs->lights_ = scene.lights;
     rs->camera_ = *scene.camera;

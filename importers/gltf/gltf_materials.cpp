@@ -22,8 +22,9 @@
 //   No material      glTF's default material: white, metallic 1, roughness 1
 //   doubleSided      ignored (both renderers intersect both sides)
 // Extensions mapped: KHR_materials_emissive_strength, _transmission, _ior, _volume (thickness,
-// attenuation), _unlit, _clearcoat, _sheen, _specular (factors; their textures are not read,
-// a warning). Any other KHR_materials_* extension the file uses gets one warning.
+// attenuation), _unlit, _clearcoat, _sheen, _specular, their textures per texel like the
+// others (clearcoatNormalTexture is not read, a warning; sheenRoughnessTexture has no use in
+// the mapping). Any other KHR_materials_* extension the file uses gets one warning.
 // Materials are deduplicated through Scene::addMaterial.
 #include <algorithm>
 #include <array>
@@ -206,6 +207,12 @@ std::optional<int> MaterialMapper::irMaterial(int index, const ir::Mesh &mesh,
         changed |= usable(p.occlusionTexture, "occlusion", mean);
         changed |= usable(p.emissiveTexture, "emissive", mean);
         changed |= usable(p.transmissionTexture, "transmission", mean);
+        changed |= usable(p.clearcoatTexture, "clearcoat", mean);
+        changed |= usable(p.clearcoatRoughnessTexture, "clearcoat roughness", mean);
+        changed |= usable(p.sheenColorTexture, "sheen colour", mean);
+        changed |= usable(p.specularTexture, "specular", mean);
+        changed |= usable(p.specularColorTexture, "specular colour", mean);
+        changed |= usable(p.thicknessTexture, "thickness", mean);
         // Per-texel evaluation only where something varies over the surface
         bool alphaVaries = p.alphaMode != PbrMaterial::AlphaMode::Opaque &&
                            (mat.baseColorTexture.valid() || !mesh.colors.empty());
@@ -274,19 +281,10 @@ ir::Material MaterialMapper::map(int index, bool &hidden) {
     p.specular = clamp(number(specularExt, "specularFactor", 1.0), 0.0, 1.0);
     p.specularColor = numbers3(specularExt, "specularColorFactor", Rgb(1));
     for (int c = 0; c < 3; ++c) p.specularColor[c] = std::max(p.specularColor[c], 0.0);
-    // Their textures are not read (the factors are)
-    struct ExtTexture { const tinygltf::Value *ext; const char *name, *key; };
-    for (const ExtTexture &t : {ExtTexture{coatExt, "KHR_materials_clearcoat", "clearcoatTexture"},
-                                ExtTexture{coatExt, "KHR_materials_clearcoat", "clearcoatRoughnessTexture"},
-                                ExtTexture{coatExt, "KHR_materials_clearcoat", "clearcoatNormalTexture"},
-                                ExtTexture{sheenExt, "KHR_materials_sheen", "sheenColorTexture"},
-                                ExtTexture{sheenExt, "KHR_materials_sheen", "sheenRoughnessTexture"},
-                                ExtTexture{specularExt, "KHR_materials_specular", "specularTexture"},
-                                ExtTexture{specularExt, "KHR_materials_specular", "specularColorTexture"},
-                                ExtTexture{volumeExt, "KHR_materials_volume", "thicknessTexture"}})
-        if (textureRef(t.ext, t.key) >= 0)
-            ctx_.warning(path + ".extensions." + t.name + "." + t.key +
-                         " is not read (scadray maps the extension's factors only)");
+    // clearcoatNormalTexture has nothing to act on: the coat shares the base's normal
+    if (textureRef(coatExt, "clearcoatNormalTexture") >= 0)
+        ctx_.warning(path + ".extensions.KHR_materials_clearcoat.clearcoatNormalTexture" +
+                     " is not read (the coat uses the base's normal)");
 
     if (gm.alphaMode == "BLEND")
         p.alphaMode = PbrMaterial::AlphaMode::Blend;
@@ -344,6 +342,51 @@ ir::Material MaterialMapper::map(int index, bool &hidden) {
                         path + ".extensions.KHR_materials_transmission.transmissionTexture", false);
         mean.transmission *= textureMean(p.transmissionTexture, 0);
     }
+    // The extensions' textures, read per texel like the others (their values multiply the
+    // factors); a zero factor makes a texture moot
+    struct ExtTexture {
+        const tinygltf::Value *ext;
+        const char *name, *key;
+        ir::TextureRef PbrMaterial::*slot;
+        bool srgb;
+        bool needed;
+    };
+    for (const ExtTexture &e :
+         {ExtTexture{coatExt, "KHR_materials_clearcoat", "clearcoatTexture",
+                     &PbrMaterial::clearcoatTexture, false, p.clearcoat > 0},
+          ExtTexture{coatExt, "KHR_materials_clearcoat", "clearcoatRoughnessTexture",
+                     &PbrMaterial::clearcoatRoughnessTexture, false,
+                     p.clearcoat > 0 && p.clearcoatRoughness > 0},
+          ExtTexture{sheenExt, "KHR_materials_sheen", "sheenColorTexture",
+                     &PbrMaterial::sheenColorTexture, true, !p.sheenColor.isBlack()},
+          ExtTexture{sheenExt, "KHR_materials_sheen", "sheenRoughnessTexture",
+                     &PbrMaterial::sheenRoughnessTexture, false, false},
+          ExtTexture{specularExt, "KHR_materials_specular", "specularTexture",
+                     &PbrMaterial::specularTexture, false, p.specular > 0},
+          ExtTexture{specularExt, "KHR_materials_specular", "specularColorTexture",
+                     &PbrMaterial::specularColorTexture, true,
+                     p.specular > 0 && !p.specularColor.isBlack()},
+          ExtTexture{volumeExt, "KHR_materials_volume", "thicknessTexture",
+                     &PbrMaterial::thicknessTexture, false, p.thickness > 0}}) {
+        int index = textureRef(e.ext, e.key);
+        if (index < 0 || !e.needed) continue;  // sheen roughness: the mapping has no use for it
+        const tinygltf::Value &info = e.ext->Get(e.key);
+        tinygltf::ExtensionMap infoExts;
+        if (info.Has("extensions") && info.Get("extensions").IsObject())
+            for (const std::string &key : info.Get("extensions").Keys())
+                infoExts[key] = info.Get("extensions").Get(key);
+        p.*e.slot = textureInfo(index, static_cast<int>(number(&info, "texCoord", 0)), infoExts,
+                                path + ".extensions." + e.name + "." + e.key, e.srgb);
+    }
+    mean.clearcoat *= textureMean(p.clearcoatTexture, 0);
+    mean.clearcoatRoughness *= textureMean(p.clearcoatRoughnessTexture, 1);
+    for (int c = 0; c < 3; ++c) {
+        mean.sheenColor[c] *= textureMean(p.sheenColorTexture, c);
+        mean.specularColor[c] *= textureMean(p.specularColorTexture, c);
+    }
+    mean.specular *= textureMean(p.specularTexture, 3);
+    mean.thickness *= textureMean(p.thicknessTexture, 1);
+
     if (gm.normalTexture.index >= 0 && gm.normalTexture.scale != 0) {
         p.normalTexture = textureInfo(gm.normalTexture.index, gm.normalTexture.texCoord,
                                       gm.normalTexture.extensions, path + ".normalTexture", false);

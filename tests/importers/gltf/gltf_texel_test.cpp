@@ -313,6 +313,74 @@ TEST(GltfTexel, RoughnessTextureEqualsQuadsOfConstantRoughness) {
     EXPECT_GT(std::abs(pixelAt(ia, v, 0.125, 0.5).r - pixelAt(ia, v, 0.875, 0.5).r), 0.01);
 }
 
+/// A texture in four bands read by an extension (`ext`, its `textureKey` read in channel
+/// `channel` of 0xRRGGBBAA, multiplying `factorKey` set to 1) renders as four quads whose
+/// materials have the band values as factors.
+void expectBandsEqualFactors(const std::string &ext, const std::string &textureKey,
+                             const std::string &factorKey, int channel,
+                             const std::string &otherFactors) {
+    const int value[4] = {30, 100, 170, 240};
+    auto tex = bmp32(16, 4, [&](int x, int) {
+        uint32_t px = 0x808080ffu;
+        int shift = 24 - 8 * channel;
+        px = (px & ~(0xffu << shift)) | uint32_t(value[x / 4]) << shift;
+        return px;
+    });
+    const std::string base = R"("pbrMetallicRoughness":{"baseColorFactor":[0.3,0.4,0.5,1],)"
+                             R"("metallicFactor":0,"roughnessFactor":0.4})";
+    std::string textured = "[{" + base + R"(,"extensions":{")" + ext + R"(":{")" + factorKey +
+                           R"(":1,")" + textureKey + R"(":{"index":0})" + otherFactors + "}}}]";
+    std::string constants = "[";
+    std::vector<Prim> quads;
+    for (int k = 0; k < 4; ++k) {
+        constants += std::string(k ? "," : "") + "{" + base + R"(,"extensions":{")" + ext +
+                     R"(":{")" + factorKey + "\":" + std::to_string(value[k] / 255.0) +
+                     otherFactors + "}}}";
+        quads.push_back(quad(k / 4.0, (k + 1) / 4.0, 0, 1, 0, k));
+    }
+    constants += "]";
+    std::string used = ",\"extensionsUsed\":[\"" + ext + "\"]";
+    TempDir tmp;
+    auto a = importText(tmp, gltfOf({quad(0, 1, 0, 1, 0, 0)}, textured, {bmpUri(tex)}, used),
+                        "a.gltf");
+    auto b = importText(tmp, gltfOf(quads, constants, {}, used), "b.gltf");
+    EXPECT_EQ(a->diag.count(Severity::Warning), 0);
+    ASSERT_EQ(a->scene.materials.size(), 1u);
+    EXPECT_TRUE(a->scene.materials[0].texel.pbr) << "evaluated per texel";
+    View v;
+    v.lightDir = Vec3(0.1, 0.05, -1);  // a highlight on every band
+    v.cy = 0.45;
+    Image ia = render(a->scene, v), ib = render(b->scene, v);
+    for (int k = 0; k < 4; ++k)
+        for (double y : {0.25, 0.5, 0.75}) {
+            double x = (k + 0.5) / 4;
+            expectSameRgb(pixelAt(ia, v, x, y), pixelAt(ib, v, x, y), 1e-4,
+                          ext + " band " + std::to_string(k));
+        }
+    Rgb first = pixelAt(ia, v, 0.125, 0.5), last = pixelAt(ia, v, 0.875, 0.5);
+    EXPECT_GT(std::abs(first.r - last.r) + std::abs(first.b - last.b), 0.01) << "bands differ";
+    // The constant fields (POV-Ray export, check) are the mapping of the texture's mean
+    std::string meanMaterial = "[{" + base + R"(,"extensions":{")" + ext + R"(":{")" +
+                               factorKey + "\":" + std::to_string(135 / 255.0) + otherFactors +
+                               "}}}]";
+    auto c = importText(tmp, gltfOf({quad(0, 1, 0, 1, 0, 0)}, meanMaterial, {}, used), "c.gltf");
+    const ir::Finish &fa = a->scene.materials[0].finish, &fc = c->scene.materials[0].finish;
+    EXPECT_NEAR(fa.reflectionMin.r, fc.reflectionMin.r, 1e-6);
+    EXPECT_NEAR(fa.reflectionMax.r, fc.reflectionMax.r, 1e-6);
+    EXPECT_NEAR(fa.specular, fc.specular, 1e-6);
+    EXPECT_NEAR(fa.diffuse, fc.diffuse, 1e-6);
+}
+
+// (b') The textures of KHR_materials_clearcoat and _specular, per texel like the others
+TEST(GltfTexel, ClearcoatTextureEqualsQuadsOfConstantClearcoat) {
+    expectBandsEqualFactors("KHR_materials_clearcoat", "clearcoatTexture", "clearcoatFactor", 0,
+                            ",\"clearcoatRoughnessFactor\":0.1");
+}
+
+TEST(GltfTexel, SpecularTextureEqualsQuadsOfConstantSpecular) {
+    expectBandsEqualFactors("KHR_materials_specular", "specularTexture", "specularFactor", 3, "");
+}
+
 /// The checkerboard scene: a red quad (4 x 4 squares, alpha 0 or 1) at z = 0 over a grey
 /// floor at z = -1; the light comes in at 45 degrees along +x, so the quad's shadow lies on
 /// the floor one unit to the right.
