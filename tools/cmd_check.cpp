@@ -164,8 +164,9 @@ int runCheck(const CheckArgs &a) {
     LoadOptions lo = a.scene.loadOptions(a.quiet);
     lo.aspect = double(a.width) / a.height;
     ir::Scene scene = loadScene(a.scene.input, diag, lo);
-    // POV-Ray gets a glTF material's per-texel metallic-roughness, normal, occlusion, emissive
-    // and transmission maps as the mapping of their means (the material's constant fields), so
+    // POV-Ray gets a glTF material's per-texel metallic-roughness, normal, occlusion, emissive,
+    // transmission, clearcoat, sheen, specular and thickness maps as the mapping of their means
+    // (the material's constant fields), so
     // both sides render that; texture alpha, which the export expresses per texel, stays
     int averaged = 0;
     for (ir::Material &m : scene.materials) {
@@ -177,7 +178,8 @@ int runCheck(const CheckArgs &a) {
     if (averaged > 0 && !a.quiet)
         std::cout << "per-texel materials: " << averaged
                   << " compared by their textures' means (POV-Ray cannot express per-texel "
-                     "metallic-roughness, normal, occlusion, emissive or transmission maps)\n";
+                     "metallic-roughness, normal, occlusion, emissive, transmission, "
+                     "clearcoat, sheen, specular or thickness maps)\n";
 
     // POV-Ray: export, render k times larger without antialiasing, box-downsample
     PovReference pov = renderPovReference(scene, dir.string(), stem,

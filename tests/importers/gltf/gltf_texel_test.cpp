@@ -166,6 +166,16 @@ void expectSameRgb(const Rgb &a, const Rgb &b, double tol, const std::string &wh
     EXPECT_NEAR(a.b, b.b, tol) << where;
 }
 
+/// Appends to `p` the facet over [x0, x1] x [0, 1] (glTF xy) of the plane with normal `n`
+/// through (xz, 0, 0): the relief a normal map encodes, as geometry.
+void addFacet(Prim &p, const Vec3 &n, double x0, double x1, double xz) {
+    auto z = [&](double x, double y) { return -(n.x * (x - xz) + n.y * y) / n.z; };
+    uint32_t b = static_cast<uint32_t>(p.pos.size() / 3);
+    for (auto [x, y] : {std::pair{x0, 0.0}, {x1, 0.0}, {x1, 1.0}, {x0, 1.0}})
+        for (double c : {x, y, z(x, y)}) p.pos.push_back(float(c));
+    for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) p.idx.push_back(b + i);
+}
+
 const std::string kGrey =
     R"({"pbrMetallicRoughness":{"baseColorFactor":[0.8,0.7,0.6,1],"metallicFactor":0,"roughnessFactor":1}})";
 
@@ -199,15 +209,7 @@ TEST(GltfTexel, NormalMappedQuadShadesLikeTheFacetsItEncodes) {
 
     // The same relief as geometry: band k is the plane through (k/4, 0, 0) with normal n_k
     Prim facets;
-    for (int k = 0; k < 4; ++k) {
-        const Vec3 &n = normals[k];
-        double x0 = k / 4.0, x1 = (k + 1) / 4.0;
-        auto z = [&](double x, double y) { return -(n.x * (x - x0) + n.y * y) / n.z; };
-        for (auto [x, y] : {std::pair{x0, 0.0}, {x1, 0.0}, {x1, 1.0}, {x0, 1.0}})
-            for (double c : {x, y, z(x, y)}) facets.pos.push_back(float(c));
-        uint32_t b = static_cast<uint32_t>(4 * k);
-        for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) facets.idx.push_back(b + i);
-    }
+    for (int k = 0; k < 4; ++k) addFacet(facets, normals[k], k / 4.0, (k + 1) / 4.0, k / 4.0);
     auto relief = importText(tmp, gltfOf({facets}, "[" + kGrey + "]", {}), "relief.gltf");
 
     View v;
@@ -258,15 +260,8 @@ TEST(GltfTexel, MirroredUvSeamSplitsTangentsAndShadesLikeTheMirroredRelief) {
     // The relief as geometry: left half tilted by n, right half by n mirrored in x, meeting
     // along x = 0.5
     Prim ridge;
-    for (int side = 0; side < 2; ++side) {
-        Vec3 ns = side == 0 ? n : Vec3(-n.x, n.y, n.z);
-        double x0 = side * 0.5, x1 = x0 + 0.5;
-        auto z = [&](double px, double py) { return -(ns.x * (px - 0.5) + ns.y * py) / ns.z; };
-        for (auto [px, py] : {std::pair{x0, 0.0}, {x1, 0.0}, {x1, 1.0}, {x0, 1.0}})
-            for (double c : {px, py, z(px, py)}) ridge.pos.push_back(float(c));
-        uint32_t b = static_cast<uint32_t>(4 * side);
-        for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) ridge.idx.push_back(b + i);
-    }
+    addFacet(ridge, n, 0, 0.5, 0.5);
+    addFacet(ridge, Vec3(-n.x, n.y, n.z), 0.5, 1, 0.5);
     auto relief = importText(tmp, gltfOf({ridge}, "[" + kGrey + "]", {}), "ridge.gltf");
 
     View v;
