@@ -166,6 +166,7 @@ ir::Scene loadScene(const std::string &path, DiagnosticSink &diag, const LoadOpt
         io.defines = opts.defines;
         io.maxSteps = opts.maxSteps;
         io.maxElements = opts.maxElements;
+        io.time = opts.time;
         if (!opts.quiet && isatty(STDERR_FILENO)) io.progress = evaluationProgress();
         struct ClearAtEnd {
             ~ClearAtEnd() { clearProgressLine(); }

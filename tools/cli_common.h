@@ -41,6 +41,8 @@ struct LoadOptions {
     /// Picture width / height when the command knows it (the automatic camera of glTF, STL
     /// and OFF files fits the smaller side); 0 when unknown.
     double aspect = 0;
+    /// `$t` of a .scad scene (animation frames); other scene types have no time.
+    double time = 0;
 };
 
 /// The scene argument and the options every scene-reading subcommand takes (-D, -L,

@@ -182,8 +182,9 @@ CheckResult checkPovray(const CheckArgs &a, CsvRow &csv) {
     LoadOptions lo = a.scene.loadOptions(a.quiet);
     lo.aspect = double(a.width) / a.height;
     ir::Scene scene = loadScene(a.scene.input, diag, lo);
-    // POV-Ray gets a glTF material's per-texel metallic-roughness, normal, occlusion, emissive
-    // and transmission maps as the mapping of their means (the material's constant fields), so
+    // POV-Ray gets a glTF material's per-texel metallic-roughness, normal, occlusion, emissive,
+    // transmission, clearcoat, sheen, specular and thickness maps as the mapping of their means
+    // (the material's constant fields), so
     // both sides render that; texture alpha, which the export expresses per texel, stays
     int averaged = 0;
     for (ir::Material &m : scene.materials) {
@@ -195,7 +196,8 @@ CheckResult checkPovray(const CheckArgs &a, CsvRow &csv) {
     if (averaged > 0 && !a.quiet)
         std::cout << "per-texel materials: " << averaged
                   << " compared by their textures' means (POV-Ray cannot express per-texel "
-                     "metallic-roughness, normal, occlusion, emissive or transmission maps)\n";
+                     "metallic-roughness, normal, occlusion, emissive, transmission, "
+                     "clearcoat, sheen, specular or thickness maps)\n";
 
     // POV-Ray: export, render k times larger without antialiasing, box-downsample
     PovReference pov = renderPovReference(scene, dir.string(), stem,
@@ -219,11 +221,8 @@ CheckResult checkPovray(const CheckArgs &a, CsvRow &csv) {
             // A texture whose alpha cuts or blends the surface shapes silhouettes and shadows:
             // it stays, so their edges are masked like any geometry's
             if (m.texel.pbr && m.texel.pbr->alphaMode != PbrMaterial::AlphaMode::Opaque) continue;
-            const ir::Texture &t = *scene.textures[size_t(m.baseColorTexture.texture)];
-            Rgb sum(0);
-            for (size_t p = 0; p + 3 < t.rgba.size(); p += 4)
-                sum += Rgb(t.rgba[p], t.rgba[p + 1], t.rgba[p + 2]);
-            if (!t.rgba.empty()) m.color *= sum / double(t.rgba.size() / 4);
+            auto mean = ir::textureMean(*scene.textures[size_t(m.baseColorTexture.texture)]);
+            m.color *= Rgb(mean[0], mean[1], mean[2]);
             m.baseColorTexture = {};
         }
         PovReference edges;

@@ -13,6 +13,7 @@
 #include "core/render/render_plan.h"
 #include "core/render/render_scene.h"
 #include "core/render/renderer.h"
+#include "tools/animation.h"
 #include "tools/cli_common.h"
 #include "tools/commands.h"
 #include "tools/tiles.h"
@@ -33,6 +34,8 @@ struct RenderArgs {
     bool aaToleranceGiven = false;
     int aaMax = 64;
     double aaThreshold = RenderOptions().adaptiveThreshold, aaTolerance = RenderOptions().adaptiveTolerance;
+    AnimationArgs animation;  ///< --frames and its options
+    bool sceneGiven = false;  ///< optional with --encode-only only
 };
 
 std::string formatCount(int64_t n) {
@@ -54,9 +57,11 @@ std::string sppText(const RenderResult &r) {
     return buf;
 }
 
-int runRender(const RenderArgs &a) {
+/// One picture: the still image, or one frame of an animation at `$t = time`.
+int renderOne(const RenderArgs &a, double time, const std::string &outputName) {
     LoadOptions lo = a.scene.loadOptions(a.quiet);
     lo.aspect = double(a.width) / a.height;
+    lo.time = time;
     RenderOptions ro;
     ro.width = a.width;
     ro.height = a.height;
@@ -70,7 +75,7 @@ int runRender(const RenderArgs &a) {
     TileSpec tile = a.tile.empty() ? TileSpec{} : parseTile(a.tile);
     if (tile) std::tie(ro.rowBegin, ro.rowEnd) = tileRows(tile.index - 1, tile.count, a.height);
     validateRenderOptions(ro);  // fail on bad options before reading the scene
-    std::string output = a.output;
+    std::string output = outputName;
     std::string stem = std::filesystem::path(a.scene.input).stem().string();
     if (output.empty())
         output = tile ? stem + "_tile" + std::to_string(tile.index) + "of" + std::to_string(tile.count) + ".exr"
@@ -145,14 +150,28 @@ int runRender(const RenderArgs &a) {
     return kExitOk;
 }
 
+int runRender(const RenderArgs &a) {
+    // Only --encode-only does without a scene
+    if (!a.sceneGiven && !a.animation.encodeOnly)
+        throw std::invalid_argument("render: a scene file is required");
+    if (!a.animation.active()) return renderOne(a, 0, a.output);
+    std::string output = a.output;
+    if (output.empty() && !a.scene.input.empty())
+        output = std::filesystem::path(a.scene.input).stem().string() + ".png";
+    return runAnimation(a.animation, a.scene.input, output, a.quiet,
+                        [&a](double t, const std::string &path) { renderOne(a, t, path); });
+}
+
 }  // namespace
 
 void addRenderCommand(CLI::App &app, std::function<int()> &action) {
     auto args = std::make_shared<RenderArgs>();
     CLI::App *cmd = app.add_subcommand("render", "Ray-trace a scene to an image (.png or .exr)");
     args->scene.addTo(*cmd);
+    cmd->get_option("scene")->required(false);  // not with --encode-only; runRender checks
     cmd->add_option("-o,--output", args->output,
-                    "Output image; .png (sRGB) or .exr (linear float). Default: <scene>.png");
+                    "Output image; .png (sRGB) or .exr (linear float). Default: <scene>.png. "
+                    "With --frames the frames' name: <name>_0000.png ...");
     addNumber(*cmd, "-W,--width", args->width, "Image width in pixels", 1, kMaxImageSide);
     addNumber(*cmd, "-H,--height", args->height, "Image height in pixels", 1, kMaxImageSide);
     addNumber(*cmd, "-s,--samples", args->samples,
@@ -194,8 +213,11 @@ void addRenderCommand(CLI::App &app, std::function<int()> &action) {
                     "Render tile K of N horizontal bands (1 <= K <= N, as SLURM_ARRAY_TASK_ID with "
                     "--array=1-N) to an .exr that `scadray merge` assembles");
     cmd->add_flag("-q,--quiet", args->quiet, "Only warnings and errors");
+    args->animation.addTo(*cmd);
+    cmd->get_option("--tile")->excludes("--frames");  // a frame is one picture, not tiles
     cmd->callback([args, cmd, &action]() {
         args->samplesGiven = cmd->count("--samples") > 0;
+        args->sceneGiven = cmd->count("scene") > 0;
         args->aaToleranceGiven = cmd->count("--aa-tolerance") > 0;
         args->aaGiven = cmd->count("--aa-max") + cmd->count("--aa-threshold") + args->aaToleranceGiven > 0;
         action = [args]() { return runRender(*args); };

@@ -13,6 +13,8 @@ packages=(
     libfreetype-dev libharfbuzz-dev libfontconfig-dev fonts-liberation
     povray openscad
     openscad-mcad
+    # render --frames encodes the video with ffmpeg; its tests count the frames with ffprobe (same package)
+    ffmpeg
     clang libclang-rt-14-dev
     libembree-dev
     libjs-chart.js  # Chart.js, embedded into `scadray report` pages for the converge plots

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Mesh bounds, topology and validation.
+// Mesh bounds, topology and validation; texture means.
 #include "core/ir/mesh.h"
 
 #include <algorithm>
@@ -113,6 +113,16 @@ void validateMesh(const Mesh &mesh) {
                 throw SceneError(mesh.loc, "mesh '" + mesh.name + "': triangle " + std::to_string(i) +
                                                " uses vertex " + std::to_string(v) + " of " +
                                                std::to_string(n));
+}
+
+std::array<double, 4> textureMean(const Texture &t) {
+    std::array<double, 4> sum{0, 0, 0, 0};
+    size_t texels = t.rgba.size() / 4;
+    if (texels == 0) return {1, 1, 1, 1};
+    for (size_t i = 0; i < texels; ++i)
+        for (size_t c = 0; c < 4; ++c) sum[c] += t.rgba[i * 4 + c];
+    for (double &s : sum) s /= static_cast<double>(texels);
+    return sum;
 }
 
 }  // namespace rt::ir

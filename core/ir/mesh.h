@@ -77,4 +77,9 @@ struct Texture {
 
 using TexturePtr = std::shared_ptr<const Texture>;
 
+/// The mean of each channel (R, G, B, A) over every texel of `t`, summed in texel order; 1
+/// for an image without texels (a neutral factor). What the POV-Ray export and `check` use
+/// for a map the classic material cannot express per texel.
+std::array<double, 4> textureMean(const Texture &t);
+
 }  // namespace rt::ir

@@ -14,9 +14,13 @@
 //   t   = KHR_materials_transmission.transmissionFactor x R of transmissionTexture
 //   o   = 1 + occlusionTexture.strength x (R of occlusionTexture - 1)
 //   eta = KHR_materials_ior.ior (default 1.5)
-//   s, S = KHR_materials_specular specularFactor, specularColorFactor (defaults 1, white)
-//   k, rk = KHR_materials_clearcoat clearcoatFactor, clearcoatRoughnessFactor
-//   Sh  = KHR_materials_sheen sheenColorFactor
+//   s, S = KHR_materials_specular specularFactor x A of specularTexture, specularColorFactor
+//          x specularColorTexture (sRGB decoded) (defaults 1, white)
+//   k, rk = KHR_materials_clearcoat clearcoatFactor x R of clearcoatTexture,
+//          clearcoatRoughnessFactor x G of clearcoatRoughnessTexture
+//   Sh  = KHR_materials_sheen sheenColorFactor x sheenColorTexture (sRGB decoded); the sheen
+//          roughness (x A of sheenRoughnessTexture) is read but the mapping has no use for it
+//   thickness = KHR_materials_volume thicknessFactor x G of thicknessTexture
 // Derived
 //   F0d = min(((eta-1)/(eta+1))^2 S, 1) s     F0 = mix(F0d, C, m)      g = (1-r)^2
 //   nB(r) = clamp(2/r^4 - 2, 1, 4000), r = 0 gives 4000 (Blinn-Phong exponent of GGX alpha r^2)
@@ -99,6 +103,13 @@ PbrInputs pbrFactors(const PbrMaterial &p) {
     in.emissive = p.emissive;
     in.transmission = p.transmission;
     in.occlusion = 1;
+    in.clearcoat = p.clearcoat;
+    in.clearcoatRoughness = p.clearcoatRoughness;
+    in.sheenColor = p.sheenColor;
+    in.sheenRoughness = p.sheenRoughness;
+    in.specular = p.specular;
+    in.specularColor = p.specularColor;
+    in.thickness = p.thickness;
     return in;
 }
 
@@ -110,7 +121,7 @@ ir::Material classicMaterial(const PbrMaterial &p, const PbrInputs &in) {
 
     double f0Ior = sq((p.ior - 1) / (p.ior + 1));
     Rgb f0d;
-    for (int c = 0; c < 3; ++c) f0d[c] = std::min(f0Ior * p.specularColor[c], 1.0) * p.specular;
+    for (int c = 0; c < 3; ++c) f0d[c] = std::min(f0Ior * in.specularColor[c], 1.0) * in.specular;
     Rgb f0 = f0d * (1 - metallic) + baseColor * metallic;
     double gloss = sq(1 - roughness);
     double exponent = specularExponent(roughness);
@@ -146,9 +157,9 @@ ir::Material classicMaterial(const PbrMaterial &p, const PbrInputs &in) {
     }
 
     // Clearcoat: a dielectric layer over the base
-    double coat = clamp(p.clearcoat, 0.0, 1.0);
+    double coat = clamp(in.clearcoat, 0.0, 1.0);
     if (coat > 0) {
-        double coatRough = clamp(p.clearcoatRoughness, 0.0, 1.0);
+        double coatRough = clamp(in.clearcoatRoughness, 0.0, 1.0);
         double coatGloss = sq(1 - coatRough);
         double coatExponent = specularExponent(coatRough);
         f.reflectionMin += Rgb(coat * kClearcoatF0 * coatGloss);
@@ -163,10 +174,10 @@ ir::Material classicMaterial(const PbrMaterial &p, const PbrInputs &in) {
     }
 
     // Sheen: a flatter diffuse falloff and a little more diffuse light
-    double sheen = std::max({p.sheenColor.r, p.sheenColor.g, p.sheenColor.b});
+    double sheen = std::max({in.sheenColor.r, in.sheenColor.g, in.sheenColor.b});
     if (sheen > 0) {
         f.brilliance = 1 - 0.5 * std::min(sheen, 1.0);
-        f.diffuse += 0.25 * luminance(p.sheenColor) * (1 - metallic);
+        f.diffuse += 0.25 * luminance(in.sheenColor) * (1 - metallic);
     }
 
     // Emission, divided by the colour POV-Ray will multiply it with
@@ -177,7 +188,7 @@ ir::Material classicMaterial(const PbrMaterial &p, const PbrInputs &in) {
         }
     }
 
-    bool volume = p.thickness > 0;
+    bool volume = in.thickness > 0;
     mat.interior.ior = volume && transmission > 0 ? p.ior : 1.0;
     if (volume && p.attenuationDistance > 0 && std::isfinite(p.attenuationDistance) &&
         !(p.attenuationColor == Rgb(1))) {
@@ -254,6 +265,27 @@ TexelShading shadeTexel(const ir::Material &m, const TexelImages &images,
         in.transmission *= t[0];
     if (images.occlusion && sampleTexture(*images.occlusion, p.occlusionTexture, si, t))
         in.occlusion = 1 + p.occlusionStrength * (t[0] - 1);
+    // The extensions' textures multiply their factors (KHR_materials_clearcoat, _sheen,
+    // _specular, _volume)
+    if (images.clearcoat && in.clearcoat > 0 &&
+        sampleTexture(*images.clearcoat, p.clearcoatTexture, si, t))
+        in.clearcoat *= t[0];
+    if (images.clearcoatRoughness &&
+        sampleTexture(*images.clearcoatRoughness, p.clearcoatRoughnessTexture, si, t))
+        in.clearcoatRoughness *= t[1];
+    if (images.sheenColor && sampleTexture(*images.sheenColor, p.sheenColorTexture, si, t))
+        in.sheenColor *= Rgb(t[0], t[1], t[2]);
+    if (images.sheenRoughness &&
+        sampleTexture(*images.sheenRoughness, p.sheenRoughnessTexture, si, t))
+        in.sheenRoughness *= t[3];
+    if (images.specular && sampleTexture(*images.specular, p.specularTexture, si, t))
+        in.specular *= t[3];
+    if (images.specularColor &&
+        sampleTexture(*images.specularColor, p.specularColorTexture, si, t))
+        in.specularColor *= Rgb(t[0], t[1], t[2]);
+    if (images.thickness && in.thickness > 0 &&
+        sampleTexture(*images.thickness, p.thicknessTexture, si, t))
+        in.thickness *= t[1];
     out.material = classicMaterial(p, in);
 
     if (images.normal && withNormal) {

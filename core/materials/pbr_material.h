@@ -51,6 +51,13 @@ struct PbrMaterial {
     double occlusionStrength = 1;
     ir::TextureRef emissiveTexture;           ///< sRGB, multiplies emissive
     ir::TextureRef transmissionTexture;       ///< R, multiplies transmission
+    ir::TextureRef clearcoatTexture;          ///< R, multiplies clearcoat
+    ir::TextureRef clearcoatRoughnessTexture; ///< G, multiplies clearcoatRoughness
+    ir::TextureRef sheenColorTexture;         ///< sRGB, multiplies sheenColor
+    ir::TextureRef sheenRoughnessTexture;     ///< A, multiplies sheenRoughness
+    ir::TextureRef specularTexture;           ///< A, multiplies specular
+    ir::TextureRef specularColorTexture;      ///< sRGB, multiplies specularColor
+    ir::TextureRef thicknessTexture;          ///< G, multiplies thickness
 
     auto key() const {
         const Rgb &c = baseColor, &e = emissive, &ac = attenuationColor, &sh = sheenColor,
@@ -62,14 +69,19 @@ struct PbrMaterial {
                             sh.r, sh.g, sh.b, sheenRoughness, specular, sc.r, sc.g, sc.b,
                             normalScale, occlusionStrength),
             metallicRoughnessTexture.key(), normalTexture.key(), occlusionTexture.key(),
-            emissiveTexture.key(), transmissionTexture.key());
+            emissiveTexture.key(), transmissionTexture.key(), clearcoatTexture.key(),
+            clearcoatRoughnessTexture.key(), sheenColorTexture.key(), sheenRoughnessTexture.key(),
+            specularTexture.key(), specularColorTexture.key(), thicknessTexture.key());
     }
     bool operator==(const PbrMaterial &o) const { return key() == o.key(); }
 
     /// Whether any texture slot is set (else the constant mapping says everything).
     bool textured() const {
         return metallicRoughnessTexture.valid() || normalTexture.valid() ||
-               occlusionTexture.valid() || emissiveTexture.valid() || transmissionTexture.valid();
+               occlusionTexture.valid() || emissiveTexture.valid() || transmissionTexture.valid() ||
+               clearcoatTexture.valid() || clearcoatRoughnessTexture.valid() ||
+               sheenColorTexture.valid() || sheenRoughnessTexture.valid() ||
+               specularTexture.valid() || specularColorTexture.valid() || thicknessTexture.valid();
     }
     /// Whether some texel may let light through (alpha or transmission below or above their
     /// constant values): such a material never counts as opaque.
@@ -87,13 +99,19 @@ struct PbrInputs {
     Rgb emissive{0};
     double transmission = 0;
     double occlusion = 1;  ///< 1 + strength (R - 1): scales the ambient term only
+    double clearcoat = 0, clearcoatRoughness = 0;
+    Rgb sheenColor{0};
+    double sheenRoughness = 0;
+    double specular = 1;
+    Rgb specularColor{1};
+    double thickness = 0;
 };
 
 /// The factors alone, as the mapping reads them for an untextured material.
 PbrInputs pbrFactors(const PbrMaterial &p);
 
-/// The classic material for `in` under the constant settings of `p` (ior, volume, unlit,
-/// clearcoat, sheen, specular, alpha mode). Alpha: BLEND gives transmit 1 - alpha; MASK is
+/// The classic material for `in` under the constant settings of `p` (ior, attenuation,
+/// unlit, alpha mode). Alpha: BLEND gives transmit 1 - alpha; MASK is
 /// opaque (the caller decides what is cut out); OPAQUE ignores alpha.
 ir::Material classicMaterial(const PbrMaterial &p, const PbrInputs &in);
 
@@ -107,7 +125,10 @@ struct TexelShading {
 /// The images behind a material's texture slots (null: none, or not decoded).
 struct TexelImages {
     const ir::Texture *baseColor = nullptr, *metallicRoughness = nullptr, *normal = nullptr,
-                      *occlusion = nullptr, *emissive = nullptr, *transmission = nullptr;
+                      *occlusion = nullptr, *emissive = nullptr, *transmission = nullptr,
+                      *clearcoat = nullptr, *clearcoatRoughness = nullptr, *sheenColor = nullptr,
+                      *sheenRoughness = nullptr, *specular = nullptr, *specularColor = nullptr,
+                      *thickness = nullptr;
 };
 
 /// Evaluates `m` (whose `texel` is set) at hit `si`: samples its textures, alpha from the base

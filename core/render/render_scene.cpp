@@ -353,6 +353,27 @@ std::unique_ptr<RenderScene> RenderScene::compile(const ir::Scene &scene, Diagno
     rs->options_ = options;
     rs->materials_ = scene.materials;
     rs->textures_ = scene.textures;
+    // Per-texel materials find their images here once, not at every hit
+    rs->texelImages_.resize(rs->materials_.size());
+    for (size_t i = 0; i < rs->materials_.size(); ++i) {
+        const ir::Material &m = rs->materials_[i];
+        if (!m.texel.pbr) continue;
+        const PbrMaterial &p = *m.texel.pbr;
+        TexelImages &images = rs->texelImages_[i];
+        images.baseColor = rs->texture(m.baseColorTexture.texture);
+        images.metallicRoughness = rs->texture(p.metallicRoughnessTexture.texture);
+        images.normal = rs->texture(p.normalTexture.texture);
+        images.occlusion = rs->texture(p.occlusionTexture.texture);
+        images.emissive = rs->texture(p.emissiveTexture.texture);
+        images.transmission = rs->texture(p.transmissionTexture.texture);
+        images.clearcoat = rs->texture(p.clearcoatTexture.texture);
+        images.clearcoatRoughness = rs->texture(p.clearcoatRoughnessTexture.texture);
+        images.sheenColor = rs->texture(p.sheenColorTexture.texture);
+        images.sheenRoughness = rs->texture(p.sheenRoughnessTexture.texture);
+        images.specular = rs->texture(p.specularTexture.texture);
+        images.specularColor = rs->texture(p.specularColorTexture.texture);
+        images.thickness = rs->texture(p.thicknessTexture.texture);
+    }
     rs->lights_ = scene.lights;
     rs->camera_ = *scene.camera;
     rs->settings_ = scene.settings;

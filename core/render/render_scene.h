@@ -11,6 +11,7 @@
 #include "core/geometry/shape.h"
 #include "core/ir/diagnostics.h"
 #include "core/ir/scene_ir.h"
+#include "core/materials/pbr_material.h"
 
 namespace rt {
 
@@ -68,6 +69,9 @@ class RenderScene {
     const ir::Texture *texture(int index) const {
         return index >= 0 && index < static_cast<int>(textures_.size()) ? textures_[index].get() : nullptr;
     }
+    /// The images material `index` reads per texel, resolved once at compile time (all null
+    /// for a material without a per-texel description).
+    const TexelImages &texelImages(int index) const { return texelImages_[index]; }
     const std::vector<ir::Light> &lights() const { return lights_; }
     const ir::Camera &camera() const { return camera_; }
     const ir::Settings &settings() const { return settings_; }
@@ -87,6 +91,7 @@ class RenderScene {
     Bvh bvh_;
     std::vector<ir::Material> materials_;
     std::vector<ir::TexturePtr> textures_;
+    std::vector<TexelImages> texelImages_;  ///< by material
     std::vector<ir::Light> lights_;
     ir::Camera camera_;
     ir::Settings settings_;

@@ -32,19 +32,6 @@ double cubicSpline(double low, double high, double x) {
     return (3 - 2 * p) * p * p;
 }
 
-/// The images a material with a per-texel description reads.
-TexelImages texelImages(const RenderScene &scene, const ir::Material &m) {
-    const PbrMaterial &p = *m.texel.pbr;
-    TexelImages images;
-    images.baseColor = scene.texture(m.baseColorTexture.texture);
-    images.metallicRoughness = scene.texture(p.metallicRoughnessTexture.texture);
-    images.normal = scene.texture(p.normalTexture.texture);
-    images.occlusion = scene.texture(p.occlusionTexture.texture);
-    images.emissive = scene.texture(p.emissiveTexture.texture);
-    images.transmission = scene.texture(p.transmissionTexture.texture);
-    return images;
-}
-
 }  // namespace
 
 WhittedIntegrator::WhittedIntegrator(const RenderScene &scene, const Vec3 &cameraPosition)
@@ -97,11 +84,12 @@ double WhittedIntegrator::relativeIor(const Shape *object, const InteriorStack &
 Rgb WhittedIntegrator::shade(const Ray &ray, const SurfaceInteraction &si, int level,
                              double weight, const InteriorStack &stack, bool blurred,
                              TraceContext &ctx) const {
-    const ir::Material &stored = scene_.material(si.leaf->material());
+    int materialIndex = si.leaf->material();
+    const ir::Material &stored = scene_.material(materialIndex);
     // A glTF material with per-texel textures: its classic material and normal at this texel
     std::optional<TexelShading> texel;
     if (stored.texel.pbr) {
-        texel = shadeTexel(stored, texelImages(scene_, stored), si, ray.d);
+        texel = shadeTexel(stored, scene_.texelImages(materialIndex), si, ray.d);
         // Cut out (alpha MASK): the ray goes on as if the surface were not there
         if (texel->cutOut)
             return trace(spawnRay(si, ray.d), level, weight, stack, true, blurred, ctx);
@@ -340,12 +328,13 @@ Rgb WhittedIntegrator::shadowFilter(const SurfaceInteraction &si, const Vec3 &L,
         ctx.tie = ctx.tie || blocker.tie;
         if (!blocked) return filter;
         // An opaque blocker settles it; only a transparent one needs its surface
-        const ir::Material &m = scene_.material(blocker.crossing.leaf->material());
+        int materialIndex = blocker.crossing.leaf->material();
+        const ir::Material &m = scene_.material(materialIndex);
         if (blocker.object->opaque || !m.isTransparent()) return Rgb(0);
         SurfaceInteraction hit = scene_.surfaceAt(ray, blocker);
         bool cutOut = false;
         if (m.texel.pbr) {
-            TexelShading t = shadeTexel(m, texelImages(scene_, m), hit, ray.d, false);
+            TexelShading t = shadeTexel(m, scene_.texelImages(materialIndex), hit, ray.d, false);
             cutOut = t.cutOut;  // alpha MASK: passes untouched, entering or leaving nothing
             if (!cutOut) filter *= t.material.color * t.material.filter + Rgb(t.material.transmit);
         } else {

@@ -231,6 +231,10 @@ class MaterialMapper {
     /// the material hides its primitives (alphaMode MASK with alpha below the cutoff). Without
     /// the texture coordinates it reads, the base colour texture is left out.
     std::optional<int> irMaterial(int index, const ir::Mesh &mesh, const std::string &primitivePath);
+    /// The texture coordinate set (0 or 1) whose tangents a primitive with glTF material
+    /// `index` needs when its file gives none (its normal map's), or -1: no normal map, or the
+    /// material hides its primitives. The mesh builder generates them as it builds the mesh.
+    int tangentTexCoord(int index, const std::string &primitivePath);
 
   private:
     struct DecodedImage;
@@ -240,6 +244,8 @@ class MaterialMapper {
         bool done = false;
     };
 
+    /// The mapping of glTF material `index` (-1: the default), made on first use.
+    const Mapped &mapped(int index, const std::string &primitivePath);
     ir::Material map(int index, bool &hidden);
     const DecodedImage *decodedImage(int textureIndex, const std::string &what);
     /// Mean of channel `channel` (0..3) over the texture `ref` names; 1 without one.

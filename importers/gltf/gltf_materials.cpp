@@ -22,8 +22,9 @@
 //   No material      glTF's default material: white, metallic 1, roughness 1
 //   doubleSided      ignored (both renderers intersect both sides)
 // Extensions mapped: KHR_materials_emissive_strength, _transmission, _ior, _volume (thickness,
-// attenuation), _unlit, _clearcoat, _sheen, _specular (factors; their textures are not read,
-// a warning). Any other KHR_materials_* extension the file uses gets one warning.
+// attenuation), _unlit, _clearcoat, _sheen, _specular, their textures per texel like the
+// others (clearcoatNormalTexture is not read, a warning; sheenRoughnessTexture has no use in
+// the mapping). Any other KHR_materials_* extension the file uses gets one warning.
 // Materials are deduplicated through Scene::addMaterial.
 #include <algorithm>
 #include <array>
@@ -36,7 +37,6 @@
 #include "core/image/image_limits.h"
 #include "core/materials/pbr_material.h"
 #include "importers/gltf/gltf_internal.h"
-#include "importers/gltf/gltf_tangents.h"
 
 namespace rt::gltf::detail {
 
@@ -163,8 +163,7 @@ MaterialMapper::MaterialMapper(const ImportContext &ctx, ir::Scene &scene)
 
 MaterialMapper::~MaterialMapper() = default;
 
-std::optional<int> MaterialMapper::irMaterial(int index, const ir::Mesh &mesh,
-                                              const std::string &primitivePath) {
+const MaterialMapper::Mapped &MaterialMapper::mapped(int index, const std::string &primitivePath) {
     if (index < -1 || index >= static_cast<int>(ctx_.model.materials.size()))
         ctx_.fail(primitivePath + ": material " + std::to_string(index) +
                   " does not exist (the file has " + std::to_string(ctx_.model.materials.size()) +
@@ -174,6 +173,19 @@ std::optional<int> MaterialMapper::irMaterial(int index, const ir::Mesh &mesh,
         slot.material = map(index, slot.hidden);
         slot.done = true;
     }
+    return slot;
+}
+
+int MaterialMapper::tangentTexCoord(int index, const std::string &primitivePath) {
+    const Mapped &slot = mapped(index, primitivePath);
+    if (slot.hidden || !slot.material.texel.pbr) return -1;
+    const ir::TextureRef &normal = slot.material.texel.pbr->normalTexture;
+    return normal.valid() ? normal.texCoord : -1;
+}
+
+std::optional<int> MaterialMapper::irMaterial(int index, const ir::Mesh &mesh,
+                                              const std::string &primitivePath) {
+    const Mapped &slot = mapped(index, primitivePath);
     if (slot.hidden) return std::nullopt;
     ir::Material mat = slot.material;
     std::string matPath = index < 0 ? std::string("the default material")
@@ -195,6 +207,12 @@ std::optional<int> MaterialMapper::irMaterial(int index, const ir::Mesh &mesh,
         changed |= usable(p.occlusionTexture, "occlusion", mean);
         changed |= usable(p.emissiveTexture, "emissive", mean);
         changed |= usable(p.transmissionTexture, "transmission", mean);
+        changed |= usable(p.clearcoatTexture, "clearcoat", mean);
+        changed |= usable(p.clearcoatRoughnessTexture, "clearcoat roughness", mean);
+        changed |= usable(p.sheenColorTexture, "sheen colour", mean);
+        changed |= usable(p.specularTexture, "specular", mean);
+        changed |= usable(p.specularColorTexture, "specular colour", mean);
+        changed |= usable(p.thicknessTexture, "thickness", mean);
         // Per-texel evaluation only where something varies over the surface
         bool alphaVaries = p.alphaMode != PbrMaterial::AlphaMode::Opaque &&
                            (mat.baseColorTexture.valid() || !mesh.colors.empty());
@@ -202,15 +220,7 @@ std::optional<int> MaterialMapper::irMaterial(int index, const ir::Mesh &mesh,
             mat.texel = {};
         else if (changed)
             mat.texel.pbr = std::make_shared<const PbrMaterial>(p);
-        if (mat.texel.pbr && p.normalTexture.valid() && mesh.tangents.empty()) {
-            // No TANGENT: generated into a copy of the mesh, which replaces it in the scene
-            for (ir::MeshPtr &m : scene_.meshes) {
-                if (m.get() != &mesh) continue;
-                auto withTangents = std::make_shared<ir::Mesh>(mesh);
-                if (generateTangents(*withTangents, p.normalTexture.texCoord)) m = withTangents;
-                break;
-            }
-        }
+        // Without TANGENT the mesh builder generated them (tangentTexCoord)
     }
     return scene_.addMaterial(mat);
 }
@@ -271,19 +281,10 @@ ir::Material MaterialMapper::map(int index, bool &hidden) {
     p.specular = clamp(number(specularExt, "specularFactor", 1.0), 0.0, 1.0);
     p.specularColor = numbers3(specularExt, "specularColorFactor", Rgb(1));
     for (int c = 0; c < 3; ++c) p.specularColor[c] = std::max(p.specularColor[c], 0.0);
-    // Their textures are not read (the factors are)
-    struct ExtTexture { const tinygltf::Value *ext; const char *name, *key; };
-    for (const ExtTexture &t : {ExtTexture{coatExt, "KHR_materials_clearcoat", "clearcoatTexture"},
-                                ExtTexture{coatExt, "KHR_materials_clearcoat", "clearcoatRoughnessTexture"},
-                                ExtTexture{coatExt, "KHR_materials_clearcoat", "clearcoatNormalTexture"},
-                                ExtTexture{sheenExt, "KHR_materials_sheen", "sheenColorTexture"},
-                                ExtTexture{sheenExt, "KHR_materials_sheen", "sheenRoughnessTexture"},
-                                ExtTexture{specularExt, "KHR_materials_specular", "specularTexture"},
-                                ExtTexture{specularExt, "KHR_materials_specular", "specularColorTexture"},
-                                ExtTexture{volumeExt, "KHR_materials_volume", "thicknessTexture"}})
-        if (textureRef(t.ext, t.key) >= 0)
-            ctx_.warning(path + ".extensions." + t.name + "." + t.key +
-                         " is not read (scadray maps the extension's factors only)");
+    // clearcoatNormalTexture has nothing to act on: the coat shares the base's normal
+    if (textureRef(coatExt, "clearcoatNormalTexture") >= 0)
+        ctx_.warning(path + ".extensions.KHR_materials_clearcoat.clearcoatNormalTexture" +
+                     " is not read (the coat uses the base's normal)");
 
     if (gm.alphaMode == "BLEND")
         p.alphaMode = PbrMaterial::AlphaMode::Blend;
@@ -341,6 +342,51 @@ ir::Material MaterialMapper::map(int index, bool &hidden) {
                         path + ".extensions.KHR_materials_transmission.transmissionTexture", false);
         mean.transmission *= textureMean(p.transmissionTexture, 0);
     }
+    // The extensions' textures, read per texel like the others (their values multiply the
+    // factors); a zero factor makes a texture moot
+    struct ExtTexture {
+        const tinygltf::Value *ext;
+        const char *name, *key;
+        ir::TextureRef PbrMaterial::*slot;
+        bool srgb;
+        bool needed;
+    };
+    for (const ExtTexture &e :
+         {ExtTexture{coatExt, "KHR_materials_clearcoat", "clearcoatTexture",
+                     &PbrMaterial::clearcoatTexture, false, p.clearcoat > 0},
+          ExtTexture{coatExt, "KHR_materials_clearcoat", "clearcoatRoughnessTexture",
+                     &PbrMaterial::clearcoatRoughnessTexture, false,
+                     p.clearcoat > 0 && p.clearcoatRoughness > 0},
+          ExtTexture{sheenExt, "KHR_materials_sheen", "sheenColorTexture",
+                     &PbrMaterial::sheenColorTexture, true, !p.sheenColor.isBlack()},
+          ExtTexture{sheenExt, "KHR_materials_sheen", "sheenRoughnessTexture",
+                     &PbrMaterial::sheenRoughnessTexture, false, false},
+          ExtTexture{specularExt, "KHR_materials_specular", "specularTexture",
+                     &PbrMaterial::specularTexture, false, p.specular > 0},
+          ExtTexture{specularExt, "KHR_materials_specular", "specularColorTexture",
+                     &PbrMaterial::specularColorTexture, true,
+                     p.specular > 0 && !p.specularColor.isBlack()},
+          ExtTexture{volumeExt, "KHR_materials_volume", "thicknessTexture",
+                     &PbrMaterial::thicknessTexture, false, p.thickness > 0}}) {
+        int index = textureRef(e.ext, e.key);
+        if (index < 0 || !e.needed) continue;  // sheen roughness: the mapping has no use for it
+        const tinygltf::Value &info = e.ext->Get(e.key);
+        tinygltf::ExtensionMap infoExts;
+        if (info.Has("extensions") && info.Get("extensions").IsObject())
+            for (const std::string &key : info.Get("extensions").Keys())
+                infoExts[key] = info.Get("extensions").Get(key);
+        p.*e.slot = textureInfo(index, static_cast<int>(number(&info, "texCoord", 0)), infoExts,
+                                path + ".extensions." + e.name + "." + e.key, e.srgb);
+    }
+    mean.clearcoat *= textureMean(p.clearcoatTexture, 0);
+    mean.clearcoatRoughness *= textureMean(p.clearcoatRoughnessTexture, 1);
+    for (int c = 0; c < 3; ++c) {
+        mean.sheenColor[c] *= textureMean(p.sheenColorTexture, c);
+        mean.specularColor[c] *= textureMean(p.specularColorTexture, c);
+    }
+    mean.specular *= textureMean(p.specularTexture, 3);
+    mean.thickness *= textureMean(p.thicknessTexture, 1);
+
     if (gm.normalTexture.index >= 0 && gm.normalTexture.scale != 0) {
         p.normalTexture = textureInfo(gm.normalTexture.index, gm.normalTexture.texCoord,
                                       gm.normalTexture.extensions, path + ".normalTexture", false);
@@ -376,12 +422,8 @@ ir::Material MaterialMapper::map(int index, bool &hidden) {
 
 double MaterialMapper::textureMean(const ir::TextureRef &ref, int channel) const {
     if (!ref.valid()) return 1;
-    const ir::Texture &img = *scene_.textures[static_cast<size_t>(ref.texture)];
-    size_t texels = img.rgba.size() / 4;
-    if (texels == 0) return 1;
-    double sum = 0;
-    for (size_t t = 0; t < texels; ++t) sum += img.rgba[t * 4 + static_cast<size_t>(channel)];
-    return sum / static_cast<double>(texels);
+    return ir::textureMean(*scene_.textures[static_cast<size_t>(ref.texture)])
+        [static_cast<size_t>(channel)];
 }
 
 const MaterialMapper::DecodedImage *MaterialMapper::decodedImage(int textureIndex,

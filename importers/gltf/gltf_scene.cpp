@@ -8,6 +8,7 @@
 
 #include "core/math/float_util.h"
 #include "importers/gltf/gltf_internal.h"
+#include "importers/gltf/gltf_tangents.h"
 
 namespace rt::gltf::detail {
 
@@ -355,7 +356,9 @@ class SceneBuilder {
         if (pose.posed()) {
             auto [it, isNew] = posedMeshes_.try_emplace(
                 std::tuple(meshIndex, primIndex, pose.weights, pose.skin), -1);
-            if (isNew) it->second = addMesh(loadPrimitive(meshIndex, primIndex, pose));
+            if (isNew)
+                it->second = addMesh(
+                    loadPrimitive(meshIndex, primIndex, pose, tangentSet(meshIndex, primIndex)));
             return it->second;
         }
         std::vector<int> &ids = meshIds_[meshIndex];
@@ -366,8 +369,9 @@ class SceneBuilder {
         // Primitives of different meshes built from the same accessors (CAD exporters make one
         // mesh per material) share one IR mesh too; compressed ones are decoded each
         const tinygltf::Primitive &prim = model_.meshes[meshIndex].primitives[primIndex];
+        int tangents = tangentSet(meshIndex, primIndex);
         if (prim.extensions.count("KHR_draco_mesh_compression") || !prim.targets.empty())
-            return id = addMesh(loadPrimitive(meshIndex, primIndex, pose));
+            return id = addMesh(loadPrimitive(meshIndex, primIndex, pose, tangents));
         auto attribute = [&](const char *name) {
             auto it = prim.attributes.find(name);
             return it == prim.attributes.end() ? -1 : it->second;
@@ -375,10 +379,23 @@ class SceneBuilder {
         PrimitiveKey key{attribute("POSITION"),   attribute("NORMAL"),
                          attribute("TEXCOORD_0"), attribute("TEXCOORD_1"),
                          attribute("TANGENT"),    attribute("COLOR_0"),
-                         prim.indices,            prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode};
+                         prim.indices,            prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode,
+                         tangents};
         auto [shared, isNew] = sharedMeshes_.try_emplace(key, -1);
-        if (isNew) shared->second = addMesh(loadPrimitive(meshIndex, primIndex, pose));
+        if (isNew) shared->second = addMesh(loadPrimitive(meshIndex, primIndex, pose, tangents));
         return id = shared->second;
+    }
+
+    /// The texture coordinate set a primitive's normal map reads, from which its mesh gets
+    /// tangents when the file gives none; -1 when its material has no normal map (or the
+    /// primitive is skipped for its mode or lack of POSITION, or materials are overridden).
+    int tangentSet(size_t meshIndex, size_t primIndex) {
+        if (options_.materialOverride) return -1;
+        const tinygltf::Primitive &prim = model_.meshes[meshIndex].primitives[primIndex];
+        int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+        if (mode < 4 || mode > 6 || !prim.attributes.count("POSITION")) return -1;
+        return materials_->tangentTexCoord(
+            prim.material, jsonPath("meshes", meshIndex) + jsonPath(".primitives", primIndex));
     }
 
     int addMesh(std::optional<ir::Mesh> mesh) {
@@ -387,7 +404,10 @@ class SceneBuilder {
         return static_cast<int>(scene_.meshes.size()) - 1;
     }
 
-    std::optional<ir::Mesh> loadPrimitive(size_t meshIndex, size_t primIndex, const Pose &pose) {
+    /// `tangentSet` >= 0: tangents generated from that texture coordinate set where the file
+    /// gives none (a normal-mapped material).
+    std::optional<ir::Mesh> loadPrimitive(size_t meshIndex, size_t primIndex, const Pose &pose,
+                                          int tangentSet) {
         const tinygltf::Mesh &gm = model_.meshes[meshIndex];
         const tinygltf::Primitive &prim = gm.primitives[primIndex];
         std::string path = jsonPath("meshes", meshIndex) + jsonPath(".primitives", primIndex);
@@ -599,6 +619,9 @@ class SceneBuilder {
                 mesh.colors[i] = rgba;
             }
         }
+
+        // A normal map without TANGENT: tangents generated (MikkTSpace's way) from its set
+        if (tangentSet >= 0 && mesh.tangents.empty()) generateTangents(mesh, tangentSet);
         return mesh;
     }
 
@@ -735,7 +758,7 @@ class SceneBuilder {
     static constexpr int kNotLoaded = -2;
     /// POSITION, NORMAL, TEXCOORD_0, TEXCOORD_1, TANGENT, COLOR_0 and index accessors and the
     /// mode of a primitive.
-    using PrimitiveKey = std::array<int, 8>;
+    using PrimitiveKey = std::array<int, 9>;  ///< attributes, indices, mode, tangent set
 
     const ImportContext &ctx_;
     const tinygltf::Model &model_;

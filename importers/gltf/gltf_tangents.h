@@ -12,10 +12,12 @@ namespace rt::gltf::detail {
 /// normals (face normals where the mesh has none) and texture coordinate set `texCoord`
 /// (0: uvs, 1: uvs1), in MikkTSpace's manner: per-corner tangent and bitangent from the
 /// triangle's uv gradients, projected onto the vertex normal's plane, weighted by the corner
-/// angle, summed per vertex; w is the bitangent's handedness with glTF's convention (v down).
-/// Unlike MikkTSpace it never splits a vertex (ir::Mesh keeps one tangent per position), so
-/// a vertex shared across a uv mirror seam averages both sides. Returns false (mesh untouched)
-/// when the mesh lacks that coordinate set.
+/// angle, summed per vertex group; w is the bitangent's handedness with glTF's convention (v
+/// down). As MikkTSpace does, the corners at a vertex are grouped by edge-connected triangles
+/// of the same uv orientation, and a vertex with several groups (a mirrored-uv seam) is split:
+/// the copies (every attribute the same, appended to the mesh; the triangles renumbered) get
+/// each group's own tangent and handedness. Returns false (mesh untouched) when the mesh lacks
+/// that coordinate set.
 bool generateTangents(ir::Mesh &mesh, int texCoord);
 
 }  // namespace rt::gltf::detail

@@ -164,7 +164,7 @@ ir::Scene Evaluator::evaluate(const SourceFile &main, SourceLoader &loader) {
     builtinFrame_->set(sym("$fn"), Value::number(0));
     builtinFrame_->set(sym("$fa"), Value::number(12));
     builtinFrame_->set(sym("$fs"), Value::number(2));
-    builtinFrame_->set(sym("$t"), Value::number(0));
+    builtinFrame_->set(sym("$t"), Value::number(time_));
     builtinFrame_->set(sym("$preview"), Value::boolean(false));
     builtinFrame_->set(sym("$vpt"),
                        Value::vector({Value::number(0), Value::number(0), Value::number(0)}));

@@ -151,6 +151,8 @@ class Evaluator {
     void setProgress(std::function<void(int64_t steps)> progress) {
         progress_ = std::move(progress);
     }
+    /// The animation time `$t` the builtins start with (0 outside an animation).
+    void setTime(double t) { time_ = t; }
     uint64_t randomSeed() { return ++randomCounter_; }
 
     /// The user module names on the call stack, innermost last (parent_module()).
@@ -465,6 +467,7 @@ class Evaluator {
     int64_t steps_ = 0;
     int64_t stepCap_;  ///< limits_.maxSteps, or the largest count when there is no cap
     std::function<void(int64_t)> progress_;
+    double time_ = 0;
     int64_t nodes_ = 0;
     int64_t geometryWork_ = 0;
     /// Adds `units` to the geometry work; beyond EvalLimits::maxGeometryWork a located error.

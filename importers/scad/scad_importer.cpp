@@ -48,6 +48,7 @@ ir::Scene importScadSource(const std::string &source, const std::string &virtual
         limits.maxLiveElements = opts.maxElements;
         Evaluator evaluator(diag, limits);
         evaluator.setProgress(opts.progress);
+        evaluator.setTime(opts.time);
         scene = evaluator.evaluate(*file, loader);
     });
     return scene;

@@ -32,6 +32,10 @@ struct ImportOptions {
     /// Called now and then during evaluation with the steps taken so far (on the evaluating
     /// thread); for a progress display.
     std::function<void(int64_t steps)> progress;
+    /// `$t`, the animation time: frame i of an N-frame animation is i * (1.0 / N), bit for bit
+    /// as `openscad --animate N` computes it (not i / N, which differs in the last bit for
+    /// some i, e.g. 3 of 10).
+    double time = 0;
 };
 
 /// Reads, parses and evaluates a .scad file. Non-fatal problems go to `diag`; fatal ones throw

@@ -134,8 +134,8 @@ inline std::string base64Encode(const std::vector<unsigned char> &data) {
     return out;
 }
 
-/// A 2x2 24-bit BMP, pixels given top row first as 0xRRGGBB.
-inline std::vector<unsigned char> bmp2x2(uint32_t tl, uint32_t tr, uint32_t bl, uint32_t br) {
+/// A w x h 32-bit BMP (with alpha), pixel(x, y) = 0xRRGGBBAA, y = 0 the top row.
+inline std::vector<unsigned char> bmp32(int w, int h, const std::function<uint32_t(int, int)> &pixel) {
     std::vector<unsigned char> b = {'B', 'M'};
     auto u32 = [&](uint32_t v) {
         for (int i = 0; i < 4; ++i) b.push_back(static_cast<unsigned char>(v >> (8 * i)));
@@ -144,31 +144,36 @@ inline std::vector<unsigned char> bmp2x2(uint32_t tl, uint32_t tr, uint32_t bl, 
         b.push_back(static_cast<unsigned char>(v));
         b.push_back(static_cast<unsigned char>(v >> 8));
     };
-    u32(14 + 40 + 16);
+    uint32_t size = static_cast<uint32_t>(w * h * 4);
+    u32(14 + 40 + size);
     u32(0);
     u32(14 + 40);
     u32(40);
-    u32(2);
-    u32(2);  // positive height: bottom row stored first
+    u32(static_cast<uint32_t>(w));
+    u32(static_cast<uint32_t>(h));  // bottom row first
     u16(1);
-    u16(24);
+    u16(32);
     u32(0);
-    u32(16);
+    u32(size);
     u32(2835);
     u32(2835);
     u32(0);
     u32(0);
-    for (uint32_t row : {0u, 1u}) {
-        uint32_t left = row == 0 ? bl : tl, right = row == 0 ? br : tr;
-        for (uint32_t px : {left, right}) {
-            b.push_back(static_cast<unsigned char>(px));        // B
-            b.push_back(static_cast<unsigned char>(px >> 8));   // G
-            b.push_back(static_cast<unsigned char>(px >> 16));  // R
+    for (int y = h - 1; y >= 0; --y)
+        for (int x = 0; x < w; ++x) {
+            uint32_t p = pixel(x, y);
+            b.push_back(static_cast<unsigned char>(p >> 8));   // B
+            b.push_back(static_cast<unsigned char>(p >> 16));  // G
+            b.push_back(static_cast<unsigned char>(p >> 24));  // R
+            b.push_back(static_cast<unsigned char>(p));        // A
         }
-        b.push_back(0);
-        b.push_back(0);  // pad the row to 4 bytes
-    }
     return b;
+}
+
+/// A 2x2 opaque BMP, pixels given top row first as 0xRRGGBB.
+inline std::vector<unsigned char> bmp2x2(uint32_t tl, uint32_t tr, uint32_t bl, uint32_t br) {
+    const uint32_t px[2][2] = {{tl, tr}, {bl, br}};
+    return bmp32(2, 2, [&](int x, int y) { return px[y][x] << 8 | 0xff; });
 }
 
 /// Binary data for a generated glTF, kept 4-byte aligned.

@@ -18,42 +18,6 @@
 namespace rt::gltf::test {
 namespace {
 
-/// A w x h 32-bit BMP (with alpha), pixel(x, y) = 0xRRGGBBAA, y = 0 the top row.
-std::vector<unsigned char> bmp32(int w, int h, const std::function<uint32_t(int, int)> &pixel) {
-    std::vector<unsigned char> b = {'B', 'M'};
-    auto u32 = [&](uint32_t v) {
-        for (int i = 0; i < 4; ++i) b.push_back(static_cast<unsigned char>(v >> (8 * i)));
-    };
-    auto u16 = [&](uint16_t v) {
-        b.push_back(static_cast<unsigned char>(v));
-        b.push_back(static_cast<unsigned char>(v >> 8));
-    };
-    uint32_t size = static_cast<uint32_t>(w * h * 4);
-    u32(14 + 40 + size);
-    u32(0);
-    u32(14 + 40);
-    u32(40);
-    u32(static_cast<uint32_t>(w));
-    u32(static_cast<uint32_t>(h));  // bottom row first
-    u16(1);
-    u16(32);
-    u32(0);
-    u32(size);
-    u32(2835);
-    u32(2835);
-    u32(0);
-    u32(0);
-    for (int y = h - 1; y >= 0; --y)
-        for (int x = 0; x < w; ++x) {
-            uint32_t p = pixel(x, y);
-            b.push_back(static_cast<unsigned char>(p >> 8));   // B
-            b.push_back(static_cast<unsigned char>(p >> 16));  // G
-            b.push_back(static_cast<unsigned char>(p >> 24));  // R
-            b.push_back(static_cast<unsigned char>(p));        // A
-        }
-    return b;
-}
-
 std::string bmpUri(const std::vector<unsigned char> &bmp) {
     return "data:image/bmp;base64," + base64Encode(bmp);
 }
@@ -202,6 +166,16 @@ void expectSameRgb(const Rgb &a, const Rgb &b, double tol, const std::string &wh
     EXPECT_NEAR(a.b, b.b, tol) << where;
 }
 
+/// Appends to `p` the facet over [x0, x1] x [0, 1] (glTF xy) of the plane with normal `n`
+/// through (xz, 0, 0): the relief a normal map encodes, as geometry.
+void addFacet(Prim &p, const Vec3 &n, double x0, double x1, double xz) {
+    auto z = [&](double x, double y) { return -(n.x * (x - xz) + n.y * y) / n.z; };
+    uint32_t b = static_cast<uint32_t>(p.pos.size() / 3);
+    for (auto [x, y] : {std::pair{x0, 0.0}, {x1, 0.0}, {x1, 1.0}, {x0, 1.0}})
+        for (double c : {x, y, z(x, y)}) p.pos.push_back(float(c));
+    for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) p.idx.push_back(b + i);
+}
+
 const std::string kGrey =
     R"({"pbrMetallicRoughness":{"baseColorFactor":[0.8,0.7,0.6,1],"metallicFactor":0,"roughnessFactor":1}})";
 
@@ -235,15 +209,7 @@ TEST(GltfTexel, NormalMappedQuadShadesLikeTheFacetsItEncodes) {
 
     // The same relief as geometry: band k is the plane through (k/4, 0, 0) with normal n_k
     Prim facets;
-    for (int k = 0; k < 4; ++k) {
-        const Vec3 &n = normals[k];
-        double x0 = k / 4.0, x1 = (k + 1) / 4.0;
-        auto z = [&](double x, double y) { return -(n.x * (x - x0) + n.y * y) / n.z; };
-        for (auto [x, y] : {std::pair{x0, 0.0}, {x1, 0.0}, {x1, 1.0}, {x0, 1.0}})
-            for (double c : {x, y, z(x, y)}) facets.pos.push_back(float(c));
-        uint32_t b = static_cast<uint32_t>(4 * k);
-        for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) facets.idx.push_back(b + i);
-    }
+    for (int k = 0; k < 4; ++k) addFacet(facets, normals[k], k / 4.0, (k + 1) / 4.0, k / 4.0);
     auto relief = importText(tmp, gltfOf({facets}, "[" + kGrey + "]", {}), "relief.gltf");
 
     View v;
@@ -264,6 +230,49 @@ TEST(GltfTexel, NormalMappedQuadShadesLikeTheFacetsItEncodes) {
     auto plain = importText(tmp, gltfOf({quad(0, 1, 0, 1, 0, 0)}, "[" + kGrey + "]", {}), "p.gltf");
     Image c = render(plain->scene, v);
     EXPECT_GT(std::abs(pixelAt(c, v, 0.875, 0.5).r - pixelAt(a, v, 0.875, 0.5).r), 0.02);
+}
+
+// (a') Mirrored texture coordinates: the two halves of a quad read the same normal-map texels
+// with u running opposite ways, so the relief is mirrored about the seam. The vertices on the
+// seam carry both handednesses: without MikkTSpace's vertex split their tangents average to
+// nothing and the halves shade wrongly near (and, interpolated, across) them.
+TEST(GltfTexel, MirroredUvSeamSplitsTangentsAndShadesLikeTheMirroredRelief) {
+    // One tilt everywhere in the texture: towards +u and a little +v' (up the image)
+    const int red = 200, green = 150;
+    double x = 2 * red / 255.0 - 1, y = 2 * green / 255.0 - 1;
+    int blue = static_cast<int>(std::lround((std::sqrt(1 - x * x - y * y) * 0.5 + 0.5) * 255));
+    Vec3 n = normalize(Vec3(x, y, 2 * blue / 255.0 - 1));
+    auto normalMap = bmp32(4, 4, [&](int, int) {
+        return uint32_t(red) << 24 | uint32_t(green) << 16 | uint32_t(blue) << 8 | 0xff;
+    });
+    // Six vertices: x = 0, 0.5, 1 at y = 0 and y = 1; u = x on the left, 1 - x on the right
+    Prim mirrored;
+    mirrored.pos = {0, 0, 0, 0.5f, 0, 0, 1, 0, 0, 0, 1, 0, 0.5f, 1, 0, 1, 1, 0};
+    mirrored.uv = {0, 1, 0.5f, 1, 0, 1, 0, 0, 0.5f, 0, 0, 0};
+    mirrored.idx = {0, 1, 4, 0, 4, 3, 1, 2, 5, 1, 5, 4};
+    std::string mapped = R"([{"pbrMetallicRoughness":{"baseColorFactor":[0.8,0.7,0.6,1],)"
+                         R"("metallicFactor":0,"roughnessFactor":1},"normalTexture":{"index":0}}])";
+    TempDir tmp;
+    auto flat = importText(tmp, gltfOf({mirrored}, mapped, {bmpUri(normalMap)}), "mirror.gltf");
+    ASSERT_EQ(flat->scene.meshes.size(), 1u);
+    EXPECT_EQ(flat->scene.meshes[0]->tangents.size(), 8u) << "the two seam vertices split";
+
+    // The relief as geometry: left half tilted by n, right half by n mirrored in x, meeting
+    // along x = 0.5
+    Prim ridge;
+    addFacet(ridge, n, 0, 0.5, 0.5);
+    addFacet(ridge, Vec3(-n.x, n.y, n.z), 0.5, 1, 0.5);
+    auto relief = importText(tmp, gltfOf({ridge}, "[" + kGrey + "]", {}), "ridge.gltf");
+
+    View v;
+    v.lightDir = Vec3(0.5, -0.3, -1);
+    Image a = render(flat->scene, v), b = render(relief->scene, v);
+    for (double px : {0.1, 0.3, 0.45, 0.55, 0.7, 0.9})
+        for (double py : {0.2, 0.5, 0.8})
+            expectSameRgb(pixelAt(a, v, px, py), pixelAt(b, v, px, py), 2e-3,
+                          "at " + std::to_string(px) + "," + std::to_string(py));
+    EXPECT_GT(std::abs(pixelAt(a, v, 0.3, 0.5).r - pixelAt(a, v, 0.7, 0.5).r), 0.02)
+        << "the halves face different ways";
 }
 
 // (b) A roughness texture in four bands equals four quads of those constant roughnesses.
@@ -297,6 +306,74 @@ TEST(GltfTexel, RoughnessTextureEqualsQuadsOfConstantRoughness) {
                           "band " + std::to_string(k));
         }
     EXPECT_GT(std::abs(pixelAt(ia, v, 0.125, 0.5).r - pixelAt(ia, v, 0.875, 0.5).r), 0.01);
+}
+
+/// A texture in four bands read by an extension (`ext`, its `textureKey` read in channel
+/// `channel` of 0xRRGGBBAA, multiplying `factorKey` set to 1) renders as four quads whose
+/// materials have the band values as factors.
+void expectBandsEqualFactors(const std::string &ext, const std::string &textureKey,
+                             const std::string &factorKey, int channel,
+                             const std::string &otherFactors) {
+    const int value[4] = {30, 100, 170, 240};
+    auto tex = bmp32(16, 4, [&](int x, int) {
+        uint32_t px = 0x808080ffu;
+        int shift = 24 - 8 * channel;
+        px = (px & ~(0xffu << shift)) | uint32_t(value[x / 4]) << shift;
+        return px;
+    });
+    const std::string base = R"("pbrMetallicRoughness":{"baseColorFactor":[0.3,0.4,0.5,1],)"
+                             R"("metallicFactor":0,"roughnessFactor":0.4})";
+    std::string textured = "[{" + base + R"(,"extensions":{")" + ext + R"(":{")" + factorKey +
+                           R"(":1,")" + textureKey + R"(":{"index":0})" + otherFactors + "}}}]";
+    std::string constants = "[";
+    std::vector<Prim> quads;
+    for (int k = 0; k < 4; ++k) {
+        constants += std::string(k ? "," : "") + "{" + base + R"(,"extensions":{")" + ext +
+                     R"(":{")" + factorKey + "\":" + std::to_string(value[k] / 255.0) +
+                     otherFactors + "}}}";
+        quads.push_back(quad(k / 4.0, (k + 1) / 4.0, 0, 1, 0, k));
+    }
+    constants += "]";
+    std::string used = ",\"extensionsUsed\":[\"" + ext + "\"]";
+    TempDir tmp;
+    auto a = importText(tmp, gltfOf({quad(0, 1, 0, 1, 0, 0)}, textured, {bmpUri(tex)}, used),
+                        "a.gltf");
+    auto b = importText(tmp, gltfOf(quads, constants, {}, used), "b.gltf");
+    EXPECT_EQ(a->diag.count(Severity::Warning), 0);
+    ASSERT_EQ(a->scene.materials.size(), 1u);
+    EXPECT_TRUE(a->scene.materials[0].texel.pbr) << "evaluated per texel";
+    View v;
+    v.lightDir = Vec3(0.1, 0.05, -1);  // a highlight on every band
+    v.cy = 0.45;
+    Image ia = render(a->scene, v), ib = render(b->scene, v);
+    for (int k = 0; k < 4; ++k)
+        for (double y : {0.25, 0.5, 0.75}) {
+            double x = (k + 0.5) / 4;
+            expectSameRgb(pixelAt(ia, v, x, y), pixelAt(ib, v, x, y), 1e-4,
+                          ext + " band " + std::to_string(k));
+        }
+    Rgb first = pixelAt(ia, v, 0.125, 0.5), last = pixelAt(ia, v, 0.875, 0.5);
+    EXPECT_GT(std::abs(first.r - last.r) + std::abs(first.b - last.b), 0.01) << "bands differ";
+    // The constant fields (POV-Ray export, check) are the mapping of the texture's mean
+    std::string meanMaterial = "[{" + base + R"(,"extensions":{")" + ext + R"(":{")" +
+                               factorKey + "\":" + std::to_string(135 / 255.0) + otherFactors +
+                               "}}}]";
+    auto c = importText(tmp, gltfOf({quad(0, 1, 0, 1, 0, 0)}, meanMaterial, {}, used), "c.gltf");
+    const ir::Finish &fa = a->scene.materials[0].finish, &fc = c->scene.materials[0].finish;
+    EXPECT_NEAR(fa.reflectionMin.r, fc.reflectionMin.r, 1e-6);
+    EXPECT_NEAR(fa.reflectionMax.r, fc.reflectionMax.r, 1e-6);
+    EXPECT_NEAR(fa.specular, fc.specular, 1e-6);
+    EXPECT_NEAR(fa.diffuse, fc.diffuse, 1e-6);
+}
+
+// (b') The textures of KHR_materials_clearcoat and _specular, per texel like the others
+TEST(GltfTexel, ClearcoatTextureEqualsQuadsOfConstantClearcoat) {
+    expectBandsEqualFactors("KHR_materials_clearcoat", "clearcoatTexture", "clearcoatFactor", 0,
+                            ",\"clearcoatRoughnessFactor\":0.1");
+}
+
+TEST(GltfTexel, SpecularTextureEqualsQuadsOfConstantSpecular) {
+    expectBandsEqualFactors("KHR_materials_specular", "specularTexture", "specularFactor", 3, "");
 }
 
 /// The checkerboard scene: a red quad (4 x 4 squares, alpha 0 or 1) at z = 0 over a grey
@@ -447,6 +524,26 @@ TEST(GltfTexel, GeneratedTangentsFollowUAndTheHandedness) {
     for (auto &uv : m.uvs) uv[1] = 1 - uv[1];
     ASSERT_TRUE(detail::generateTangents(m, 0));
     for (const auto &t : m.tangents) EXPECT_EQ(t[3], -1);
+    // Mirrored in u on the right half: the seam vertices 1 and 4 split, each side its own
+    // tangent (+x on the left, -x on the right) and handedness
+    ir::Mesh seam;
+    seam.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0),
+                      Vec3(0, 1, 0), Vec3(1, 1, 0), Vec3(2, 1, 0)};
+    seam.uvs = {{0, 1}, {1, 1}, {0, 1}, {0, 0}, {1, 0}, {0, 0}};
+    seam.colors.assign(6, {0.5f, 0.5f, 0.5f, 1});
+    seam.triangles = {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}};
+    ASSERT_TRUE(detail::generateTangents(seam, 0));
+    ASSERT_EQ(seam.positions.size(), 8u);
+    ASSERT_EQ(seam.tangents.size(), 8u);
+    EXPECT_EQ(seam.colors.size(), 8u);
+    for (size_t k = 0; k < seam.triangles.size(); ++k)
+        for (uint32_t v : seam.triangles[k]) {
+            const auto &t = seam.tangents[v];
+            bool left = k < 2;
+            EXPECT_NEAR(t[0], left ? 1 : -1, 1e-6) << "triangle " << k;
+            EXPECT_EQ(t[3], left ? 1 : -1) << "triangle " << k;
+        }
+    EXPECT_TRUE(seam.positions[6] == Vec3(1, 0, 0) && seam.positions[7] == Vec3(1, 1, 0));
     // No such coordinate set: untouched
     ir::Mesh bare;
     bare.positions = m.positions;
