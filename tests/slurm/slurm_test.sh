@@ -49,7 +49,7 @@ else
 fi
 
 # --- An animation of 3 frames and its video
-if ! "$scadray" render --help | grep -q -- --frames; then
+if [[ "$("$scadray" render --help)" != *--frames* ]]; then
     echo "NOTE: animation skipped: this scadray has no render --frames"
 elif ! command -v ffmpeg >/dev/null; then
     echo "NOTE: animation skipped: ffmpeg not installed (Debian package ffmpeg)"
@@ -60,6 +60,7 @@ $vpr = [60, 0, 30 + 180 * $t];
 $vpd = 12;
 rotate([0, 0, 360 * $t]) cube([4, 2, 1], center = true);
 EOF
+    mkdir -p "$work/single"
     "$scadray" render -q "$work/spin.scad" -W 48 -H 36 --frames 3 -o "$work/single/spin.png"
     if timeout "$limit" "$submit" frames --wait --frames 3 --fps 3 --scadray "$scadray" \
         -o "$work/anim/spin.png" "$work/spin.scad" -W 48 -H 36; then
