@@ -57,8 +57,10 @@ std::function<void(int64_t)> evaluationProgress() {
 
 }  // namespace
 
-void SceneArgs::addTo(CLI::App &cmd) {
-    cmd.add_option("scene", input, "Scene file (.scad, .gltf, .glb, .stl, .off)")->required();
+void SceneArgs::addTo(CLI::App &cmd, Positional positional) {
+    if (positional != Positional::None)
+        cmd.add_option("scene", input, "Scene file (.scad, .gltf, .glb, .stl, .off)")
+            ->required(positional == Positional::Required);
     cmd.add_option("-D,--define", defines, "Override a top-level variable: name=value");
     cmd.add_option("-L,--library", libraries, "Extra folder searched by include<> and use<>");
     cmd.add_option("--facets", facets,

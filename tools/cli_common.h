@@ -56,8 +56,12 @@ struct SceneArgs {
     std::string environment;  ///< -e as given
     double environmentRotate = 0;
 
-    /// Registers the positional scene and -D/-L on a subcommand.
-    void addTo(CLI::App &cmd);
+    /// Whether a subcommand takes the one positional scene: always, only with some of its
+    /// options (render --encode-only does without; the command checks), or never (report
+    /// takes many scenes of its own).
+    enum class Positional { Required, Optional, None };
+    /// Registers the positional scene (as `positional` says) and -D/-L on a subcommand.
+    void addTo(CLI::App &cmd, Positional positional = Positional::Required);
     /// Throws std::invalid_argument for a malformed -D.
     LoadOptions loadOptions(bool quiet) const;
 };

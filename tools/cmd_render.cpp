@@ -167,8 +167,7 @@ int runRender(const RenderArgs &a) {
 void addRenderCommand(CLI::App &app, std::function<int()> &action) {
     auto args = std::make_shared<RenderArgs>();
     CLI::App *cmd = app.add_subcommand("render", "Ray-trace a scene to an image (.png or .exr)");
-    args->scene.addTo(*cmd);
-    cmd->get_option("scene")->required(false);  // not with --encode-only; runRender checks
+    args->scene.addTo(*cmd, SceneArgs::Positional::Optional);  // --encode-only: runRender checks
     cmd->add_option("-o,--output", args->output,
                     "Output image; .png (sRGB) or .exr (linear float). Default: <scene>.png. "
                     "With --frames the frames' name: <name>_0000.png ...");

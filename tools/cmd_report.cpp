@@ -403,8 +403,7 @@ void addReportCommand(CLI::App &app, std::function<int()> &action) {
         "passed, 1 any different or failed, 2 bad usage)");
     // The scene options of every command, without its one positional scene: this command
     // takes many
-    args->check.scene.addTo(*cmd);
-    cmd->remove_option(cmd->get_option("scene"));
+    args->check.scene.addTo(*cmd, SceneArgs::Positional::None);
     cmd->add_option("scenes", args->inputs,
                     "Scene files, folders (their scene files) and lists of scenes (.txt or "
                     ".list, one path a line, relative to the list)");
