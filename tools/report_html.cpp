@@ -69,7 +69,7 @@ int checkRank(const CheckResult &r) { return !r.error.empty() ? 0 : r.pass ? 2 :
 
 /// A table cell with its sort key; an empty key sorts last whichever the direction.
 std::string cell(const std::string &text, const std::string &key, const char *cls = "num") {
-    return "<td class=\"" + std::string(cls) + "\" data-v=\"" + htmlEscape(key) + "\">" + text +
+    return "<td class=\"" + std::string(cls) + "\" data-v=\"" + xmlEscape(key) + "\">" + text +
            "</td>";
 }
 std::string emptyCell() { return "<td class=\"num\" data-v=\"\">&ndash;</td>"; }
@@ -259,9 +259,9 @@ constexpr int kMinPictureWidth = 320;
 
 std::string figure(const std::string &src, const std::string &caption, int width) {
     if (src.empty()) return "";
-    return "<figure><img src=\"" + htmlEscape(src) + "\" alt=\"" + htmlEscape(caption) +
+    return "<figure><img src=\"" + xmlEscape(src) + "\" alt=\"" + xmlEscape(caption) +
            "\" style=\"width: " + std::to_string(std::max(width, kMinPictureWidth)) +
-           "px\"><figcaption>" + htmlEscape(caption) + "</figcaption></figure>";
+           "px\"><figcaption>" + xmlEscape(caption) + "</figcaption></figure>";
 }
 
 std::string checkSection(const CheckResult &r, const PictureSources &pics) {
@@ -269,7 +269,7 @@ std::string checkSection(const CheckResult &r, const PictureSources &pics) {
     bool openscad = r.referee == "openscad";
     out += "<h3>" + std::string(openscad ? "OpenSCAD referee (geometry)" : "POV-Ray") + ": " +
            "<span class=\"verdict\">" + verdictName(checkRank(r)) + "</span></h3>\n";
-    if (!r.error.empty()) return out + "<pre class=\"err\">" + htmlEscape(r.error) + "</pre>\n";
+    if (!r.error.empty()) return out + "<pre class=\"err\">" + xmlEscape(r.error) + "</pre>\n";
     std::string ss = std::to_string(r.supersample);
     out += "<div class=\"pics\">" +
            figure(pics[0],
@@ -284,7 +284,7 @@ std::string checkSection(const CheckResult &r, const PictureSources &pics) {
                              "failed tiles",
                   r.width) +
            "</div>\n";
-    out += "<pre>" + htmlEscape(r.text) + "</pre>\n";
+    out += "<pre>" + xmlEscape(r.text) + "</pre>\n";
     return out;
 }
 
@@ -358,7 +358,7 @@ std::string reportHtml(const ReportPage &page) {
     std::string h;
     h += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
     h += "<meta name=\"generator\" content=\"scadray report\">\n";
-    h += "<title>" + htmlEscape(page.title) + "</title>\n<style>" + kStyle + "</style>\n";
+    h += "<title>" + xmlEscape(page.title) + "</title>\n<style>" + kStyle + "</style>\n";
     if (!page.chartJs.empty()) {
         // A "</script" inside the library would end the element early; the UMD build has
         // none, and any would be split so the page still parses
@@ -368,9 +368,9 @@ std::string reportHtml(const ReportPage &page) {
         h += "<script>" + js + "\n</script>\n";
     }
     h += "</head>\n<body>\n";
-    h += "<h1>" + htmlEscape(page.title) + "</h1>\n";
-    h += "<div class=\"meta\">" + htmlEscape(page.generated) +
-         (page.settings.empty() ? "" : " &middot; " + htmlEscape(page.settings)) + "</div>\n";
+    h += "<h1>" + xmlEscape(page.title) + "</h1>\n";
+    h += "<div class=\"meta\">" + xmlEscape(page.generated) +
+         (page.settings.empty() ? "" : " &middot; " + xmlEscape(page.settings)) + "</div>\n";
 
     // Summary
     int failed = counts[0] + counts[1];
@@ -413,8 +413,8 @@ std::string reportHtml(const ReportPage &page) {
         h += "<tr class=\"" + std::string(verdictClass(rank)) + "\" data-order=\"" +
              std::to_string(i) + "\" data-verdict=\"" + verdictClass(rank) + "\">";
         h += cell(verdictName(rank), std::to_string(rank), "verdict");
-        h += cell("<a href=\"#scene-" + std::to_string(i) + "\" title=\"" + htmlEscape(s.scene) +
-                      "\">" + htmlEscape(s.name()) + "</a>",
+        h += cell("<a href=\"#scene-" + std::to_string(i) + "\" title=\"" + xmlEscape(s.scene) +
+                      "\">" + xmlEscape(s.name()) + "</a>",
                   s.name(), "name");
         const CheckResult *p = s.povray && s.povray->error.empty() ? &*s.povray : nullptr;
         if (p) {
@@ -466,12 +466,12 @@ std::string reportHtml(const ReportPage &page) {
         int rank = s.rank();
         h += "<section id=\"scene-" + std::to_string(i) + "\" class=\"" + verdictClass(rank) +
              "\">\n<h2><span class=\"verdict\">" + verdictName(rank) + "</span> " +
-             htmlEscape(s.name()) + " <a href=\"#summary\" class=\"top\">&uarr; table</a></h2>\n";
-        if (!s.error.empty()) h += "<pre class=\"err\">" + htmlEscape(s.error) + "</pre>\n";
+             xmlEscape(s.name()) + " <a href=\"#summary\" class=\"top\">&uarr; table</a></h2>\n";
+        if (!s.error.empty()) h += "<pre class=\"err\">" + xmlEscape(s.error) + "</pre>\n";
         if (s.povray) h += checkSection(*s.povray, s.povrayPictures);
         if (s.openscad) h += checkSection(*s.openscad, s.openscadPictures);
         if (!s.openscadNote.empty())
-            h += "<p>OpenSCAD referee: " + htmlEscape(s.openscadNote) + "</p>\n";
+            h += "<p>OpenSCAD referee: " + xmlEscape(s.openscadNote) + "</p>\n";
         if (s.converge) {
             h += "<h3>Error against time (converge)</h3>\n";
             std::string title =
@@ -484,7 +484,7 @@ std::string reportHtml(const ReportPage &page) {
             } else if (!s.converge->svg.empty()) {
                 // As a picture, never inline: an SVG read from a folder must not run script
                 h += "<div class=\"plot\"><img src=\"data:image/svg+xml;base64," +
-                     base64(s.converge->svg) + "\" alt=\"" + htmlEscape(title) + "\"></div>\n";
+                     base64(s.converge->svg) + "\" alt=\"" + xmlEscape(title) + "\"></div>\n";
             }
         }
         h += "</section>\n";
@@ -494,33 +494,6 @@ std::string reportHtml(const ReportPage &page) {
     h += "<script type=\"application/json\" id=\"converge-data\">" + curves + "</script>\n";
     h += "<script>" + std::string(kScript) + "</script>\n</body>\n</html>\n";
     return h;
-}
-
-std::string htmlEscape(const std::string &text) {
-    std::string out;
-    out.reserve(text.size());
-    for (char c : text) {
-        switch (c) {
-            case '&':
-                out += "&amp;";
-                break;
-            case '<':
-                out += "&lt;";
-                break;
-            case '>':
-                out += "&gt;";
-                break;
-            case '"':
-                out += "&quot;";
-                break;
-            case '\'':
-                out += "&#39;";
-                break;
-            default:
-                out += c;
-        }
-    }
-    return out;
 }
 
 std::string urlPath(const std::string &path) {

@@ -75,8 +75,6 @@ std::string dataUri(const std::string &path);
 /// Standard base64 (RFC 4648, with padding).
 std::string base64(const std::string &bytes);
 
-/// `text` with &, <, >, " and ' escaped for HTML text and attribute values.
-std::string htmlEscape(const std::string &text);
 
 /// A relative path as a URL path: every byte but letters, digits, '-', '.', '_', '~' and
 /// '/' percent-encoded.

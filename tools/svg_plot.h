@@ -74,7 +74,8 @@ LogLogFit fitLogLog(const std::vector<double> &x, const std::vector<double> &y);
 /// 10^e as a tick label: "0.01", "1", "1000" for |e| <= 3, else "1e-5".
 std::string decadeLabel(int exponent);
 
-/// `text` with &, <, >, " and ' escaped for XML.
+/// `text` with &, <, >, " and ' escaped for XML, and so for HTML5 text and attribute values too
+/// (the report's page uses it).
 std::string xmlEscape(const std::string &text);
 
 }  // namespace rt::cli
