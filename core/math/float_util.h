@@ -17,8 +17,15 @@ constexpr double kMachineEpsilon = std::numeric_limits<double>::epsilon() * 0.5;
 /// Bound on the relative error of n chained floating-point operations (pbrt-v3 eq. 3.8).
 constexpr double gamma(int n) { return (n * kMachineEpsilon) / (1 - n * kMachineEpsilon); }
 
-inline double nextUp(double v) { return std::nextafter(v, kInfinity); }
-inline double nextDown(double v) { return std::nextafter(v, -kInfinity); }
+/// std::nextafter(v, +inf) and std::nextafter(v, -inf), without the call into libm (a spawned
+/// ray's origin takes three): one step of the bit pattern, which orders doubles of one sign.
+inline double nextUp(double v) {
+    if (!(v < kInfinity)) return v + v;  // +inf stays, a NaN stays a NaN
+    if (v == 0) return std::numeric_limits<double>::denorm_min();  // from +0 and from -0
+    uint64_t bits = std::bit_cast<uint64_t>(v);
+    return std::bit_cast<double>(v > 0 ? bits + 1 : bits - 1);
+}
+inline double nextDown(double v) { return -nextUp(-v); }
 
 /// a*b - c*d with one rounding error via FMA (Kahan; pbrt-v4 DifferenceOfProducts).
 inline double differenceOfProducts(double a, double b, double c, double d) {

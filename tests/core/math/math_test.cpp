@@ -2,10 +2,14 @@
 // Tests of the double-precision math layer: roots, matrices, degree trig, transforms, bounds.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 #include "core/math/bounds3.h"
 #include "core/math/degree_trig.h"
+#include "core/math/float_util.h"
 #include "core/math/quadratic.h"
 #include "core/math/rng.h"
 #include "core/math/transform.h"
@@ -168,6 +172,32 @@ TEST(Rng, ReproducibleAndUniform) {
         sum += u;
     }
     EXPECT_NEAR(sum / n, 0.5, 0.005);  // 5 standard errors
+}
+
+}  // namespace
+}  // namespace rt
+
+namespace rt {
+namespace {
+
+// nextUp and nextDown step the bit pattern instead of calling std::nextafter: the same double
+// for every input, signed zeros, denormals, the largest finite values and infinities included.
+TEST(FloatUtil, NextUpAndNextDownAreNextafter) {
+    std::vector<double> values = {0.0, -0.0, 1.0, -1.0, 0.1, -0.1, 1e-310, -1e-310,
+                                  std::numeric_limits<double>::denorm_min(),
+                                  -std::numeric_limits<double>::denorm_min(),
+                                  std::numeric_limits<double>::min(), -std::numeric_limits<double>::min(),
+                                  std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
+                                  kInfinity, -kInfinity, 2.0, 0.5, 1e300, -1e-300};
+    Rng rng(3);
+    for (int i = 0; i < 1000; ++i) values.push_back(std::ldexp(rng.uniform() - 0.5, static_cast<int>(rng.uniform() * 2000) - 1000));
+    for (double v : values) {
+        SCOPED_TRACE(v);
+        EXPECT_EQ(std::bit_cast<uint64_t>(nextUp(v)), std::bit_cast<uint64_t>(std::nextafter(v, kInfinity)));
+        EXPECT_EQ(std::bit_cast<uint64_t>(nextDown(v)), std::bit_cast<uint64_t>(std::nextafter(v, -kInfinity)));
+    }
+    EXPECT_TRUE(std::isnan(nextUp(std::nan(""))));
+    EXPECT_TRUE(std::isnan(nextDown(std::nan(""))));
 }
 
 }  // namespace
