@@ -102,18 +102,6 @@ bool Mat4::operator==(const Mat4 &o) const {
     return true;
 }
 
-Vec3 Mat4::transformPoint(const Vec3 &p) const {
-    return {m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
-            m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
-            m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]};
-}
-
-Vec3 Mat4::transformVector(const Vec3 &v) const {
-    return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z,
-            m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
-            m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
-}
-
 Mat4 Mat4::transposed() const {
     Mat4 r;
     for (int i = 0; i < 4; ++i)

@@ -27,8 +27,17 @@ struct Mat4 {
     bool operator==(const Mat4 &o) const;
     bool operator!=(const Mat4 &o) const { return !(*this == o); }
 
-    Vec3 transformPoint(const Vec3 &p) const;
-    Vec3 transformVector(const Vec3 &v) const;
+    // Inline: every ray is moved into the object space of each primitive it is tested against
+    Vec3 transformPoint(const Vec3 &p) const {
+        return {m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
+                m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
+                m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]};
+    }
+    Vec3 transformVector(const Vec3 &v) const {
+        return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z,
+                m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
+                m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
+    }
     Mat4 transposed() const;
     /// Determinant of the upper-left 3x3 block (orientation and volume scale of an affine map).
     double det3() const;
