@@ -10,53 +10,25 @@
 #include <stdexcept>
 
 #include "core/image/image_compare.h"
-#include "core/ir/scene_defaults.h"
 #include "core/render/render_plan.h"
-#include "core/render/render_scene.h"
 #include "core/render/renderer.h"
 #include "importers/scad/scad_importer.h"
+#include "integration/render_test_support.h"
 
 namespace rt {
 namespace {
 
-struct Compiled {
-    ir::Scene scene;
-    std::unique_ptr<RenderScene> rs;
-};
-
-scad::ImportOptions libraryOptions() {
-    scad::ImportOptions io;
-    io.libraryPaths = {std::string(SCADRAY_SOURCE_DIR) + "/scenes"};
-    return io;
-}
-
-Compiled compile(ir::Scene scene) {
-    Compiled c{std::move(scene), nullptr};
-    DiagnosticSink diag;
-    ir::completeScene(c.scene, diag);
-    c.rs = RenderScene::compile(c.scene, diag);
-    return c;
-}
-
-Compiled loadScene(const std::string &name) {
-    DiagnosticSink diag;
-    return compile(scad::importScad(std::string(SCADRAY_SOURCE_DIR) + "/scenes/" + name, diag,
-                                    libraryOptions()));
-}
+using test::Compiled;
+using test::compile;
+using test::libraryOptions;
+using test::loadScene;
+using test::options;
 
 Compiled loadText(const std::string &text) {
     DiagnosticSink diag;
     return compile(scad::importScadSource("use <scadray.scad>\n" + text,
                                           std::string(SCADRAY_SOURCE_DIR) + "/scenes/test.scad", diag,
                                           libraryOptions()));
-}
-
-RenderOptions options(int w, int h) {
-    RenderOptions o;
-    o.width = w;
-    o.height = h;
-    o.threads = 2;
-    return o;
 }
 
 RenderResult uniform(const RenderScene &rs, int w, int h, int spp) {

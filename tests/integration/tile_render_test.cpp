@@ -8,28 +8,15 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "core/ir/scene_defaults.h"
-#include "core/render/render_scene.h"
 #include "core/render/renderer.h"
-#include "importers/scad/scad_importer.h"
+#include "integration/render_test_support.h"
 
 namespace rt {
 namespace {
 
-struct Compiled {
-    ir::Scene scene;
-    std::unique_ptr<RenderScene> rs;
-};
-
-Compiled loadScene(const std::string &name) {
-    DiagnosticSink diag;
-    scad::ImportOptions io;
-    io.libraryPaths = {std::string(SCADRAY_SOURCE_DIR) + "/scenes"};
-    Compiled c{scad::importScad(std::string(SCADRAY_SOURCE_DIR) + "/scenes/" + name, diag, io), nullptr};
-    ir::completeScene(c.scene, diag);
-    c.rs = RenderScene::compile(c.scene, diag);
-    return c;
-}
+using test::Compiled;
+using test::loadScene;
+using test::options;
 
 /// Whether rows [begin, begin + band.height()) of `whole` are `band`, bit for bit.
 bool sameRows(const Image &whole, const Image &band, int begin) {
@@ -63,14 +50,6 @@ void expectBandsMatch(const RenderScene &rs, RenderOptions o, int tiles) {
     }
     // The bands' samples add up to the picture's (a band's bordering centres are not counted)
     EXPECT_EQ(samples, whole.samples);
-}
-
-RenderOptions options(int w, int h) {
-    RenderOptions o;
-    o.width = w;
-    o.height = h;
-    o.threads = 2;
-    return o;
 }
 
 TEST(TileRender, RowsOfTilesPartitionThePicture) {

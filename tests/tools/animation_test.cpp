@@ -3,28 +3,22 @@
 // $vp* camera (against `openscad --animate` where it is installed), single frames of a job
 // array, the ffmpeg video, --encode-only, and the usage errors.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <regex>
-#include <sstream>
 #include <vector>
 
 #include "core/image/image_io.h"
+#include "tools/cli_fixture.h"
 
 namespace rt {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct CliResult {
-    int exitCode;
-    std::string err;
-};
+using test::CliRun;
 
 bool onPath(const std::string &program) {
     return std::system(("command -v " + program + " >/dev/null 2>&1").c_str()) == 0;
@@ -46,37 +40,10 @@ $vpd = 50;
 cube([10, 3, 2]);
 )";
 
-class Animation : public ::testing::Test {
+class Animation : public test::CliTest {
   protected:
-    void SetUp() override {
-        dir = fs::temp_directory_path() /
-              (std::string("scadray_anim_") + std::to_string(::getpid()) + "_" +
-               ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-    }
-    void TearDown() override { fs::remove_all(dir); }
+    Animation() : CliTest("scadray_anim_") {}
 
-    /// scadray with `args`; `env` goes before the binary (e.g. "PATH=/nonexistent").
-    CliResult run(const std::string &args, const std::string &env = "") {
-        std::string cmd = (env.empty() ? "" : "/usr/bin/env " + env + " ") +
-                          std::string(SCADRAY_BINARY) + " " + args + " >/dev/null 2>" +
-                          (dir / "stderr").string();
-        int status = std::system(cmd.c_str());
-        return CliResult{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "stderr")};
-    }
-    std::string write(const std::string &name, const std::string &text) {
-        fs::path p = dir / name;
-        std::ofstream(p) << text;
-        return p.string();
-    }
-    std::string path(const std::string &name) const { return (dir / name).string(); }
-    static std::string slurp(const fs::path &p) {
-        std::ifstream in(p, std::ios::binary);
-        std::stringstream ss;
-        ss << in.rdbuf();
-        return ss.str();
-    }
     /// Files in the test folder, sorted.
     std::vector<std::string> files() const {
         std::vector<std::string> names;
@@ -92,7 +59,6 @@ class Animation : public ::testing::Test {
         if (std::system(cmd.c_str()) != 0) return -1;
         return std::atoi(slurp(out).c_str());
     }
-    fs::path dir;
 };
 
 /// Mean x of the pixels that differ from the top-left (background) pixel; -1 when none.
@@ -128,11 +94,11 @@ double differingShare(const Image &a, const Image &b, double tol = 0.02) {
 TEST_F(Animation, FramesAreNamedAndCounted) {
     std::string scene = write("box.scad", kSlidingBox);
     // Without ffmpeg on PATH: the frames, one warning naming ffmpeg, exit 0
-    CliResult r = run("render -q -W 16 -H 12 --frames 3 " + scene + " -o " + path("a.png"),
+    CliRun r = run("render -q -W 16 -H 12 --frames 3 " + scene + " -o " + path("a.png"),
                 "PATH=/nonexistent");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ((std::vector<std::string>{"a_0000.png", "a_0001.png", "a_0002.png", "box.scad",
-                                        "stderr"}),
+                                        "stderr", "stdout"}),
               files());
     std::regex warning("warning:.*ffmpeg");
     auto begin = std::sregex_iterator(r.err.begin(), r.err.end(), warning);
@@ -154,7 +120,7 @@ TEST_F(Animation, FramesAreNamedAndCounted) {
 
 TEST_F(Animation, TimeMovesTheGeometry) {
     std::string scene = write("box.scad", kSlidingBox);
-    CliResult r = run("render -q -W 64 -H 48 --frames 4 " + scene + " -o " + path("a.png"),
+    CliRun r = run("render -q -W 64 -H 48 --frames 4 " + scene + " -o " + path("a.png"),
                 "PATH=/nonexistent");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     // The box moves right by 5 units a frame; the camera stays
@@ -172,7 +138,7 @@ TEST_F(Animation, TimeMovesTheGeometry) {
 
 TEST_F(Animation, ViewportVariablesMoveTheCamera) {
     std::string scene = write("turn.scad", kTurningCamera);
-    CliResult r = run("render -q -W 48 -H 36 --frames 4 " + scene + " -o " + path("a.png"),
+    CliRun r = run("render -q -W 48 -H 36 --frames 4 " + scene + " -o " + path("a.png"),
                 "PATH=/nonexistent");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     Image f0 = readImage(path("a_0000.png")), f1 = readImage(path("a_0001.png"));
@@ -189,7 +155,7 @@ TEST_F(Animation, ViewportVariablesMoveTheCamera) {
 
 TEST_F(Animation, OneFrameOfAJobArrayEqualsTheFullRun) {
     std::string scene = write("turn.scad", kTurningCamera);
-    CliResult r = run("render -q -W 40 -H 30 -s 4 --frames 5 " + scene + " -o " + path("all.png"),
+    CliRun r = run("render -q -W 40 -H 30 -s 4 --frames 5 " + scene + " -o " + path("all.png"),
                 "PATH=/nonexistent");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     r = run("render -q -W 40 -H 30 -s 4 --frames 5 --frame 3 " + scene + " -o " + path("one.png"));
@@ -197,7 +163,7 @@ TEST_F(Animation, OneFrameOfAJobArrayEqualsTheFullRun) {
     // Only that frame, and no video
     EXPECT_EQ((std::vector<std::string>{"all_0000.png", "all_0001.png", "all_0002.png",
                                         "all_0003.png", "all_0004.png", "one_0003.png", "stderr",
-                                        "turn.scad"}),
+                                        "stdout", "turn.scad"}),
               files());
     EXPECT_EQ(slurp(dir / "all_0003.png"), slurp(dir / "one_0003.png"));
     EXPECT_EQ(differingShare(readImage(path("all_0003.png")), readImage(path("one_0003.png")), 0), 0);
@@ -205,12 +171,13 @@ TEST_F(Animation, OneFrameOfAJobArrayEqualsTheFullRun) {
 
 TEST_F(Animation, FailingFrameIsNamed) {
     std::string scene = write("fails.scad", "assert($t < 0.5, \"too late\");\ncube(1);\n");
-    CliResult r = run("render -q -W 8 -H 6 --frames 4 " + scene + " -o " + path("a.png"));
+    CliRun r = run("render -q -W 8 -H 6 --frames 4 " + scene + " -o " + path("a.png"));
     EXPECT_EQ(r.exitCode, 1) << r.err;
     EXPECT_NE(r.err.find("frame 2 of 4"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("too late"), std::string::npos) << r.err;
     // The frames before it are written, nothing of it or after it (no temporary left)
-    EXPECT_EQ((std::vector<std::string>{"a_0000.png", "a_0001.png", "fails.scad", "stderr"}),
+    EXPECT_EQ((std::vector<std::string>{"a_0000.png", "a_0001.png", "fails.scad", "stderr",
+                                        "stdout"}),
               files());
 }
 
@@ -219,7 +186,7 @@ TEST_F(Animation, VideoHasEveryFrame) {
         GTEST_SKIP() << "ffmpeg (with ffprobe) is not installed";
     std::string scene = write("box.scad", kSlidingBox);
     // An odd width and height: H.264 in yuv420p needs them even
-    CliResult r = run("render -q -W 17 -H 13 --frames 5 --fps 10 " + scene + " -o " + path("a.png"));
+    CliRun r = run("render -q -W 17 -H 13 --frames 5 --fps 10 " + scene + " -o " + path("a.png"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(videoFrames(path("a.mp4")), 5);
     r = run("render -q -W 17 -H 13 --frames 5 --video " + path("b.gif") + " " + scene + " -o " +
@@ -238,14 +205,14 @@ TEST_F(Animation, EncodeOnlyUsesTheFramesThere) {
     std::string scene = write("box.scad", kSlidingBox);
     // Frames rendered one by one, as a job array does, then encoded by a last job
     for (int i = 0; i < 4; ++i) {
-        CliResult r = run("render -q -W 16 -H 12 --frames 4 --frame " + std::to_string(i) + " " +
+        CliRun r = run("render -q -W 16 -H 12 --frames 4 --frame " + std::to_string(i) + " " +
                     scene + " -o " + path("a.png"));
         ASSERT_EQ(r.exitCode, 0) << r.err;
     }
     EXPECT_FALSE(fs::exists(dir / "a.mp4"));
     // A stray later frame is not taken in
     fs::copy_file(dir / "a_0000.png", dir / "a_0004.png");
-    CliResult r = run("render --frames 4 --encode-only -o " + path("a.png"));
+    CliRun r = run("render --frames 4 --encode-only -o " + path("a.png"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(videoFrames(path("a.mp4")), 4);
     // A missing frame is named, and no video is written
@@ -277,10 +244,10 @@ TEST_F(Animation, BadCombinationsAreUsageErrors) {
              std::string("--frames 4 --encode-only"),              // which frames?
              "--frames 4",                                         // no scene
          }) {
-        CliResult r = run("render -q -W 8 -H 6 " + args);
+        CliRun r = run("render -q -W 8 -H 6 " + args);
         EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.err;
     }
-    EXPECT_EQ((std::vector<std::string>{"box.scad", "stderr", "tri.off"}), files());
+    EXPECT_EQ((std::vector<std::string>{"box.scad", "stderr", "stdout", "tri.off"}), files());
 }
 
 /// `openscad --animate N` as the oracle: the same $t (bit for bit: 3 * (1.0 / 10) is not
@@ -317,7 +284,7 @@ else
     ASSERT_EQ(theirs.size(), 10u);
     EXPECT_NE(theirs[3].find("divided = false"), std::string::npos) << theirs[3];
 
-    CliResult r = run("render -W 64 -H 48 --facets openscad --frames 10 " + scene + " -o " +
+    CliRun r = run("render -W 64 -H 48 --facets openscad --frames 10 " + scene + " -o " +
                 path("ours.png"), "PATH=/nonexistent");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(echoes(r.err), theirs);
@@ -326,7 +293,7 @@ else
     // scadray's frame k; and, to show the comparison can fail, frame 3's mesh in frame 1
     auto theirsFrame = [&](int k, int meshFrame) {
         std::string out = "theirs" + std::to_string(k) + "m" + std::to_string(meshFrame) + ".png";
-        CliResult t = run("render -q -W 64 -H 48 --facets openscad --frames 10 --frame " +
+        CliRun t = run("render -q -W 64 -H 48 --facets openscad --frames 10 --frame " +
                     std::to_string(k) + " " + scene + " -o " + path(out) + " -D 'mesh=\"" +
                     path("g0000" + std::to_string(meshFrame) + ".stl") + "\"'");
         EXPECT_EQ(t.exitCode, 0) << t.err;

@@ -2,60 +2,24 @@
 // End-to-end tests of the scadray binary: every scene renders, bad input gives a located error
 // with a non-zero exit code, and no output file appears (or an old one survives) on failure.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <vector>
 
 #include "core/image/image_io.h"
+#include "tools/cli_fixture.h"
 
 namespace rt {
 namespace {
 
 namespace fs = std::filesystem;
+using test::CliRun;
 
-struct CliRun {
-    int exitCode;
-    std::string err;
-    std::string out;
-};
-
-class Cli : public ::testing::Test {
+class Cli : public test::CliTest {
   protected:
-    void SetUp() override {
-        dir = fs::temp_directory_path() /
-              (std::string("scadray_cli_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-    }
-    void TearDown() override { fs::remove_all(dir); }
-
-    CliRun run(const std::string &args) {
-        std::string cmd = std::string(SCADRAY_BINARY) + " " + args + " >" + (dir / "stdout").string() +
-                          " 2>" + (dir / "stderr").string();
-        int status = std::system(cmd.c_str());
-        CliRun r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "stderr"), slurp(dir / "stdout")};
-        return r;
-    }
-    std::string write(const std::string &name, const std::string &text) {
-        fs::path p = dir / name;
-        std::ofstream(p) << text;
-        return p.string();
-    }
-    static std::string slurp(const fs::path &p) {
-        std::ifstream in(p);
-        std::stringstream ss;
-        ss << in.rdbuf();
-        return ss.str();
-    }
-    static std::string scene(const std::string &name) {
-        return std::string(SCADRAY_SOURCE_DIR) + "/scenes/" + name;
-    }
-    fs::path dir;
+    Cli() : CliTest("scadray_cli_") {}
 };
 
 TEST_F(Cli, EverySceneRenders) {
@@ -316,12 +280,10 @@ TEST_F(Cli, CompareExitCodes) {
 
 TEST_F(Cli, CheckWithoutPovRayIsAClearError) {
     // PATH without povray: the check cannot run, and says why
-    std::string cmd = "env PATH=/nonexistent " + std::string(SCADRAY_BINARY) + " check " +
-                      scene("csg_part.scad") + " -o " + (dir / "chk").string() + " 2>" +
-                      (dir / "err").string();
-    int status = std::system(cmd.c_str());
-    EXPECT_EQ(WEXITSTATUS(status), 2);
-    EXPECT_NE(slurp(dir / "err").find("povray"), std::string::npos);
+    CliRun r = run("check " + scene("csg_part.scad") + " -o " + (dir / "chk").string(),
+                   "PATH=/nonexistent");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("povray"), std::string::npos);
 }
 
 TEST_F(Cli, MeshFilesRenderOnTheirOwn) {

@@ -2,7 +2,6 @@
 // `scadray converge`: the log-log slope fit and the SVG plot as units, and the command end to
 // end on a small soft-shadow scene (CSV rows, falling error, option errors, no POV-Ray).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -11,12 +10,14 @@
 #include <sstream>
 #include <vector>
 
+#include "tools/cli_fixture.h"
 #include "tools/svg_plot.h"
 
 namespace rt::cli {
 namespace {
 
 namespace fs = std::filesystem;
+using test::CliRun;
 
 // --- Slope fit -----------------------------------------------------------------------------
 
@@ -232,33 +233,13 @@ TEST(LogLogPlot, WriteIsAtomic) {
 
 // --- The command end to end -------------------------------------------------------------------
 
-struct ConvergeRun {
-    int exitCode;
-    std::string out, err;
-};
-
-class Converge : public ::testing::Test {
+class Converge : public test::CliTest {
   protected:
-    void SetUp() override {
-        dir = fs::temp_directory_path() /
-              (std::string("scadray_converge_") +
-               ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-    }
-    void TearDown() override { fs::remove_all(dir); }
+    Converge() : CliTest("scadray_converge_") {}
 
-    ConvergeRun run(const std::string &args, const std::string &env = "") {
-        std::string cmd = env + std::string(SCADRAY_BINARY) + " converge " + args + " >" +
-                          (dir / "stdout").string() + " 2>" + (dir / "stderr").string();
-        int status = std::system(cmd.c_str());
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "stdout"),
-                slurp(dir / "stderr")};
-    }
-    std::string write(const std::string &name, const std::string &text) {
-        fs::path p = dir / name;
-        std::ofstream(p) << text;
-        return p.string();
+    /// `scadray converge` with `args`.
+    CliRun run(const std::string &args, const std::string &env = "") const {
+        return CliTest::run("converge " + args, env);
     }
     /// A sphere over a floor under a jittered 4x4 area light: soft shadows, so the error of
     /// each sample count is Monte Carlo noise that falls with more samples.
@@ -270,12 +251,6 @@ class Converge : public ::testing::Test {
                      "jitter=true);\n"
                      "translate([-5,-5,-1]) cube([10,10,1]);\n"
                      "translate([0,0,3]) sphere(1.2, $fn=32);\n");
-    }
-    static std::string slurp(const fs::path &p) {
-        std::ifstream in(p);
-        std::stringstream ss;
-        ss << in.rdbuf();
-        return ss.str();
     }
     /// Rows of a CSV file below its header, split at commas (empty fields kept).
     static std::vector<std::vector<std::string>> rows(const std::string &csv, std::string *header) {
@@ -294,13 +269,12 @@ class Converge : public ::testing::Test {
         }
         return out;
     }
-    fs::path dir;
 };
 
 TEST_F(Converge, SoftShadowErrorFallsWithSamples) {
     std::string scene = softShadows();
     fs::path out = dir / "out";
-    ConvergeRun r =
+    CliRun r =
         run("-W 32 -H 24 --max-samples 8 -t 2 --seed 3 -o " + out.string() + " " + scene);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     std::string header;
@@ -336,7 +310,7 @@ TEST_F(Converge, SoftShadowErrorFallsWithSamples) {
 TEST_F(Converge, BudgetStopsDoubling) {
     std::string scene = softShadows();
     fs::path out = dir / "out";
-    ConvergeRun r =
+    CliRun r =
         run("-W 32 -H 24 --max-samples 8 -t 1 --budget 1e-9 -o " + out.string() + " " + scene);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     std::string header;
@@ -352,7 +326,7 @@ TEST_F(Converge, DeterministicSceneSaysSo) {
                               "camera(location=[0,-10,0], look_at=[0,-20,0]);\n"
                               "background(color=[0.2,0.3,0.4]);\ncube(1);\n");
     fs::path out = dir / "out";
-    ConvergeRun r = run("-W 16 -H 12 --max-samples 4 -t 1 -o " + out.string() + " " + scene);
+    CliRun r = run("-W 16 -H 12 --max-samples 4 -t 1 -o " + out.string() + " " + scene);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("all errors are ~0"), std::string::npos) << r.out;
     EXPECT_EQ(r.out.find("nan"), std::string::npos) << r.out;
@@ -384,7 +358,7 @@ TEST_F(Converge, BadOptionsFailClearlyAndWriteNothing) {
     };
     for (const auto &c : cases) {
         SCOPED_TRACE(c.args);
-        ConvergeRun r = run(c.args + " -o " + out.string() + " " + scene);
+        CliRun r = run(c.args + " -o " + out.string() + " " + scene);
         EXPECT_EQ(r.exitCode, 2);
         EXPECT_NE(r.err.find(c.mention), std::string::npos) << r.err;
         EXPECT_FALSE(fs::exists(out));
@@ -393,7 +367,7 @@ TEST_F(Converge, BadOptionsFailClearlyAndWriteNothing) {
               std::string::npos);
     // A scene that does not load: a located error, exit 1, nothing written
     std::string bad = write("bad.scad", "cube(1);\nsphere(r=2;\n");
-    ConvergeRun r = run("-W 8 -H 6 --max-samples 2 -o " + out.string() + " " + bad);
+    CliRun r = run("-W 8 -H 6 --max-samples 2 -o " + out.string() + " " + bad);
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.err.find("bad.scad:2:"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(out));
@@ -402,9 +376,9 @@ TEST_F(Converge, BadOptionsFailClearlyAndWriteNothing) {
 TEST_F(Converge, PovRayMissingIsANote) {
     std::string scene = softShadows();
     fs::path out = dir / "out";
-    ConvergeRun r =
+    CliRun r =
         run("-W 16 -H 12 --max-samples 2 -t 1 --povray -o " + out.string() + " " + scene,
-            "env PATH=/nonexistent ");
+            "PATH=/nonexistent");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.err.find("POV-Ray not installed; skipped"), std::string::npos) << r.err;
     std::string header;
@@ -418,7 +392,7 @@ TEST_F(Converge, AgainstPovRay) {
         GTEST_SKIP() << "POV-Ray (povray) is not installed";
     std::string scene = softShadows();
     fs::path out = dir / "out";
-    ConvergeRun r = run("-W 32 -H 24 --max-samples 4 -t 2 --povray --supersample 2 -o " +
+    CliRun r = run("-W 32 -H 24 --max-samples 4 -t 2 --povray --supersample 2 -o " +
                         out.string() + " " + scene);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     std::string header;

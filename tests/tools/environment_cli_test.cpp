@@ -4,51 +4,31 @@
 // read through OpenImageIO) is seen and reflected, and a bad environment file is an error that names it
 // and writes nothing.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "core/image/image_io.h"
+#include "tools/cli_fixture.h"
 
 namespace rt {
 namespace {
 
 namespace fs = std::filesystem;
 
-class EnvironmentCli : public ::testing::Test {
+class EnvironmentCli : public test::CliTest {
   protected:
-    void SetUp() override {
-        dir = fs::temp_directory_path() /
-              (std::string("scadray_env_") +
-               ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-    }
-    void TearDown() override { fs::remove_all(dir); }
+    EnvironmentCli() : CliTest("scadray_env_") {}
 
-    /// Runs scadray with `args`; returns the exit code, stderr in `err`.
-    int run(const std::string &args, std::string *err) {
-        std::string cmd = std::string(SCADRAY_BINARY) + " " + args + " 2>" + (dir / "err").string();
-        int status = std::system(cmd.c_str());
-        std::ifstream in(dir / "err");
-        std::stringstream ss;
-        ss << in.rdbuf();
-        *err = ss.str();
-        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    }
     Image render(const std::string &extra) {
-        std::string out = (dir / "out.png").string(), err;
-        EXPECT_EQ(run("render -q -W 64 -H 48 -s 1 " + sphere + " -o " + out + " " + extra, &err), 0)
-            << err;
+        std::string out = (dir / "out.png").string();
+        test::CliRun r = run("render -q -W 64 -H 48 -s 1 " + sphere + " -o " + out + " " + extra);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
         return readImage(out);
     }
-    std::string sphere = std::string(SCADRAY_SOURCE_DIR) + "/scenes/gltf/mirror_sphere.gltf";
-    fs::path dir;
+    std::string sphere = scene("gltf/mirror_sphere.gltf");
 };
 
 /// Mean green over a small square of pixels around (x, y).
@@ -102,9 +82,9 @@ TEST_F(EnvironmentCli, BadEnvironmentFileIsAnErrorNamingIt) {
     std::ofstream(bad) << "#?RADIANCE\nnot really\n";
     std::string out = (dir / "never.png").string();
     for (const std::string &env : {bad, (dir / "missing.exr").string()}) {
-        std::string err;
-        EXPECT_EQ(run("render -q -W 8 -H 8 " + sphere + " -o " + out + " -e " + env, &err), 1) << err;
-        EXPECT_NE(err.find(fs::path(env).filename().string()), std::string::npos) << err;
+        test::CliRun r = run("render -q -W 8 -H 8 " + sphere + " -o " + out + " -e " + env);
+        EXPECT_EQ(r.exitCode, 1) << r.err;
+        EXPECT_NE(r.err.find(fs::path(env).filename().string()), std::string::npos) << r.err;
         EXPECT_FALSE(fs::exists(out));
     }
 }

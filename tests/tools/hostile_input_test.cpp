@@ -29,41 +29,20 @@
 #include "core/system/subprocess.h"
 #include "core/system/temp_file.h"
 #include "tools/cli_common.h"
-
-#include "support/temp_dir_test.h"
+#include "tools/cli_fixture.h"
 
 namespace rt {
 namespace {
 
 namespace fs = std::filesystem;
 
-class Hostile : public test::TempDirTest {
+class Hostile : public test::CliTest {
   protected:
-    Hostile() : TempDirTest("scadray_hostile_") {}
+    Hostile() : CliTest("scadray_hostile_") {}
 
-    struct Run {
-        int exitCode;
-        std::string err, out;
-    };
-    Run run(const std::string &args) {
-        std::string cmd = std::string(SCADRAY_BINARY) + " " + args + " >" +
-                          (dir / "stdout").string() + " 2>" + (dir / "stderr").string() +
-                          " </dev/null";
-        int status = std::system(cmd.c_str());
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "stderr"),
-                slurp(dir / "stdout")};
-    }
-    std::string write(const std::string &name, const std::string &text) {
-        fs::path p = dir / name;
-        std::ofstream(p, std::ios::binary) << text;
-        return p.string();
-    }
-    static std::string slurp(const fs::path &p) {
-        std::ifstream in(p, std::ios::binary);
-        std::stringstream ss;
-        ss << in.rdbuf();
-        return ss.str();
-    }
+    using Run = test::CliRun;
+    /// scadray with `args` and nothing on stdin.
+    Run run(const std::string &args) const { return CliTest::run(args + " </dev/null"); }
     /// Files in the test folder other than the ones named.
     std::vector<std::string> strayFiles(const std::vector<std::string> &expected) const {
         std::vector<std::string> stray;

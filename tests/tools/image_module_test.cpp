@@ -3,16 +3,14 @@
 // needs libOpenImageIO; it comes with the module scadray_oiio.so, loaded for non-PNG images only,
 // and a missing module is a clear error naming it, the paths tried and the file.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
-#include "support/temp_dir_test.h"
+#include "tools/cli_fixture.h"
 
 namespace {
 
@@ -32,13 +30,6 @@ std::string neededLibraries(const std::string &binary) {
 
 bool haveReadelf() { return std::system("readelf --version >/dev/null 2>&1") == 0; }
 
-std::string slurp(const fs::path &p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
 TEST(ImageModule, NeitherScadrayNorRtCoreLinksOpenImageIO) {
     if (!haveReadelf()) GTEST_SKIP() << "readelf (binutils) is not installed";
     // The module does: the check can see a library when it is there
@@ -54,21 +45,18 @@ TEST(ImageModule, NeitherScadrayNorRtCoreLinksOpenImageIO) {
     EXPECT_EQ(self.find("libOpenImageIO"), std::string::npos) << self;
 }
 
-class ImageModuleCli : public rt::test::TempDirTest {
+class ImageModuleCli : public rt::test::CliTest {
   protected:
-    ImageModuleCli() : TempDirTest("scadray_image_module_") {}
+    ImageModuleCli() : CliTest("scadray_image_module_") {}
     void SetUp() override {
-        TempDirTest::SetUp();
-        scene = (dir / "cube.scad").string();
-        std::ofstream(scene) << "cube(1);\n";
+        CliTest::SetUp();
+        scene = write("cube.scad", "cube(1);\n");
     }
 
     /// Exit code and stderr of scadray run with `env` before it.
-    std::pair<int, std::string> run(const std::string &env, const std::string &args) {
-        std::string cmd = env + " " + SCADRAY_BINARY + " " + args + " >/dev/null 2>" +
-                          (dir / "stderr").string();
-        int status = std::system(cmd.c_str());
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "stderr")};
+    std::pair<int, std::string> run(const std::string &env, const std::string &args) const {
+        rt::test::CliRun r = CliTest::run(args, env);
+        return {r.exitCode, r.err};
     }
     std::string scene;
 };

@@ -3,15 +3,13 @@
 // self-check), converge's CSV, and `report --from` end to end on hand-made figures (no
 // POV-Ray needed; tests/integration/report_browser.sh runs the real thing in a browser).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "core/image/image_io.h"
 #include "tools/check.h"
+#include "tools/cli_fixture.h"
 #include "tools/report_html.h"
 
 namespace rt::cli {
@@ -19,24 +17,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string slurp(const fs::path &p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-class ReportDir : public ::testing::Test {
+class ReportDir : public test::CliTest {
   protected:
-    void SetUp() override {
-        dir = fs::temp_directory_path() /
-              (std::string("scadray_report_") +
-               ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-    }
-    void TearDown() override { fs::remove_all(dir); }
-    fs::path dir;
+    ReportDir() : CliTest("scadray_report_") {}
 };
 
 CheckResult passing(const std::string &scene) {
@@ -222,12 +205,8 @@ TEST_F(ReportDir, FromEarlierChecks) {
     std::ofstream(b / "broken_check.json") << "{";
 
     fs::path html = dir / "r.html";
-    std::string cmd = std::string(SCADRAY_BINARY) + " report -q --from " +
-                      (dir / "suite").string() + " -o " + html.string() + " >" +
-                      (dir / "out").string() + " 2>&1";
-    int status = std::system(cmd.c_str());
-    ASSERT_TRUE(WIFEXITED(status));
-    EXPECT_EQ(WEXITSTATUS(status), 1) << slurp(dir / "out");
+    test::CliRun r = run("report -q --from " + (dir / "suite").string() + " -o " + html.string());
+    EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
     std::string page = slurp(html);
     size_t err = page.find("data-verdict=\"error\""),
            diff = page.find("data-verdict=\"different\""),
@@ -238,18 +217,15 @@ TEST_F(ReportDir, FromEarlierChecks) {
     EXPECT_LT(err, diff);
     EXPECT_LT(diff, pass);
     EXPECT_NE(page.find("src=\"data:image/png;base64,"), std::string::npos);
-    EXPECT_NE(slurp(dir / "out").find("3 scenes: 1 passed, 1 different, 1 errors"),
-              std::string::npos)
-        << slurp(dir / "out");
+    EXPECT_NE(r.out.find("3 scenes: 1 passed, 1 different, 1 errors"), std::string::npos)
+        << r.out << r.err;
 
     // Nothing to report is bad usage
-    cmd = std::string(SCADRAY_BINARY) + " report -q --from " + (dir / "suite" / "a").string() +
-          "/.. -o " + (dir / "nofolder" / "r.html").string() + " >/dev/null 2>&1";
-    status = std::system(cmd.c_str());
-    EXPECT_EQ(WEXITSTATUS(status), 2);
-    cmd = std::string(SCADRAY_BINARY) + " report -q -o " + html.string() + " >/dev/null 2>&1";
-    status = std::system(cmd.c_str());
-    EXPECT_EQ(WEXITSTATUS(status), 2);
+    EXPECT_EQ(run("report -q --from " + (dir / "suite" / "a").string() + "/.. -o " +
+                  (dir / "nofolder" / "r.html").string())
+                  .exitCode,
+              2);
+    EXPECT_EQ(run("report -q -o " + html.string()).exitCode, 2);
 }
 
 }  // namespace

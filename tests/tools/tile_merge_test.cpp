@@ -3,55 +3,29 @@
 // render's, bit for bit, as PNG and as EXR; merge refuses tiles of other scenes, sizes, seeds or
 // options, overlapping tiles, and names the tiles missing from a partial set.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "core/image/image_io.h"
+#include "tools/cli_fixture.h"
 
 namespace rt {
 namespace {
 
 namespace fs = std::filesystem;
+using test::CliRun;
 
-struct TileRun {
-    int exitCode;
-    std::string err;
-};
-
-class TileMerge : public ::testing::Test {
+class TileMerge : public test::CliTest {
   protected:
-    void SetUp() override {
-        dir = fs::temp_directory_path() /
-              (std::string("scadray_tiles_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-    }
-    void TearDown() override { fs::remove_all(dir); }
-
-    TileRun run(const std::string &args) {
-        std::string cmd = std::string(SCADRAY_BINARY) + " " + args + " >/dev/null 2>" + (dir / "stderr").string();
-        int status = std::system(cmd.c_str());
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "stderr")};
-    }
-    static std::string slurp(const fs::path &p) {
-        std::ifstream in(p, std::ios::binary);
-        std::stringstream ss;
-        ss << in.rdbuf();
-        return ss.str();
-    }
-    static std::string scene(const std::string &name) { return std::string(SCADRAY_SOURCE_DIR) + "/scenes/" + name; }
-    std::string path(const std::string &name) const { return (dir / name).string(); }
+    TileMerge() : CliTest("scadray_tiles_") {}
 
     /// Renders `tiles` tiles of `sceneArgs` as tile_K.exr; the list of their paths.
     std::string renderTiles(const std::string &sceneArgs, int tiles, const std::string &prefix = "tile_") {
         std::string list;
         for (int k = 1; k <= tiles; ++k) {
             std::string out = path(prefix + std::to_string(k) + ".exr");
-            TileRun r = run("render -q " + sceneArgs + " --tile " + std::to_string(k) + "/" + std::to_string(tiles) +
+            CliRun r = run("render -q " + sceneArgs + " --tile " + std::to_string(k) + "/" + std::to_string(tiles) +
                         " -o " + out);
             EXPECT_EQ(r.exitCode, 0) << r.err;
             list += " " + out;
@@ -66,7 +40,7 @@ class TileMerge : public ::testing::Test {
         ASSERT_EQ(run("render -q " + sceneArgs + " -o " + path("single.png")).exitCode, 0);
         ASSERT_EQ(run("render -q " + sceneArgs + " -o " + path("single.exr")).exitCode, 0);
         std::string list = renderTiles(sceneArgs, tiles);
-        TileRun m = run("merge -q" + list + " -o " + path("merged.png"));
+        CliRun m = run("merge -q" + list + " -o " + path("merged.png"));
         ASSERT_EQ(m.exitCode, 0) << m.err;
         ASSERT_EQ(run("merge -q" + list + " -o " + path("merged.exr")).exitCode, 0);
         std::string a = slurp(path("single.png")), b = slurp(path("merged.png"));
@@ -77,8 +51,6 @@ class TileMerge : public ::testing::Test {
         ASSERT_EQ(x.height(), y.height());
         EXPECT_TRUE(x.data() == y.data()) << "merged EXR pixels differ from the single render's";
     }
-
-    fs::path dir;
 };
 
 TEST_F(TileMerge, MergedIsTheSingleRenderBitForBit) {
@@ -113,9 +85,9 @@ TEST_F(TileMerge, RefusesTilesOfAnotherRender) {
     auto mergeWith = [&](const std::string &args) {
         std::string other = path("other.exr");
         fs::remove(other);
-        TileRun r = run("render -q " + args + " --tile 2/2 -o " + other);
+        CliRun r = run("render -q " + args + " --tile 2/2 -o " + other);
         EXPECT_EQ(r.exitCode, 0) << r.err;
-        TileRun m = run("merge " + tile1 + " " + other + " -o " + path("m.png"));
+        CliRun m = run("merge " + tile1 + " " + other + " -o " + path("m.png"));
         EXPECT_EQ(m.exitCode, 1);
         EXPECT_FALSE(fs::exists(path("m.png")));
         return m.err;
@@ -135,7 +107,7 @@ TEST_F(TileMerge, RefusesTilesOfAnotherRender) {
     std::string ballTile = path("ball_1.exr");
     ASSERT_EQ(run("render -q " + ball + " --tile 1/2 -o " + ballTile).exitCode, 0);
     ASSERT_EQ(run("render -q " + ball + " -D r=2 --tile 2/2 -o " + path("ball_2.exr")).exitCode, 0);
-    TileRun m = run("merge " + ballTile + " " + path("ball_2.exr") + " -o " + path("m.png"));
+    CliRun m = run("merge " + ballTile + " " + path("ball_2.exr") + " -o " + path("m.png"));
     EXPECT_EQ(m.exitCode, 1);
     EXPECT_NE(m.err.find("define=r=2"), std::string::npos) << m.err;
     // The same options, another file of the same name: the scene's hash tells them apart
@@ -150,7 +122,7 @@ TEST_F(TileMerge, RefusesOverlappingAndMissingTiles) {
     std::string base = scene("default.scad") + " -W 30 -H 20";
     std::string list = renderTiles(base, 4);
     // The same tile twice
-    TileRun m = run("merge" + list + " " + path("tile_2.exr") + " -o " + path("m.png"));
+    CliRun m = run("merge" + list + " " + path("tile_2.exr") + " -o " + path("m.png"));
     EXPECT_EQ(m.exitCode, 1);
     EXPECT_NE(m.err.find("overlapping tiles"), std::string::npos) << m.err;
     EXPECT_NE(m.err.find("tile 2/4"), std::string::npos) << m.err;
@@ -179,12 +151,12 @@ TEST_F(TileMerge, RefusesOverlappingAndMissingTiles) {
 TEST_F(TileMerge, BadTileOptionsAreUsageErrors) {
     std::string base = "render -q " + scene("default.scad") + " -W 30 -H 5";
     for (const char *bad : {"0/3", "4/3", "3", "a/b", "1/0", "2/3x", "-1/3"}) {
-        TileRun r = run(base + " --tile " + bad + " -o " + path("t.exr"));
+        CliRun r = run(base + " --tile " + bad + " -o " + path("t.exr"));
         EXPECT_EQ(r.exitCode, 2) << bad;
         EXPECT_NE(r.err.find("--tile"), std::string::npos) << r.err;
     }
     // More tiles than rows
-    TileRun r = run(base + " --tile 1/6 -o " + path("t.exr"));
+    CliRun r = run(base + " --tile 1/6 -o " + path("t.exr"));
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("rows high"), std::string::npos) << r.err;
     // A tile is an EXR
