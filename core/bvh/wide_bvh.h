@@ -62,6 +62,11 @@ class WideBvh {
     /// first. visit(item, tMax) may lower *tMax and returns true to stop.
     template <typename Visit>
     void traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit) const;
+    /// As traverse, but visit(slot, tMax) gets the item's position in itemOrder(): a caller
+    /// that keeps its own per-item data in leaf order reads it contiguously, without the
+    /// dependent load of the item index.
+    template <typename Visit>
+    void traverseSlots(const Ray &ray, double tMin, double *tMax, Visit &&visit) const;
 
   private:
     /// Depth bound of the build; with at most three pushes a level it sizes the traversal stack.
@@ -108,6 +113,11 @@ class WideBvh {
 
 template <typename Visit>
 void WideBvh::traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit) const {
+    traverseSlots(ray, tMin, tMax, [&](uint32_t slot, double *far) { return visit(order_[slot], far); });
+}
+
+template <typename Visit>
+void WideBvh::traverseSlots(const Ray &ray, double tMin, double *tMax, Visit &&visit) const {
     if (nodes_.empty()) return;
 #if defined(__SSE2__)
     FloatSlabs f;
@@ -227,7 +237,7 @@ void WideBvh::walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit) 
         if (current & kLeaf) {
             uint32_t first = (current & ~kLeaf) >> 2, count = (current & 3) + 1;
             for (uint32_t i = 0; i < count; ++i)
-                if (visit(order_[first + i], tMax)) return;
+                if (visit(first + i, tMax)) return;
         } else {
             const Node &n = nodes_[current];
             alignas(16) float tn[4];

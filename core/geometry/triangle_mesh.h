@@ -4,6 +4,7 @@
 // winding number and an inside test).
 #pragma once
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -62,13 +63,20 @@ class TriangleMesh {
         double sx, sy, sz;
         explicit RayFrame(const Ray &r);
     };
+    /// A triangle's vertex indices and its own index, kept in the BVH's leaf order so that a
+    /// leaf reads one contiguous run instead of the item order and then the triangle list.
+    struct LeafTriangle {
+        std::array<uint32_t, 3> v;
+        uint32_t triangle;
+    };
     /// intersectTriangle for a ray frame, returning false early when t is not within
     /// (tMin, tMax), or (tMin, tMax] when tMaxInclusive.
-    bool intersect(const RayFrame &f, uint32_t triangle, double tMin, double tMax, bool tMaxInclusive,
+    bool intersect(const RayFrame &f, const LeafTriangle &tri, double tMin, double tMax, bool tMaxInclusive,
                    Hit *hit) const;
 
     ir::MeshPtr mesh_;
     WideBvh bvh_;
+    std::vector<LeafTriangle> leafTriangles_;  ///< in bvh_.itemOrder()
     Bounds3 bounds_;
     ir::MeshTopology topology_;
     /// Per triangle: true when its vertex normals differ (POV-Ray shades only such triangles
