@@ -371,6 +371,8 @@ class WideBvhBuilder {
             node.child[c] = WideBvh::kEmpty;
         }
         int reached = depth;
+        // The interior children lie side by side, so the siblings a ray visits next share
+        // cache lines and pages with the one it visits first
         for (int c = 0; c < count; ++c) {
             const Range &k = kids[c];
             if (k.decision == Range::kLeaf) {
@@ -378,13 +380,14 @@ class WideBvhBuilder {
             } else if (depth == taskDepth) {
                 pending->push_back({k, index, c, depth + 1, {}, 0});
             } else {
-                uint32_t childIndex = static_cast<uint32_t>(nodes.size());
+                node.child[c] = static_cast<uint32_t>(nodes.size());
                 nodes.emplace_back();
-                node.child[c] = childIndex;
-                reached = std::max(reached, fillNode(childIndex, k, nodes, depth + 1, taskDepth, pending));
             }
         }
         nodes[index] = node;
+        for (int c = 0; c < count; ++c)
+            if (kids[c].decision != Range::kLeaf && depth != taskDepth)
+                reached = std::max(reached, fillNode(node.child[c], kids[c], nodes, depth + 1, taskDepth, pending));
         return reached;
     }
 
