@@ -10,11 +10,37 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
+#include <new>
 #include <thread>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 namespace rt {
+
+void *allocateLarge(size_t bytes) {
+    constexpr size_t kHuge = size_t{2} << 20;
+    void *p = nullptr;
+    if (bytes >= kHuge) {
+        // aligned_alloc wants a multiple of the alignment
+        size_t rounded = (bytes + kHuge - 1) / kHuge * kHuge;
+        p = std::aligned_alloc(kHuge, rounded);
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+        // Only advice: the memory works the same without huge pages
+        if (p) madvise(p, rounded, MADV_HUGEPAGE);
+#endif
+    } else {
+        p = std::malloc(bytes ? bytes : 1);
+    }
+    if (!p) throw std::bad_alloc();
+    return p;
+}
+
+void freeLarge(void *p) noexcept { std::free(p); }
 
 namespace {
 
@@ -106,6 +132,7 @@ struct Range {
     Box box, centroids;
     enum { kUndecided, kLeaf, kSplit } decision = kUndecided;
     int axis = -1, bin = -1;  ///< SAH split: items whose centroid bin is <= bin go left
+    int bins = 0;             ///< the number of bins of the split axis
 };
 
 }  // namespace
@@ -160,14 +187,23 @@ class WideBvhBuilder {
         uint32_t node;
         int slot;
         int depth;
-        std::vector<WideBvh::Node> nodes;
+        LargeVector<WideBvh::Node> nodes;
         int maxDepth = 0;
     };
 
-    /// Per axis and bin, the box of the items whose centroid falls in it and their count.
+    /// Per axis and bin, the box of the items whose centroid falls in it and their count; only
+    /// the bins in use are initialised (a small range uses few).
     struct Bins {
-        std::array<std::array<Box, kBins>, 3> boxes;
-        std::array<std::array<uint32_t, kBins>, 3> counts{};
+        Box boxes[3][kBins];
+        uint32_t counts[3][kBins];
+        Bins() {}  // left uninitialised: clear() sets what is used
+        void clear(int bins) {
+            for (int a = 0; a < 3; ++a)
+                for (int k = 0; k < bins; ++k) {
+                    boxes[a][k] = Box();
+                    counts[a][k] = 0;
+                }
+        }
     };
 
     /// f(part, begin, end) for `parts` consecutive chunks of [begin, end), one thread each.
@@ -181,6 +217,9 @@ class WideBvhBuilder {
         run(0);
         for (auto &w : workers) w.join();
     }
+
+    /// Bins per unit of centroid extent (the last centroid falls just inside the last bin).
+    static float binScale(int bins, float extent) { return static_cast<float>(bins) / extent * (1 - 1e-6f); }
 
     Range measure(uint32_t begin, uint32_t end) const {
         Range r;
@@ -208,18 +247,22 @@ class WideBvhBuilder {
         r.centroids.hi.store(hi);
         // Past the depth bound, split by count only: the depth then grows as log4 of the items
         bool sah = depth < WideBvh::kMaxDepth - 16;
-        // Small ranges, where the fixed cost of the bins dominates, bin on their longest axis only
+        // Small ranges, where the fixed cost of the bins dominates, bin on their longest axis
+        // only, and into about as many bins as they have items
+        const int nBins = static_cast<int>(std::min<uint32_t>(kBins, std::max<uint32_t>(n, 2)));
         int longest = 0;
         for (int a = 1; a < 3; ++a)
             if (hi[a] - lo[a] > hi[longest] - lo[longest]) longest = a;
         for (int a = 0; a < 3; ++a) {
             float extent = hi[a] - lo[a];
-            if (sah && extent > 0 && (n >= kAllAxesFrom || a == longest)) scale[a] = kBins / extent * (1 - 1e-6f);
+            if (sah && extent > 0 && (n >= kAllAxesFrom || a == longest)) scale[a] = binScale(nBins, extent);
         }
         if (scale[0] > 0 || scale[1] > 0 || scale[2] > 0) {
             const F4 origin = r.centroids.lo, scale4 = F4::of(scale[0], scale[1], scale[2], 0);
-            const F4 zero = F4::of(0, 0, 0, 0), last = F4::of(kBins - 1, kBins - 1, kBins - 1, 0);
+            const float lastBin = static_cast<float>(nBins - 1);
+            const F4 zero = F4::of(0, 0, 0, 0), last = F4::of(lastBin, lastBin, lastBin, 0);
             auto binItems = [&](size_t begin, size_t end, Bins &out) {
+                out.clear(nBins);
                 for (size_t i = begin; i < end; ++i) {
                     const Item &it = items_[i];
                     int b[4];
@@ -242,7 +285,7 @@ class WideBvhBuilder {
                 merged = parts[0];
                 for (size_t p = 1; p < parts.size(); ++p)
                     for (int a = 0; a < 3; ++a)
-                        for (int k = 0; k < kBins; ++k) {
+                        for (int k = 0; k < nBins; ++k) {
                             merged.boxes[a][k].grow(parts[p].boxes[a][k]);
                             merged.counts[a][k] += parts[p].counts[a][k];
                         }
@@ -253,11 +296,11 @@ class WideBvhBuilder {
             const auto &counts = merged.counts;
             for (int a = 0; a < 3; ++a) {
                 if (scale[a] == 0) continue;
-                std::array<float, kBins> rightArea{};
-                std::array<uint32_t, kBins> rightCount{};
+                float rightArea[kBins];
+                uint32_t rightCount[kBins];
                 Box acc;
                 uint32_t cnt = 0;
-                for (int k = kBins - 1; k > 0; --k) {
+                for (int k = nBins - 1; k > 0; --k) {
                     acc.grow(bins[a][k]);
                     cnt += counts[a][k];
                     rightArea[k] = acc.halfArea();
@@ -265,7 +308,7 @@ class WideBvhBuilder {
                 }
                 acc = Box();
                 cnt = 0;
-                for (int k = 0; k < kBins - 1; ++k) {
+                for (int k = 0; k < nBins - 1; ++k) {
                     acc.grow(bins[a][k]);
                     cnt += counts[a][k];
                     if (cnt == 0 || rightCount[k + 1] == 0) continue;
@@ -288,6 +331,7 @@ class WideBvhBuilder {
         r.decision = Range::kSplit;
         r.axis = bestAxis;
         r.bin = bestSplit;
+        r.bins = nBins;
     }
 
     /// Splits r as decided into two measured ranges (by the SAH plane, or by count where all
@@ -301,12 +345,12 @@ class WideBvhBuilder {
         }
         const int axis = r.axis;
         const float lo = r.centroids.lower(axis);
-        const float scale = kBins / (r.centroids.upper(axis) - lo) * (1 - 1e-6f);
+        const float scale = binScale(r.bins, r.centroids.upper(axis) - lo);
         auto goesLeft = [&](const Item &it) {
             float c[4];
             it.centroid().store(c);
             // As the binning computes it: clamp, then truncate
-            float f = std::min(std::max((c[axis] - lo) * scale, 0.0f), static_cast<float>(kBins - 1));
+            float f = std::min(std::max((c[axis] - lo) * scale, 0.0f), static_cast<float>(r.bins - 1));
             return static_cast<int>(f) <= r.bin;
         };
         // Partition and measure both sides in the same pass
@@ -337,7 +381,7 @@ class WideBvhBuilder {
 
     /// Fills node `index` of `nodes` with up to four children made from r (already measured),
     /// recursing into interior children; returns the depth reached.
-    int fillNode(uint32_t index, Range r, std::vector<WideBvh::Node> &nodes, int depth, int taskDepth,
+    int fillNode(uint32_t index, Range r, LargeVector<WideBvh::Node> &nodes, int depth, int taskDepth,
                  std::vector<Pending> *pending) {
         if (r.decision == Range::kUndecided) decide(r, depth);
         std::array<Range, 4> kids;
@@ -417,13 +461,13 @@ class WideBvhBuilder {
             nodes.insert(nodes.end(), p.nodes.begin(), p.nodes.end());
             nodes[p.node].child[p.slot] = base;
             bvh_.depth_ = std::max(bvh_.depth_, p.maxDepth);
-            std::vector<WideBvh::Node>().swap(p.nodes);
+            LargeVector<WideBvh::Node>().swap(p.nodes);
         }
     }
 
     WideBvh &bvh_;
     int threads_;
-    std::vector<Item> items_;
+    LargeVector<Item> items_;
 };
 
 #if defined(__SSE2__)

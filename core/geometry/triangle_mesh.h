@@ -76,7 +76,7 @@ class TriangleMesh {
 
     ir::MeshPtr mesh_;
     WideBvh bvh_;
-    std::vector<LeafTriangle> leafTriangles_;  ///< in bvh_.itemOrder()
+    LargeVector<LeafTriangle> leafTriangles_;  ///< in bvh_.itemOrder()
     Bounds3 bounds_;
     ir::MeshTopology topology_;
     /// Per triangle: true when its vertex normals differ (POV-Ray shades only such triangles
