@@ -144,6 +144,7 @@ class WideBvhBuilder {
     /// Nodes at this depth (the root is at 1) hand their interior children to subtree tasks.
     static constexpr int kTaskDepth = 2;
     static constexpr uint32_t kAllAxesFrom = 64;
+    static constexpr size_t kTwoBinSetsFrom = 256;
     /// Item boxes and the bins of ranges from this size on are computed by all threads.
     static constexpr size_t kParallelFrom = 65536;
 
@@ -204,6 +205,15 @@ class WideBvhBuilder {
                     counts[a][k] = 0;
                 }
         }
+        /// Adds the items of `o`: boxes merge by min and max and counts by sums, both exact,
+        /// so the bins do not depend on how the items were shared out.
+        void merge(const Bins &o, int bins) {
+            for (int a = 0; a < 3; ++a)
+                for (int k = 0; k < bins; ++k) {
+                    boxes[a][k].grow(o.boxes[a][k]);
+                    counts[a][k] += o.counts[a][k];
+                }
+        }
     };
 
     /// f(part, begin, end) for `parts` consecutive chunks of [begin, end), one thread each.
@@ -261,17 +271,31 @@ class WideBvhBuilder {
             const F4 origin = r.centroids.lo, scale4 = F4::of(scale[0], scale[1], scale[2], 0);
             const float lastBin = static_cast<float>(nBins - 1);
             const F4 zero = F4::of(0, 0, 0, 0), last = F4::of(lastBin, lastBin, lastBin, 0);
+            auto binOne = [&](const Item &it, Bins &out) {
+                int b[4];
+                min(max((it.centroid() - origin) * scale4, zero), last).storeInt(b);
+                for (int a = 0; a < 3; ++a) {
+                    ++out.counts[a][b[a]];
+                    out.boxes[a][b[a]].grow(it.lo, it.hi);
+                }
+            };
             auto binItems = [&](size_t begin, size_t end, Bins &out) {
                 out.clear(nBins);
-                for (size_t i = begin; i < end; ++i) {
-                    const Item &it = items_[i];
-                    int b[4];
-                    min(max((it.centroid() - origin) * scale4, zero), last).storeInt(b);
-                    for (int a = 0; a < 3; ++a) {
-                        ++out.counts[a][b[a]];
-                        out.boxes[a][b[a]].grow(it.lo, it.hi);
-                    }
+                if (end - begin < kTwoBinSetsFrom) {
+                    for (size_t i = begin; i < end; ++i) binOne(items_[i], out);
+                    return;
                 }
+                // Neighbouring items mostly fall in the same bins: alternate between two sets
+                // of bins, so that one item's update need not wait for the previous one's
+                Bins other;
+                other.clear(nBins);
+                size_t i = begin;
+                for (; i + 1 < end; i += 2) {
+                    binOne(items_[i], out);
+                    binOne(items_[i + 1], other);
+                }
+                if (i < end) binOne(items_[i], out);
+                out.merge(other, nBins);
             };
             // The top levels bin in parallel: boxes merge by min and max and counts by sums,
             // both exact, so the bins are the same for any number of threads
@@ -283,12 +307,7 @@ class WideBvhBuilder {
                     binItems(begin, end, parts[part]);
                 });
                 merged = parts[0];
-                for (size_t p = 1; p < parts.size(); ++p)
-                    for (int a = 0; a < 3; ++a)
-                        for (int k = 0; k < nBins; ++k) {
-                            merged.boxes[a][k].grow(parts[p].boxes[a][k]);
-                            merged.counts[a][k] += parts[p].counts[a][k];
-                        }
+                for (size_t p = 1; p < parts.size(); ++p) merged.merge(parts[p], nBins);
             } else {
                 binItems(r.begin, r.end, merged);
             }
