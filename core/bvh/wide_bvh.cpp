@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 #include <new>
 #include <thread>
@@ -44,14 +45,27 @@ void freeLarge(void *p) noexcept { std::free(p); }
 
 namespace {
 
+/// The next float towards +infinity (or -infinity when `down`), by its bits: std::nextafter
+/// is a call into libm, six of them per item box and two per ray. f is not NaN; at an
+/// infinity pointing away (-inf up, +inf down) the step gives the largest finite float.
+float stepFloat(float f, bool down) {
+    if (f == 0) return down ? -std::numeric_limits<float>::denorm_min() : std::numeric_limits<float>::denorm_min();
+    uint32_t bits;
+    std::memcpy(&bits, &f, 4);
+    // Away from zero adds one to the magnitude, towards zero takes one off
+    bits += (f > 0) != down ? 1 : -1;
+    std::memcpy(&f, &bits, 4);
+    return f;
+}
+
 float roundDown(double x) {
     float f = static_cast<float>(x);
-    return static_cast<double>(f) > x ? std::nextafter(f, -INFINITY) : f;
+    return static_cast<double>(f) > x ? stepFloat(f, true) : f;
 }
 
 float roundUp(double x) {
     float f = static_cast<float>(x);
-    return static_cast<double>(f) < x ? std::nextafter(f, INFINITY) : f;
+    return static_cast<double>(f) < x ? stepFloat(f, false) : f;
 }
 
 /// Four floats: x, y, z and a spare lane, in one SSE register where there is SSE.
@@ -500,6 +514,9 @@ bool WideBvh::FloatSlabs::init(const Ray &ray) {
         // is a float, so b - oNear has the sign of b - o or is zero (a NaN distance where inv
         // is infinite, which the test ignores)
         nearHi[a] = inv < 0;
+        const int lo = a * kWidth, hi = (3 + a) * kWidth;
+        nearAt[a] = nearHi[a] ? hi : lo;
+        farAt[a] = nearHi[a] ? lo : hi;
         float up = roundUp(o), down = roundDown(o);
         oNear[a] = _mm_set1_ps(nearHi[a] ? down : up);
         oFar[a] = _mm_set1_ps(nearHi[a] ? up : down);

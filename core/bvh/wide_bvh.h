@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -59,6 +60,7 @@ class WideBvh {
         // 16 bytes of padding: a node is two cache lines
     };
     static_assert(sizeof(Node) == 128);
+    static_assert(offsetof(Node, hi) == 3 * kWidth * sizeof(float));  // FloatSlabs indexes the planes
     static constexpr uint32_t kLeaf = 0x80000000u;
     static constexpr uint32_t kEmpty = 0xffffffffu;
 
@@ -114,6 +116,8 @@ class WideBvh {
     struct FloatSlabs {
         __m128 oNear[3], oFar[3], inv[3];
         int nearHi[3];
+        /// Per axis, where in a node (in floats from lo[0][0]) the near and the far planes lie
+        int nearAt[3], farAt[3];
         /// False where the ray does not fit in floats (an origin beyond 1e30, a direction
         /// component beyond 1e30 or below 1e-30 and not zero): DoubleSlabs takes those rays.
         bool init(const Ray &ray);
@@ -150,14 +154,16 @@ void WideBvh::traverseSlots(const Ray &ray, double tMin, double *tMax, Visit &&v
 #if defined(__SSE2__)
 inline int WideBvh::FloatSlabs::test(const Node &n, double tMin, double tMax, float tn[kWidth]) const {
     __m128 t0 = _mm_set1_ps(static_cast<float>(tMin)), t1 = _mm_set1_ps(static_cast<float>(tMax));
-    for (int a = 0; a < 3; ++a) {
-        __m128 nearB = _mm_load_ps(nearHi[a] ? n.hi[a] : n.lo[a]);
-        __m128 farB = _mm_load_ps(nearHi[a] ? n.lo[a] : n.hi[a]);
-        // maxps/minps return their second operand when either is NaN: a NaN distance (the
-        // origin's bound on the plane of a flat direction) leaves the interval as it was
-        t0 = _mm_max_ps(_mm_mul_ps(_mm_sub_ps(nearB, oNear[a]), inv[a]), t0);
-        t1 = _mm_min_ps(_mm_mul_ps(_mm_sub_ps(farB, oFar[a]), inv[a]), t1);
-    }
+    const float *planes = &n.lo[0][0];
+    // maxps/minps return their second operand when either is NaN: a NaN distance (the
+    // origin's bound on the plane of a flat direction) leaves the interval as it was
+    auto axis = [&](int a) {
+        t0 = _mm_max_ps(_mm_mul_ps(_mm_sub_ps(_mm_load_ps(planes + nearAt[a]), oNear[a]), inv[a]), t0);
+        t1 = _mm_min_ps(_mm_mul_ps(_mm_sub_ps(_mm_load_ps(planes + farAt[a]), oFar[a]), inv[a]), t1);
+    };
+    axis(0);
+    axis(1);
+    axis(2);
     // A distance that overflowed stands for one beyond the largest float, not for infinity
     const __m128 big = _mm_set1_ps(3.40282347e38f);
     t0 = _mm_min_ps(t0, big);
