@@ -38,9 +38,15 @@ TriangleMesh::TriangleMesh(ir::MeshPtr mesh, int buildThreads) : mesh_(std::move
             smooth_[i] = !(m.normals[t[0]] == m.normals[t[1]] && m.normals[t[1]] == m.normals[t[2]]);
     }
     bvh_ = WideBvh(m, buildThreads);
-    leafTriangles_.reserve(m.triangles.size());
-    for (uint32_t t : bvh_.itemOrder()) leafTriangles_.push_back({m.triangles[t], t});
+    leafTriangles_ = leafOrder(m, bvh_);
     topology_ = ir::analyzeMesh(m);
+}
+
+LargeVector<TriangleMesh::LeafTriangle> TriangleMesh::leafOrder(const ir::Mesh &mesh, const WideBvh &bvh) {
+    LargeVector<LeafTriangle> out;
+    out.reserve(bvh.itemOrder().size());
+    for (uint32_t t : bvh.itemOrder()) out.push_back({mesh.triangles[t], t});
+    return out;
 }
 
 size_t TriangleMesh::extraBytes() const {
