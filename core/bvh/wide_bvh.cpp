@@ -482,19 +482,38 @@ class WideBvhBuilder {
         for (int i = 1; i < threads_ && static_cast<size_t>(i) < pending.size(); ++i) workers.emplace_back(work);
         work();
         for (auto &w : workers) w.join();
+        // Subtrees go after the top levels in task order; each is copied (its child indices
+        // moved by its base) by the threads in parallel, so the new pages are first touched,
+        // and zeroed by the kernel, on all threads
         auto &nodes = bvh_.nodes_;
+        std::vector<uint32_t> bases(pending.size());
         size_t total = nodes.size();
-        for (const Pending &p : pending) total += p.nodes.size();
-        nodes.reserve(total);
-        for (Pending &p : pending) {
-            uint32_t base = static_cast<uint32_t>(nodes.size());
-            for (auto &n : p.nodes)
-                for (auto &c : n.child)
-                    if (c != WideBvh::kEmpty && !(c & WideBvh::kLeaf)) c += base;
-            nodes.insert(nodes.end(), p.nodes.begin(), p.nodes.end());
-            nodes[p.node].child[p.slot] = base;
-            bvh_.depth_ = std::max(bvh_.depth_, p.maxDepth);
-            LargeVector<WideBvh::Node>().swap(p.nodes);
+        for (size_t i = 0; i < pending.size(); ++i) {
+            bases[i] = static_cast<uint32_t>(total);
+            total += pending[i].nodes.size();
+        }
+        nodes.resize(total);
+        next = 0;
+        auto copy = [&] {
+            for (size_t i; (i = next++) < pending.size();) {
+                Pending &p = pending[i];
+                WideBvh::Node *out = nodes.data() + bases[i];
+                for (const auto &n : p.nodes) {
+                    *out = n;
+                    for (auto &c : out->child)
+                        if (c != WideBvh::kEmpty && !(c & WideBvh::kLeaf)) c += bases[i];
+                    ++out;
+                }
+                LargeVector<WideBvh::Node>().swap(p.nodes);
+            }
+        };
+        workers.clear();
+        for (int i = 1; i < threads_ && static_cast<size_t>(i) < pending.size(); ++i) workers.emplace_back(copy);
+        copy();
+        for (auto &w : workers) w.join();
+        for (size_t i = 0; i < pending.size(); ++i) {
+            nodes[pending[i].node].child[pending[i].slot] = bases[i];
+            bvh_.depth_ = std::max(bvh_.depth_, pending[i].maxDepth);
         }
     }
 

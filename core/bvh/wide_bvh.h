@@ -10,6 +10,8 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <new>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -39,6 +41,16 @@ struct LargeAllocator {
     LargeAllocator(const LargeAllocator<U> &) {}
     T *allocate(size_t n) { return static_cast<T *>(allocateLarge(n * sizeof(T))); }
     void deallocate(T *p, size_t) noexcept { freeLarge(p); }
+    /// Default-initialises (resize() of plain data leaves it unwritten, for the code that fills
+    /// it, on whichever threads fill it, to be the first to touch the pages)
+    template <typename U>
+    void construct(U *p) noexcept(std::is_nothrow_default_constructible_v<U>) {
+        ::new (static_cast<void *>(p)) U;
+    }
+    template <typename U, typename... Args>
+    void construct(U *p, Args &&...args) {
+        ::new (static_cast<void *>(p)) U(std::forward<Args>(args)...);
+    }
     friend bool operator==(const LargeAllocator &, const LargeAllocator &) { return true; }
 };
 
