@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Binned SAH build of the four-wide BVH. Item boxes are rounded outward to float once;
-// each node splits its range in two by the SAH (16 bins on every axis) and splits its largest
-// child again until it has four. Below the top levels, subtrees are built by separate threads
-// into their own node arrays and appended in a fixed order, so the tree is the same for any
-// thread count.
+// each node splits its range in two by the SAH (16 bins on every axis from 64 items, on the
+// longest axis and as many bins as items below) and splits its largest child again until it
+// has four, whose interior children are allocated side by side. Below the top levels, subtrees
+// are built by separate threads into their own node arrays and appended in a fixed order, so
+// the tree is the same for any thread count.
 #include "core/bvh/wide_bvh.h"
 
 #include <algorithm>
@@ -49,7 +50,8 @@ namespace {
 /// is a call into libm, six of them per item box and two per ray. f is not NaN; at an
 /// infinity pointing away (-inf up, +inf down) the step gives the largest finite float.
 float stepFloat(float f, bool down) {
-    if (f == 0) return down ? -std::numeric_limits<float>::denorm_min() : std::numeric_limits<float>::denorm_min();
+    constexpr float kStep = std::numeric_limits<float>::denorm_min();
+    if (f == 0) return down ? -kStep : kStep;
     uint32_t bits;
     std::memcpy(&bits, &f, 4);
     // Away from zero adds one to the magnitude, towards zero takes one off
@@ -464,7 +466,8 @@ class WideBvhBuilder {
         nodes[index] = node;
         for (int c = 0; c < count; ++c)
             if (kids[c].decision != Range::kLeaf && depth != taskDepth)
-                reached = std::max(reached, fillNode(node.child[c], kids[c], nodes, depth + 1, taskDepth, pending));
+                reached = std::max(reached,
+                                   fillNode(node.child[c], kids[c], nodes, depth + 1, taskDepth, pending));
         return reached;
     }
 
@@ -508,7 +511,8 @@ class WideBvhBuilder {
             }
         };
         workers.clear();
-        for (int i = 1; i < threads_ && static_cast<size_t>(i) < pending.size(); ++i) workers.emplace_back(copy);
+        for (int i = 1; i < threads_ && static_cast<size_t>(i) < pending.size(); ++i)
+            workers.emplace_back(copy);
         copy();
         for (auto &w : workers) w.join();
         for (size_t i = 0; i < pending.size(); ++i) {

@@ -42,7 +42,8 @@ TriangleMesh::TriangleMesh(ir::MeshPtr mesh, int buildThreads) : mesh_(std::move
     topology_ = ir::analyzeMesh(m);
 }
 
-LargeVector<TriangleMesh::LeafTriangle> TriangleMesh::leafOrder(const ir::Mesh &mesh, const WideBvh &bvh) {
+LargeVector<TriangleMesh::LeafTriangle> TriangleMesh::leafOrder(const ir::Mesh &mesh,
+                                                                const WideBvh &bvh) {
     LargeVector<LeafTriangle> out;
     out.reserve(bvh.itemOrder().size());
     for (uint32_t t : bvh.itemOrder()) out.push_back({mesh.triangles[t], t});
@@ -65,7 +66,8 @@ TriangleMesh::RayFrame::RayFrame(const Ray &r) : ray(&r) {
 }
 
 bool TriangleMesh::intersectTriangle(const Ray &r, uint32_t triangle, Hit *hit) const {
-    return intersect(RayFrame(r), {mesh_->triangles[triangle], triangle}, -kInfinity, kInfinity, false, hit);
+    return intersect(RayFrame(r), {mesh_->triangles[triangle], triangle}, -kInfinity, kInfinity,
+                     false, hit);
 }
 
 // The edge functions round once each through std::fma, which without an FMA instruction in the

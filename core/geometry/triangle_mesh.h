@@ -76,8 +76,8 @@ class TriangleMesh {
     };
     /// intersectTriangle for a ray frame, returning false early when t is not within
     /// (tMin, tMax), or (tMin, tMax] when tMaxInclusive.
-    bool intersect(const RayFrame &f, const LeafTriangle &tri, double tMin, double tMax, bool tMaxInclusive,
-                   Hit *hit) const;
+    bool intersect(const RayFrame &f, const LeafTriangle &tri, double tMin, double tMax,
+                   bool tMaxInclusive, Hit *hit) const;
 
     ir::MeshPtr mesh_;
     WideBvh bvh_;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Benchmark (not a test): scadray's triangle-mesh BVH side by side with Embree 3 on the same
-// mesh and the same rays. Prints BVH build time (with the leaf-ordered triangle copy) on 1 and 2 threads, closest-hit rays per
-// CPU-second (one thread) for 640x480 camera rays and for random rays, and bytes per triangle.
+// mesh and the same rays. Prints BVH build time (with the leaf-ordered triangle copy) on 1 and
+// 2 threads, closest-hit rays per CPU-second (one thread) for 640x480 camera rays and for
+// random rays, and bytes per triangle.
 // Built with Embree where CMake finds it (SCADRAY_HAVE_EMBREE); otherwise prints scadray only.
 // Run: build/tests/mesh_vs_embree [LEVELS]   (icosphere of 20 * 4^LEVELS triangles; default 8)
 #include <algorithm>

@@ -198,8 +198,14 @@ TEST(WideBvh, LeafOrderedTrianglesAreTheTrianglesOfTheItemOrder) {
     for (const Ray &r : testRays(*m, 1, Vec3(0), 200)) {
         std::vector<uint32_t> items, slots;
         double t = kInfinity;
-        mesh.bvh().traverse(r, -kInfinity, &t, [&](uint32_t i, double *) { return items.push_back(i), false; });
-        mesh.bvh().traverseSlots(r, -kInfinity, &t, [&](uint32_t s, double *) { return slots.push_back(order[s]), false; });
+        mesh.bvh().traverse(r, -kInfinity, &t, [&](uint32_t i, double *) {
+            items.push_back(i);
+            return false;
+        });
+        mesh.bvh().traverseSlots(r, -kInfinity, &t, [&](uint32_t s, double *) {
+            slots.push_back(order[s]);
+            return false;
+        });
         ASSERT_EQ(slots, items);
     }
 }
