@@ -1,31 +1,73 @@
 // SPDX-License-Identifier: MIT
 // Binned SAH build of the four-wide BVH. Item boxes are rounded outward to float once;
-// each node splits its range in two by the SAH (16 bins on every axis) and splits its largest
-// child again until it has four. Below the top levels, subtrees are built by separate threads
-// into their own node arrays and appended in a fixed order, so the tree is the same for any
-// thread count.
+// each node splits its range in two by the SAH (16 bins on every axis from 64 items, on the
+// longest axis and as many bins as items below) and splits its largest child again until it
+// has four, whose interior children are allocated side by side. Below the top levels, subtrees
+// are built by separate threads into their own node arrays and appended in a fixed order, so
+// the tree is the same for any thread count.
 #include "core/bvh/wide_bvh.h"
 
 #include <algorithm>
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
+#include <new>
 #include <thread>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 namespace rt {
 
+void *allocateLarge(size_t bytes) {
+    constexpr size_t kHuge = size_t{2} << 20;
+    void *p = nullptr;
+    if (bytes >= kHuge) {
+        // aligned_alloc wants a multiple of the alignment
+        size_t rounded = (bytes + kHuge - 1) / kHuge * kHuge;
+        p = std::aligned_alloc(kHuge, rounded);
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+        // Only advice: the memory works the same without huge pages
+        if (p) madvise(p, rounded, MADV_HUGEPAGE);
+#endif
+    } else {
+        p = std::malloc(bytes ? bytes : 1);
+    }
+    if (!p) throw std::bad_alloc();
+    return p;
+}
+
+void freeLarge(void *p) noexcept { std::free(p); }
+
 namespace {
+
+/// The next float towards +infinity (or -infinity when `down`), by its bits: std::nextafter
+/// is a call into libm, six of them per item box and two per ray. f is not NaN; at an
+/// infinity pointing away (-inf up, +inf down) the step gives the largest finite float.
+float stepFloat(float f, bool down) {
+    constexpr float kStep = std::numeric_limits<float>::denorm_min();
+    if (f == 0) return down ? -kStep : kStep;
+    uint32_t bits;
+    std::memcpy(&bits, &f, 4);
+    // Away from zero adds one to the magnitude, towards zero takes one off
+    bits += (f > 0) != down ? 1 : -1;
+    std::memcpy(&f, &bits, 4);
+    return f;
+}
 
 float roundDown(double x) {
     float f = static_cast<float>(x);
-    return static_cast<double>(f) > x ? std::nextafter(f, -INFINITY) : f;
+    return static_cast<double>(f) > x ? stepFloat(f, true) : f;
 }
 
 float roundUp(double x) {
     float f = static_cast<float>(x);
-    return static_cast<double>(f) < x ? std::nextafter(f, INFINITY) : f;
+    return static_cast<double>(f) < x ? stepFloat(f, false) : f;
 }
 
 /// Four floats: x, y, z and a spare lane, in one SSE register where there is SSE.
@@ -106,6 +148,7 @@ struct Range {
     Box box, centroids;
     enum { kUndecided, kLeaf, kSplit } decision = kUndecided;
     int axis = -1, bin = -1;  ///< SAH split: items whose centroid bin is <= bin go left
+    int bins = 0;             ///< the number of bins of the split axis
 };
 
 }  // namespace
@@ -117,6 +160,7 @@ class WideBvhBuilder {
     /// Nodes at this depth (the root is at 1) hand their interior children to subtree tasks.
     static constexpr int kTaskDepth = 2;
     static constexpr uint32_t kAllAxesFrom = 64;
+    static constexpr size_t kTwoBinSetsFrom = 256;
     /// Item boxes and the bins of ranges from this size on are computed by all threads.
     static constexpr size_t kParallelFrom = 65536;
 
@@ -160,14 +204,32 @@ class WideBvhBuilder {
         uint32_t node;
         int slot;
         int depth;
-        std::vector<WideBvh::Node> nodes;
+        LargeVector<WideBvh::Node> nodes;
         int maxDepth = 0;
     };
 
-    /// Per axis and bin, the box of the items whose centroid falls in it and their count.
+    /// Per axis and bin, the box of the items whose centroid falls in it and their count; only
+    /// the bins in use are initialised (a small range uses few).
     struct Bins {
-        std::array<std::array<Box, kBins>, 3> boxes;
-        std::array<std::array<uint32_t, kBins>, 3> counts{};
+        Box boxes[3][kBins];
+        uint32_t counts[3][kBins];
+        Bins() {}  // left uninitialised: clear() sets what is used
+        void clear(int bins) {
+            for (int a = 0; a < 3; ++a)
+                for (int k = 0; k < bins; ++k) {
+                    boxes[a][k] = Box();
+                    counts[a][k] = 0;
+                }
+        }
+        /// Adds the items of `o`: boxes merge by min and max and counts by sums, both exact,
+        /// so the bins do not depend on how the items were shared out.
+        void merge(const Bins &o, int bins) {
+            for (int a = 0; a < 3; ++a)
+                for (int k = 0; k < bins; ++k) {
+                    boxes[a][k].grow(o.boxes[a][k]);
+                    counts[a][k] += o.counts[a][k];
+                }
+        }
     };
 
     /// f(part, begin, end) for `parts` consecutive chunks of [begin, end), one thread each.
@@ -181,6 +243,9 @@ class WideBvhBuilder {
         run(0);
         for (auto &w : workers) w.join();
     }
+
+    /// Bins per unit of centroid extent (the last centroid falls just inside the last bin).
+    static float binScale(int bins, float extent) { return static_cast<float>(bins) / extent * (1 - 1e-6f); }
 
     Range measure(uint32_t begin, uint32_t end) const {
         Range r;
@@ -208,27 +273,45 @@ class WideBvhBuilder {
         r.centroids.hi.store(hi);
         // Past the depth bound, split by count only: the depth then grows as log4 of the items
         bool sah = depth < WideBvh::kMaxDepth - 16;
-        // Small ranges, where the fixed cost of the bins dominates, bin on their longest axis only
+        // Small ranges, where the fixed cost of the bins dominates, bin on their longest axis
+        // only, and into about as many bins as they have items
+        const int nBins = static_cast<int>(std::min<uint32_t>(kBins, std::max<uint32_t>(n, 2)));
         int longest = 0;
         for (int a = 1; a < 3; ++a)
             if (hi[a] - lo[a] > hi[longest] - lo[longest]) longest = a;
         for (int a = 0; a < 3; ++a) {
             float extent = hi[a] - lo[a];
-            if (sah && extent > 0 && (n >= kAllAxesFrom || a == longest)) scale[a] = kBins / extent * (1 - 1e-6f);
+            if (sah && extent > 0 && (n >= kAllAxesFrom || a == longest)) scale[a] = binScale(nBins, extent);
         }
         if (scale[0] > 0 || scale[1] > 0 || scale[2] > 0) {
             const F4 origin = r.centroids.lo, scale4 = F4::of(scale[0], scale[1], scale[2], 0);
-            const F4 zero = F4::of(0, 0, 0, 0), last = F4::of(kBins - 1, kBins - 1, kBins - 1, 0);
-            auto binItems = [&](size_t begin, size_t end, Bins &out) {
-                for (size_t i = begin; i < end; ++i) {
-                    const Item &it = items_[i];
-                    int b[4];
-                    min(max((it.centroid() - origin) * scale4, zero), last).storeInt(b);
-                    for (int a = 0; a < 3; ++a) {
-                        ++out.counts[a][b[a]];
-                        out.boxes[a][b[a]].grow(it.lo, it.hi);
-                    }
+            const float lastBin = static_cast<float>(nBins - 1);
+            const F4 zero = F4::of(0, 0, 0, 0), last = F4::of(lastBin, lastBin, lastBin, 0);
+            auto binOne = [&](const Item &it, Bins &out) {
+                int b[4];
+                min(max((it.centroid() - origin) * scale4, zero), last).storeInt(b);
+                for (int a = 0; a < 3; ++a) {
+                    ++out.counts[a][b[a]];
+                    out.boxes[a][b[a]].grow(it.lo, it.hi);
                 }
+            };
+            auto binItems = [&](size_t begin, size_t end, Bins &out) {
+                out.clear(nBins);
+                if (end - begin < kTwoBinSetsFrom) {
+                    for (size_t i = begin; i < end; ++i) binOne(items_[i], out);
+                    return;
+                }
+                // Neighbouring items mostly fall in the same bins: alternate between two sets
+                // of bins, so that one item's update need not wait for the previous one's
+                Bins other;
+                other.clear(nBins);
+                size_t i = begin;
+                for (; i + 1 < end; i += 2) {
+                    binOne(items_[i], out);
+                    binOne(items_[i + 1], other);
+                }
+                if (i < end) binOne(items_[i], out);
+                out.merge(other, nBins);
             };
             // The top levels bin in parallel: boxes merge by min and max and counts by sums,
             // both exact, so the bins are the same for any number of threads
@@ -240,12 +323,7 @@ class WideBvhBuilder {
                     binItems(begin, end, parts[part]);
                 });
                 merged = parts[0];
-                for (size_t p = 1; p < parts.size(); ++p)
-                    for (int a = 0; a < 3; ++a)
-                        for (int k = 0; k < kBins; ++k) {
-                            merged.boxes[a][k].grow(parts[p].boxes[a][k]);
-                            merged.counts[a][k] += parts[p].counts[a][k];
-                        }
+                for (size_t p = 1; p < parts.size(); ++p) merged.merge(parts[p], nBins);
             } else {
                 binItems(r.begin, r.end, merged);
             }
@@ -253,11 +331,11 @@ class WideBvhBuilder {
             const auto &counts = merged.counts;
             for (int a = 0; a < 3; ++a) {
                 if (scale[a] == 0) continue;
-                std::array<float, kBins> rightArea{};
-                std::array<uint32_t, kBins> rightCount{};
+                float rightArea[kBins];
+                uint32_t rightCount[kBins];
                 Box acc;
                 uint32_t cnt = 0;
-                for (int k = kBins - 1; k > 0; --k) {
+                for (int k = nBins - 1; k > 0; --k) {
                     acc.grow(bins[a][k]);
                     cnt += counts[a][k];
                     rightArea[k] = acc.halfArea();
@@ -265,7 +343,7 @@ class WideBvhBuilder {
                 }
                 acc = Box();
                 cnt = 0;
-                for (int k = 0; k < kBins - 1; ++k) {
+                for (int k = 0; k < nBins - 1; ++k) {
                     acc.grow(bins[a][k]);
                     cnt += counts[a][k];
                     if (cnt == 0 || rightCount[k + 1] == 0) continue;
@@ -288,6 +366,7 @@ class WideBvhBuilder {
         r.decision = Range::kSplit;
         r.axis = bestAxis;
         r.bin = bestSplit;
+        r.bins = nBins;
     }
 
     /// Splits r as decided into two measured ranges (by the SAH plane, or by count where all
@@ -301,12 +380,12 @@ class WideBvhBuilder {
         }
         const int axis = r.axis;
         const float lo = r.centroids.lower(axis);
-        const float scale = kBins / (r.centroids.upper(axis) - lo) * (1 - 1e-6f);
+        const float scale = binScale(r.bins, r.centroids.upper(axis) - lo);
         auto goesLeft = [&](const Item &it) {
             float c[4];
             it.centroid().store(c);
             // As the binning computes it: clamp, then truncate
-            float f = std::min(std::max((c[axis] - lo) * scale, 0.0f), static_cast<float>(kBins - 1));
+            float f = std::min(std::max((c[axis] - lo) * scale, 0.0f), static_cast<float>(r.bins - 1));
             return static_cast<int>(f) <= r.bin;
         };
         // Partition and measure both sides in the same pass
@@ -337,7 +416,7 @@ class WideBvhBuilder {
 
     /// Fills node `index` of `nodes` with up to four children made from r (already measured),
     /// recursing into interior children; returns the depth reached.
-    int fillNode(uint32_t index, Range r, std::vector<WideBvh::Node> &nodes, int depth, int taskDepth,
+    int fillNode(uint32_t index, Range r, LargeVector<WideBvh::Node> &nodes, int depth, int taskDepth,
                  std::vector<Pending> *pending) {
         if (r.decision == Range::kUndecided) decide(r, depth);
         std::array<Range, 4> kids;
@@ -371,6 +450,8 @@ class WideBvhBuilder {
             node.child[c] = WideBvh::kEmpty;
         }
         int reached = depth;
+        // The interior children lie side by side, so the siblings a ray visits next share
+        // cache lines and pages with the one it visits first
         for (int c = 0; c < count; ++c) {
             const Range &k = kids[c];
             if (k.decision == Range::kLeaf) {
@@ -378,13 +459,15 @@ class WideBvhBuilder {
             } else if (depth == taskDepth) {
                 pending->push_back({k, index, c, depth + 1, {}, 0});
             } else {
-                uint32_t childIndex = static_cast<uint32_t>(nodes.size());
+                node.child[c] = static_cast<uint32_t>(nodes.size());
                 nodes.emplace_back();
-                node.child[c] = childIndex;
-                reached = std::max(reached, fillNode(childIndex, k, nodes, depth + 1, taskDepth, pending));
             }
         }
         nodes[index] = node;
+        for (int c = 0; c < count; ++c)
+            if (kids[c].decision != Range::kLeaf && depth != taskDepth)
+                reached = std::max(reached,
+                                   fillNode(node.child[c], kids[c], nodes, depth + 1, taskDepth, pending));
         return reached;
     }
 
@@ -402,25 +485,45 @@ class WideBvhBuilder {
         for (int i = 1; i < threads_ && static_cast<size_t>(i) < pending.size(); ++i) workers.emplace_back(work);
         work();
         for (auto &w : workers) w.join();
+        // Subtrees go after the top levels in task order; each is copied (its child indices
+        // moved by its base) by the threads in parallel, so the new pages are first touched,
+        // and zeroed by the kernel, on all threads
         auto &nodes = bvh_.nodes_;
+        std::vector<uint32_t> bases(pending.size());
         size_t total = nodes.size();
-        for (const Pending &p : pending) total += p.nodes.size();
-        nodes.reserve(total);
-        for (Pending &p : pending) {
-            uint32_t base = static_cast<uint32_t>(nodes.size());
-            for (auto &n : p.nodes)
-                for (auto &c : n.child)
-                    if (c != WideBvh::kEmpty && !(c & WideBvh::kLeaf)) c += base;
-            nodes.insert(nodes.end(), p.nodes.begin(), p.nodes.end());
-            nodes[p.node].child[p.slot] = base;
-            bvh_.depth_ = std::max(bvh_.depth_, p.maxDepth);
-            std::vector<WideBvh::Node>().swap(p.nodes);
+        for (size_t i = 0; i < pending.size(); ++i) {
+            bases[i] = static_cast<uint32_t>(total);
+            total += pending[i].nodes.size();
+        }
+        nodes.resize(total);
+        next = 0;
+        auto copy = [&] {
+            for (size_t i; (i = next++) < pending.size();) {
+                Pending &p = pending[i];
+                WideBvh::Node *out = nodes.data() + bases[i];
+                for (const auto &n : p.nodes) {
+                    *out = n;
+                    for (auto &c : out->child)
+                        if (c != WideBvh::kEmpty && !(c & WideBvh::kLeaf)) c += bases[i];
+                    ++out;
+                }
+                LargeVector<WideBvh::Node>().swap(p.nodes);
+            }
+        };
+        workers.clear();
+        for (int i = 1; i < threads_ && static_cast<size_t>(i) < pending.size(); ++i)
+            workers.emplace_back(copy);
+        copy();
+        for (auto &w : workers) w.join();
+        for (size_t i = 0; i < pending.size(); ++i) {
+            nodes[pending[i].node].child[pending[i].slot] = bases[i];
+            bvh_.depth_ = std::max(bvh_.depth_, pending[i].maxDepth);
         }
     }
 
     WideBvh &bvh_;
     int threads_;
-    std::vector<Item> items_;
+    LargeVector<Item> items_;
 };
 
 #if defined(__SSE2__)
@@ -434,6 +537,9 @@ bool WideBvh::FloatSlabs::init(const Ray &ray) {
         // is a float, so b - oNear has the sign of b - o or is zero (a NaN distance where inv
         // is infinite, which the test ignores)
         nearHi[a] = inv < 0;
+        const int lo = a * kWidth, hi = (3 + a) * kWidth;
+        nearAt[a] = nearHi[a] ? hi : lo;
+        farAt[a] = nearHi[a] ? lo : hi;
         float up = roundUp(o), down = roundDown(o);
         oNear[a] = _mm_set1_ps(nearHi[a] ? down : up);
         oFar[a] = _mm_set1_ps(nearHi[a] ? up : down);

@@ -8,7 +8,10 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <new>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -22,6 +25,37 @@
 #endif
 
 namespace rt {
+
+/// Allocates large arrays (2 MiB and more) on 2 MiB boundaries and asks Linux for transparent
+/// huge pages there: a BVH of tens of megabytes then costs a few dozen page faults to build
+/// instead of thousands, and a ray's random walk through it a few TLB entries. Elsewhere (or
+/// where the kernel declines) it is plain memory.
+void *allocateLarge(size_t bytes);
+void freeLarge(void *p) noexcept;
+
+template <typename T>
+struct LargeAllocator {
+    using value_type = T;
+    LargeAllocator() = default;
+    template <typename U>
+    LargeAllocator(const LargeAllocator<U> &) {}
+    T *allocate(size_t n) { return static_cast<T *>(allocateLarge(n * sizeof(T))); }
+    void deallocate(T *p, size_t) noexcept { freeLarge(p); }
+    /// Default-initialises (resize() of plain data leaves it unwritten, for the code that fills
+    /// it, on whichever threads fill it, to be the first to touch the pages)
+    template <typename U>
+    void construct(U *p) noexcept(std::is_nothrow_default_constructible_v<U>) {
+        ::new (static_cast<void *>(p)) U;
+    }
+    template <typename U, typename... Args>
+    void construct(U *p, Args &&...args) {
+        ::new (static_cast<void *>(p)) U(std::forward<Args>(args)...);
+    }
+    friend bool operator==(const LargeAllocator &, const LargeAllocator &) { return true; }
+};
+
+template <typename T>
+using LargeVector = std::vector<T, LargeAllocator<T>>;
 
 class WideBvh {
   public:
@@ -38,6 +72,7 @@ class WideBvh {
         // 16 bytes of padding: a node is two cache lines
     };
     static_assert(sizeof(Node) == 128);
+    static_assert(offsetof(Node, hi) == 3 * kWidth * sizeof(float));  // FloatSlabs indexes the planes
     static constexpr uint32_t kLeaf = 0x80000000u;
     static constexpr uint32_t kEmpty = 0xffffffffu;
 
@@ -50,9 +85,9 @@ class WideBvh {
     /// rounded outward to floats, and their centres clamped to it.
     explicit WideBvh(const std::vector<Bounds3> &items, int threads = 1);
 
-    const std::vector<Node> &nodes() const { return nodes_; }
+    const LargeVector<Node> &nodes() const { return nodes_; }
     /// Item (triangle) indices in leaf order.
-    const std::vector<uint32_t> &itemOrder() const { return order_; }
+    const LargeVector<uint32_t> &itemOrder() const { return order_; }
     size_t bytes() const { return nodes_.capacity() * sizeof(Node) + order_.capacity() * sizeof(uint32_t); }
     int depth() const { return depth_; }
 
@@ -62,6 +97,11 @@ class WideBvh {
     /// first. visit(item, tMax) may lower *tMax and returns true to stop.
     template <typename Visit>
     void traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit) const;
+    /// As traverse, but visit(slot, tMax) gets the item's position in itemOrder(): a caller
+    /// that keeps its own per-item data in leaf order reads it contiguously, without the
+    /// dependent load of the item index.
+    template <typename Visit>
+    void traverseSlots(const Ray &ray, double tMin, double *tMax, Visit &&visit) const;
 
   private:
     /// Depth bound of the build; with at most three pushes a level it sizes the traversal stack.
@@ -88,6 +128,8 @@ class WideBvh {
     struct FloatSlabs {
         __m128 oNear[3], oFar[3], inv[3];
         int nearHi[3];
+        /// Per axis, where in a node (in floats from lo[0][0]) the near and the far planes lie
+        int nearAt[3], farAt[3];
         /// False where the ray does not fit in floats (an origin beyond 1e30, a direction
         /// component beyond 1e30 or below 1e-30 and not zero): DoubleSlabs takes those rays.
         bool init(const Ray &ray);
@@ -101,13 +143,18 @@ class WideBvh {
     template <typename Slabs, typename Visit>
     void walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit) const;
 
-    std::vector<Node> nodes_;
-    std::vector<uint32_t> order_;
+    LargeVector<Node> nodes_;
+    LargeVector<uint32_t> order_;
     int depth_ = 0;
 };
 
 template <typename Visit>
 void WideBvh::traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit) const {
+    traverseSlots(ray, tMin, tMax, [&](uint32_t slot, double *far) { return visit(order_[slot], far); });
+}
+
+template <typename Visit>
+void WideBvh::traverseSlots(const Ray &ray, double tMin, double *tMax, Visit &&visit) const {
     if (nodes_.empty()) return;
 #if defined(__SSE2__)
     FloatSlabs f;
@@ -119,14 +166,16 @@ void WideBvh::traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit)
 #if defined(__SSE2__)
 inline int WideBvh::FloatSlabs::test(const Node &n, double tMin, double tMax, float tn[kWidth]) const {
     __m128 t0 = _mm_set1_ps(static_cast<float>(tMin)), t1 = _mm_set1_ps(static_cast<float>(tMax));
-    for (int a = 0; a < 3; ++a) {
-        __m128 nearB = _mm_load_ps(nearHi[a] ? n.hi[a] : n.lo[a]);
-        __m128 farB = _mm_load_ps(nearHi[a] ? n.lo[a] : n.hi[a]);
-        // maxps/minps return their second operand when either is NaN: a NaN distance (the
-        // origin's bound on the plane of a flat direction) leaves the interval as it was
-        t0 = _mm_max_ps(_mm_mul_ps(_mm_sub_ps(nearB, oNear[a]), inv[a]), t0);
-        t1 = _mm_min_ps(_mm_mul_ps(_mm_sub_ps(farB, oFar[a]), inv[a]), t1);
-    }
+    const float *planes = &n.lo[0][0];
+    // maxps/minps return their second operand when either is NaN: a NaN distance (the
+    // origin's bound on the plane of a flat direction) leaves the interval as it was
+    auto axis = [&](int a) {
+        t0 = _mm_max_ps(_mm_mul_ps(_mm_sub_ps(_mm_load_ps(planes + nearAt[a]), oNear[a]), inv[a]), t0);
+        t1 = _mm_min_ps(_mm_mul_ps(_mm_sub_ps(_mm_load_ps(planes + farAt[a]), oFar[a]), inv[a]), t1);
+    };
+    axis(0);
+    axis(1);
+    axis(2);
     // A distance that overflowed stands for one beyond the largest float, not for infinity
     const __m128 big = _mm_set1_ps(3.40282347e38f);
     t0 = _mm_min_ps(t0, big);
@@ -227,7 +276,7 @@ void WideBvh::walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit) 
         if (current & kLeaf) {
             uint32_t first = (current & ~kLeaf) >> 2, count = (current & 3) + 1;
             for (uint32_t i = 0; i < count; ++i)
-                if (visit(order_[first + i], tMax)) return;
+                if (visit(first + i, tMax)) return;
         } else {
             const Node &n = nodes_[current];
             alignas(16) float tn[4];

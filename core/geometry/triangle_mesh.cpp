@@ -38,10 +38,21 @@ TriangleMesh::TriangleMesh(ir::MeshPtr mesh, int buildThreads) : mesh_(std::move
             smooth_[i] = !(m.normals[t[0]] == m.normals[t[1]] && m.normals[t[1]] == m.normals[t[2]]);
     }
     bvh_ = WideBvh(m, buildThreads);
+    leafTriangles_ = leafOrder(m, bvh_);
     topology_ = ir::analyzeMesh(m);
 }
 
-size_t TriangleMesh::extraBytes() const { return bvh_.bytes() + smooth_.capacity() / 8; }
+LargeVector<TriangleMesh::LeafTriangle> TriangleMesh::leafOrder(const ir::Mesh &mesh,
+                                                                const WideBvh &bvh) {
+    LargeVector<LeafTriangle> out;
+    out.reserve(bvh.itemOrder().size());
+    for (uint32_t t : bvh.itemOrder()) out.push_back({mesh.triangles[t], t});
+    return out;
+}
+
+size_t TriangleMesh::extraBytes() const {
+    return bvh_.bytes() + leafTriangles_.capacity() * sizeof(LeafTriangle) + smooth_.capacity() / 8;
+}
 
 TriangleMesh::RayFrame::RayFrame(const Ray &r) : ray(&r) {
     // Permute so the ray's largest component is z, and shear so the ray runs along +z
@@ -55,7 +66,8 @@ TriangleMesh::RayFrame::RayFrame(const Ray &r) : ray(&r) {
 }
 
 bool TriangleMesh::intersectTriangle(const Ray &r, uint32_t triangle, Hit *hit) const {
-    return intersect(RayFrame(r), triangle, -kInfinity, kInfinity, false, hit);
+    return intersect(RayFrame(r), {mesh_->triangles[triangle], triangle}, -kInfinity, kInfinity,
+                     false, hit);
 }
 
 // The edge functions round once each through std::fma, which without an FMA instruction in the
@@ -66,10 +78,11 @@ bool TriangleMesh::intersectTriangle(const Ray &r, uint32_t triangle, Hit *hit) 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
 __attribute__((target_clones("fma", "default")))
 #endif
-bool TriangleMesh::intersect(const RayFrame &f, uint32_t triangle, double tMin, double tMax,
+bool TriangleMesh::intersect(const RayFrame &f, const LeafTriangle &tri, double tMin, double tMax,
                              bool tMaxInclusive, Hit *hit) const {
     const Ray &r = *f.ray;
-    const auto &idx = mesh_->triangles[triangle];
+    const auto &idx = tri.v;
+    const uint32_t triangle = tri.triangle;
     const Vec3 &p0 = mesh_->positions[idx[0]], &p1 = mesh_->positions[idx[1]],
                &p2 = mesh_->positions[idx[2]];
     // Translate the vertices to the ray origin, permute and shear into the ray's frame
@@ -128,10 +141,11 @@ bool TriangleMesh::closest(const Ray &r, double tMin, double tMax, Hit *hit) con
     bool found = false;
     double far = tMax;
     RayFrame frame(r);
-    bvh_.traverse(r, tMin, &far, [&](uint32_t tri, double *tFar) {
+    bvh_.traverseSlots(r, tMin, &far, [&](uint32_t slot, double *tFar) {
         Hit h;
+        const LeafTriangle &tri = leafTriangles_[slot];
         // A tie at the closest t goes to the lower triangle index
-        if (!intersect(frame, tri, tMin, *tFar, found && tri < hit->triangle, &h)) return false;
+        if (!intersect(frame, tri, tMin, *tFar, found && tri.triangle < hit->triangle, &h)) return false;
         // A hit within its own rounding error of the origin may be the surface the ray
         // starts on: t must be conservatively positive (pbrt-v3 Triangle::Intersect)
         if (h.t <= h.tError) return false;
@@ -146,9 +160,9 @@ bool TriangleMesh::closest(const Ray &r, double tMin, double tMax, Hit *hit) con
 void TriangleMesh::allHits(const Ray &r, std::vector<Hit> &out) const {
     double far = kInfinity;
     RayFrame frame(r);
-    bvh_.traverse(r, -kInfinity, &far, [&](uint32_t tri, double *) {
+    bvh_.traverseSlots(r, -kInfinity, &far, [&](uint32_t slot, double *) {
         Hit h;
-        if (intersect(frame, tri, -kInfinity, kInfinity, false, &h)) out.push_back(h);
+        if (intersect(frame, leafTriangles_[slot], -kInfinity, kInfinity, false, &h)) out.push_back(h);
         return false;
     });
 }

@@ -4,6 +4,7 @@
 // winding number and an inside test).
 #pragma once
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -16,6 +17,16 @@ namespace rt {
 /// Immutable mesh geometry in object space, shared by every instance that places it.
 class TriangleMesh {
   public:
+    /// A triangle's vertex indices and its own index, kept in the BVH's leaf order so that a
+    /// leaf reads one contiguous run instead of the item order and then the triangle list.
+    struct LeafTriangle {
+        std::array<uint32_t, 3> v;
+        uint32_t triangle;
+        friend bool operator==(const LeafTriangle &, const LeafTriangle &) = default;
+    };
+    /// The triangles of `mesh` in the leaf order of `bvh` (built over that mesh).
+    static LargeVector<LeafTriangle> leafOrder(const ir::Mesh &mesh, const WideBvh &bvh);
+
     struct Hit {
         double t = 0;
         uint32_t triangle = 0;
@@ -36,6 +47,7 @@ class TriangleMesh {
     /// Bytes held by the BVH and the derived data (not counting the shared ir::Mesh).
     size_t extraBytes() const;
     const WideBvh &bvh() const { return bvh_; }
+    const LargeVector<LeafTriangle> &leafTriangles() const { return leafTriangles_; }
 
     /// Watertight ray-triangle test (Woop, Benthin and Wald 2013; pbrt-v3 section 3.6.2) for
     /// any t along the line, with a fill convention on edges and vertices: a ray through a
@@ -64,11 +76,12 @@ class TriangleMesh {
     };
     /// intersectTriangle for a ray frame, returning false early when t is not within
     /// (tMin, tMax), or (tMin, tMax] when tMaxInclusive.
-    bool intersect(const RayFrame &f, uint32_t triangle, double tMin, double tMax, bool tMaxInclusive,
-                   Hit *hit) const;
+    bool intersect(const RayFrame &f, const LeafTriangle &tri, double tMin, double tMax,
+                   bool tMaxInclusive, Hit *hit) const;
 
     ir::MeshPtr mesh_;
     WideBvh bvh_;
+    LargeVector<LeafTriangle> leafTriangles_;  ///< in bvh_.itemOrder()
     Bounds3 bounds_;
     ir::MeshTopology topology_;
     /// Per triangle: true when its vertex normals differ (POV-Ray shades only such triangles

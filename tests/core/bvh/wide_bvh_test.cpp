@@ -2,7 +2,8 @@
 // The four-wide mesh BVH: the closest hit (t and triangle) and every crossing of the line are
 // those of a brute-force loop over all triangles, on meshes with duplicate, coplanar
 // overlapping and degenerate triangles, near the origin and far from it; the float boxes hold
-// their triangles' double vertices; the tree is the same for 1, 2 and 5 build threads.
+// their triangles' double vertices; the tree is the same for 1, 2 and 5 build threads; the
+// mesh's leaf-ordered triangle copy matches the item order.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -179,6 +180,45 @@ TEST(WideBvh, SameTreeForAnyNumberOfBuildThreads) {
             ASSERT_TRUE(std::equal(a.child, a.child + 4, b.child));
         }
     }
+}
+
+TEST(WideBvh, LeafOrderedTrianglesAreTheTrianglesOfTheItemOrder) {
+    // The mesh's leaves read a copy of the triangles in leaf order: slot s must hold exactly
+    // the triangle that the item order names there, with its own index
+    auto m = troubleMesh(4, 1, Vec3(0));
+    TriangleMesh mesh(m);
+    const auto &order = mesh.bvh().itemOrder();
+    const auto &leaves = mesh.leafTriangles();
+    ASSERT_EQ(leaves.size(), order.size());
+    for (size_t s = 0; s < order.size(); ++s) {
+        ASSERT_EQ(leaves[s].triangle, order[s]);
+        ASSERT_EQ(leaves[s].v, m->triangles[order[s]]);
+    }
+    // traverseSlots visits the same items, in the same order, as traverse
+    for (const Ray &r : testRays(*m, 1, Vec3(0), 200)) {
+        std::vector<uint32_t> items, slots;
+        double t = kInfinity;
+        mesh.bvh().traverse(r, -kInfinity, &t, [&](uint32_t i, double *) {
+            items.push_back(i);
+            return false;
+        });
+        mesh.bvh().traverseSlots(r, -kInfinity, &t, [&](uint32_t s, double *) {
+            slots.push_back(order[s]);
+            return false;
+        });
+        ASSERT_EQ(slots, items);
+    }
+}
+
+TEST(WideBvh, LargeArraysAreAlignedForHugePages) {
+    LargeVector<uint64_t> big(size_t{3} << 18);  // 6 MiB
+    EXPECT_EQ(reinterpret_cast<uintptr_t>(big.data()) % (size_t{2} << 20), 0u);
+    for (size_t i = 0; i < big.size(); i += 4096) big[i] = i;
+    EXPECT_EQ(big[4096], 4096u);
+    LargeVector<uint32_t> small(3, 7), none;
+    EXPECT_EQ(small[2], 7u);
+    none.reserve(0);
+    EXPECT_TRUE(none.empty());
 }
 
 TEST(WideBvh, SmallEmptyAndCoincidentMeshes) {
