@@ -162,9 +162,11 @@ void CsgShape::evaluate(int index, const Ray &ray, const Vec3 &invDir, double w0
         w0 = std::max(w0, out.front().in.t - tieEpsilon(ray.o, out.front().in.t));
         w1 = std::min(w1, out.back().out.t + tieEpsilon(ray.o, out.back().out.t));
     }
-    std::vector<int> reached;
-    reachedOperands(node, ray, w0, w1, reached);
-    for (int child : reached)
+    // From the scratch pool: an allocation per ray and node cost 4 to 11 % of the hit time
+    // of plates and unions (csg_bench)
+    ScratchIndices reached(scratch);
+    reachedOperands(node, ray, w0, w1, *reached);
+    for (int child : *reached)
         if (!merge(child)) return;
 }
 

@@ -13,6 +13,13 @@ SpanList &SpanScratch::acquire() {
     return l;
 }
 
+std::vector<int> &SpanScratch::acquireIndices() {
+    if (indicesUsed_ == indexPool_.size()) indexPool_.push_back(std::make_unique<std::vector<int>>());
+    std::vector<int> &l = *indexPool_[indicesUsed_++];
+    l.clear();
+    return l;
+}
+
 bool Shape::firstCrossing(const Ray &ray, double tMin, double tMax, Crossing *c,
                           SpanScratch &scratch) const {
     ScratchList list(scratch);

@@ -17,6 +17,9 @@ class SpanScratch {
   public:
     SpanList &acquire();
     void release() { --used_; }
+    /// A list of operand indices, for a CSG node with many operands (nodes nest, so a pool).
+    std::vector<int> &acquireIndices();
+    void releaseIndices() { --indicesUsed_; }
     long long spanOps = 0;         ///< span-list merges performed
     long long prunedSubtrees = 0;  ///< CSG subtrees skipped by bounds or by the pruning rules
     /// Smallest t of coincident crossings that cancelled during the current evaluation.
@@ -25,6 +28,8 @@ class SpanScratch {
   private:
     std::vector<std::unique_ptr<SpanList>> pool_;
     size_t used_ = 0;
+    std::vector<std::unique_ptr<std::vector<int>>> indexPool_;
+    size_t indicesUsed_ = 0;
 };
 
 /// RAII hold on a scratch span list.
@@ -40,6 +45,20 @@ class ScratchList {
   private:
     SpanScratch &scratch_;
     SpanList &list_;
+};
+
+/// RAII hold on a scratch index list.
+class ScratchIndices {
+  public:
+    explicit ScratchIndices(SpanScratch &s) : scratch_(s), list_(s.acquireIndices()) {}
+    ~ScratchIndices() { scratch_.releaseIndices(); }
+    ScratchIndices(const ScratchIndices &) = delete;
+    ScratchIndices &operator=(const ScratchIndices &) = delete;
+    std::vector<int> &operator*() { return list_; }
+
+  private:
+    SpanScratch &scratch_;
+    std::vector<int> &list_;
 };
 
 class Shape {
