@@ -32,34 +32,25 @@ class SpanScratch {
     size_t indicesUsed_ = 0;
 };
 
-/// RAII hold on a scratch span list.
-class ScratchList {
+/// RAII hold on a list from one of SpanScratch's pools.
+template <typename List, List &(SpanScratch::*Acquire)(), void (SpanScratch::*Release)()>
+class ScratchHold {
   public:
-    explicit ScratchList(SpanScratch &s) : scratch_(s), list_(s.acquire()) {}
-    ~ScratchList() { scratch_.release(); }
-    ScratchList(const ScratchList &) = delete;
-    ScratchList &operator=(const ScratchList &) = delete;
-    SpanList &operator*() { return list_; }
-    SpanList *operator->() { return &list_; }
+    explicit ScratchHold(SpanScratch &s) : scratch_(s), list_((s.*Acquire)()) {}
+    ~ScratchHold() { (scratch_.*Release)(); }
+    ScratchHold(const ScratchHold &) = delete;
+    ScratchHold &operator=(const ScratchHold &) = delete;
+    List &operator*() { return list_; }
+    List *operator->() { return &list_; }
 
   private:
     SpanScratch &scratch_;
-    SpanList &list_;
+    List &list_;
 };
 
-/// RAII hold on a scratch index list.
-class ScratchIndices {
-  public:
-    explicit ScratchIndices(SpanScratch &s) : scratch_(s), list_(s.acquireIndices()) {}
-    ~ScratchIndices() { scratch_.releaseIndices(); }
-    ScratchIndices(const ScratchIndices &) = delete;
-    ScratchIndices &operator=(const ScratchIndices &) = delete;
-    std::vector<int> &operator*() { return list_; }
-
-  private:
-    SpanScratch &scratch_;
-    std::vector<int> &list_;
-};
+using ScratchList = ScratchHold<SpanList, &SpanScratch::acquire, &SpanScratch::release>;
+using ScratchIndices =
+    ScratchHold<std::vector<int>, &SpanScratch::acquireIndices, &SpanScratch::releaseIndices>;
 
 class Shape {
   public:
@@ -101,6 +92,10 @@ class LeafShape : public Shape {
     int material() const { return material_; }
     /// Order of this leaf's material by value, for the coincident-face tie-break.
     int tieRank = 0;
+    /// Position of this leaf among the compiled scene's leaves, from 1 (0 before): a name for
+    /// it that is the same in every process, where its address is not (tiles rendered by
+    /// separate processes must make the same adaptive-sampling decisions).
+    uint32_t sceneIndex = 0;
     /// Where the leaf came from (the primitive, polyhedron or import call), for errors.
     SourceLoc loc;
 
