@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <numeric>
 #include <unordered_map>
+#include <utility>
 
 #include "core/csg/csg_shape.h"
 #include "core/geometry/triangle_mesh.h"
@@ -17,9 +18,18 @@ namespace {
 template <typename F>
 void forEachLeaf(const Shape &object, F &&f) {
     if (const auto *csg = dynamic_cast<const CsgShape *>(&object))
-        for (const auto &l : csg->leaves()) f(*l);
+        for (const auto &l : csg->leaves()) f(std::as_const(*l));
     else
         f(static_cast<const LeafShape &>(object));
+}
+
+/// The same, where f may change the leaves.
+template <typename F>
+void forEachLeaf(Shape &object, F &&f) {
+    if (auto *csg = dynamic_cast<CsgShape *>(&object))
+        for (const auto &l : csg->leaves()) f(*l);
+    else
+        f(static_cast<LeafShape &>(object));
 }
 
 class Compiler {
@@ -385,10 +395,14 @@ std::unique_ptr<RenderScene> RenderScene::compile(const ir::Scene &scene, Diagno
     rs->materialUsed_.assign(scene.materials.size(), false);
     std::vector<Bounds3> bounds;
     bounds.reserve(rs->objects_.size());
+    uint32_t leaves = 0;
     for (const auto &o : rs->objects_) {
         bounds.push_back(o->worldBounds());
         if (dynamic_cast<const CsgShape *>(o.get())) ++rs->stats_.csgObjects;
-        forEachLeaf(*o, [&](const LeafShape &l) { rs->materialUsed_[l.material()] = true; });
+        forEachLeaf(*o, [&](LeafShape &l) {
+            rs->materialUsed_[l.material()] = true;
+            l.sceneIndex = ++leaves;
+        });
     }
     rs->bvh_ = Bvh(bounds);
     rs->stats_.objects = rs->objects_.size();

@@ -211,10 +211,9 @@ std::array<uint8_t, 3> displayBytes(const Rgb &d) {
     return b;
 }
 
-/// 32-bit hash of the primitive a camera ray hit (null: the background).
-uint32_t hitKey(const LeafShape *hit) {
-    return static_cast<uint32_t>(mixBits(reinterpret_cast<uintptr_t>(hit)));
-}
+/// The primitive a camera ray hit: its index in the compiled scene, 0 for the background.
+/// (A hash of its address differed between processes, and two primitives could share one.)
+uint32_t hitKey(const LeafShape *hit) { return hit ? hit->sceneIndex : 0; }
 
 /// The refinement threshold in the 1/255 steps of displayBytes.
 int thresholdBytes(const RenderOptions &opts) {

@@ -5,10 +5,13 @@
 // (edges, shadow boundaries) are the ones refined.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <vector>
 
+#include "core/csg/csg_shape.h"
 #include "core/image/image_compare.h"
 #include "core/render/render_plan.h"
 #include "core/render/renderer.h"
@@ -199,6 +202,24 @@ material(color="green") translate([2, -1, 0]) cube([1, 2, 1]);
     EXPECT_LT(examinedSeams, w * h);
     EXPECT_GT(examinedSeams, contrasted / 4);
     EXPECT_GT(w * h - seams.pixelsBySamples[0], 0);
+}
+
+// The adaptive pass tells primitives apart by their index in the compiled scene, which every
+// process (every tile) gives them alike, where a hash of their addresses could differ between
+// processes and could collide: every leaf has its own index, from 1.
+TEST(AdaptiveRender, EveryLeafHasItsOwnSceneIndex) {
+    Compiled c = loadScene("print_plate.scad");
+    std::vector<uint32_t> seen;
+    for (const auto &o : c.rs->objects()) {
+        if (const auto *csg = dynamic_cast<const CsgShape *>(o.get())) {
+            for (const auto &l : csg->leaves()) seen.push_back(l->sceneIndex);
+        } else {
+            seen.push_back(static_cast<const LeafShape &>(*o).sceneIndex);
+        }
+    }
+    std::sort(seen.begin(), seen.end());
+    ASSERT_GT(seen.size(), 100u);
+    for (size_t i = 0; i < seen.size(); ++i) EXPECT_EQ(seen[i], i + 1);
 }
 
 TEST(AdaptiveRender, OptionsAreValidated) {
