@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <numeric>
+#include <type_traits>
 #include <unordered_map>
-#include <utility>
 
 #include "core/csg/csg_shape.h"
 #include "core/geometry/triangle_mesh.h"
@@ -14,22 +14,15 @@ namespace rt {
 
 namespace {
 
-/// Calls f for every primitive or mesh instance of a solid.
-template <typename F>
-void forEachLeaf(const Shape &object, F &&f) {
+/// Calls f for every primitive or mesh instance of a solid; the leaves are const where the
+/// solid is (S is Shape or const Shape).
+template <typename S, typename F>
+void forEachLeaf(S &object, F &&f) {
+    using Leaf = std::conditional_t<std::is_const_v<S>, const LeafShape, LeafShape>;
     if (const auto *csg = dynamic_cast<const CsgShape *>(&object))
-        for (const auto &l : csg->leaves()) f(std::as_const(*l));
+        for (const auto &l : csg->leaves()) f(static_cast<Leaf &>(*l));
     else
-        f(static_cast<const LeafShape &>(object));
-}
-
-/// The same, where f may change the leaves.
-template <typename F>
-void forEachLeaf(Shape &object, F &&f) {
-    if (auto *csg = dynamic_cast<CsgShape *>(&object))
-        for (const auto &l : csg->leaves()) f(*l);
-    else
-        f(static_cast<LeafShape &>(object));
+        f(static_cast<Leaf &>(object));
 }
 
 class Compiler {
