@@ -87,6 +87,23 @@ void SceneArgs::addTo(CLI::App &cmd, Positional positional) {
               -360.0, 360.0);
 }
 
+std::vector<std::string> SceneArgs::optionArguments() const {
+    std::vector<std::string> args = {"--max-steps", std::to_string(maxSteps), "--max-elements",
+                                     std::to_string(maxElements)};
+    for (const std::string &d : defines) args.insert(args.end(), {"-D", d});
+    for (const std::string &l : libraries) args.insert(args.end(), {"-L", l});
+    if (!facets.empty()) args.insert(args.end(), {"--facets", facets});
+    if (!environment.empty()) args.insert(args.end(), {"-e", environment});
+    if (environmentRotate != 0) {
+        // Seventeen significant digits read back as the same double (std::to_string keeps six
+        // decimals)
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.17g", environmentRotate);
+        args.insert(args.end(), {"--env-rotate", buf});
+    }
+    return args;
+}
+
 LoadOptions SceneArgs::loadOptions(bool quiet) const {
     LoadOptions lo;
     lo.quiet = quiet;

@@ -64,6 +64,9 @@ struct SceneArgs {
     void addTo(CLI::App &cmd, Positional positional = Positional::Required);
     /// Throws std::invalid_argument for a malformed -D.
     LoadOptions loadOptions(bool quiet) const;
+    /// The options addTo registers, as command-line arguments that give back these values
+    /// (without the positional scene): for a subcommand run as its own process.
+    std::vector<std::string> optionArguments() const;
 };
 
 /// Prints warnings (and notes unless quiet) to stderr as they are reported, first clearing

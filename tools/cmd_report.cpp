@@ -160,7 +160,6 @@ CheckResult runCheckCaught(const CheckArgs &a) {
 /// with POV-Ray where installed; reads back its CSV and SVG.
 ConvergeCurve runConverge(const ReportArgs &ra, const std::string &scene, const std::string &dir) {
     const CheckArgs &a = ra.check;
-    const SceneArgs &sa = a.scene;
     std::error_code ec;
     fs::path self = fs::read_symlink("/proc/self/exe", ec);
     if (ec) throw std::runtime_error("converge: cannot find the scadray binary (/proc/self/exe)");
@@ -181,18 +180,10 @@ ConvergeCurve runConverge(const ReportArgs &ra, const std::string &scene, const 
                                      "--supersample",
                                      std::to_string(a.supersample),
                                      "--timeout",
-                                     std::to_string(a.timeout),
-                                     "--max-steps",
-                                     std::to_string(sa.maxSteps),
-                                     "--max-elements",
-                                     std::to_string(sa.maxElements)};
+                                     std::to_string(a.timeout)};
     if (pov::povrayAvailable()) args.push_back("--povray");
-    for (const std::string &d : sa.defines) args.insert(args.end(), {"-D", d});
-    for (const std::string &l : sa.libraries) args.insert(args.end(), {"-L", l});
-    if (!sa.facets.empty()) args.insert(args.end(), {"--facets", sa.facets});
-    if (!sa.environment.empty()) args.insert(args.end(), {"-e", sa.environment});
-    if (sa.environmentRotate != 0)
-        args.insert(args.end(), {"--env-rotate", std::to_string(sa.environmentRotate)});
+    std::vector<std::string> sceneOptions = a.scene.optionArguments();
+    args.insert(args.end(), sceneOptions.begin(), sceneOptions.end());
     std::string stem = fs::path(scene).stem().string();
     ProcessOptions po;
     po.logFile = (fs::path(dir) / (stem + "_converge.log")).string();
