@@ -4,7 +4,9 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "core/math/bounds3.h"
@@ -45,13 +47,18 @@ class Bvh {
         uint32_t index;
     };
     int build(std::vector<BuildItem> &items, size_t begin, size_t end, int depth);
-    /// What the slab test needs of a ray, computed once per traversal.
+    /// What the slab test needs of a ray, computed once per traversal: besides the origin and
+    /// the reciprocal direction, where in a box each axis' near and far planes lie (in doubles
+    /// from min.x), so a node test loads them without a branch on the direction's sign.
     struct RaySlabs {
         Vec3 o, invDir;
         bool neg[3];
+        int nearAt[3], farAt[3];
         explicit RaySlabs(const Ray &ray)
             : o(ray.o), invDir(1 / ray.d.x, 1 / ray.d.y, 1 / ray.d.z),
-              neg{invDir.x < 0, invDir.y < 0, invDir.z < 0} {}
+              neg{invDir.x < 0, invDir.y < 0, invDir.z < 0},
+              nearAt{neg[0] ? 3 : 0, neg[1] ? 4 : 1, neg[2] ? 5 : 2},
+              farAt{neg[0] ? 0 : 3, neg[1] ? 1 : 4, neg[2] ? 2 : 5} {}
     };
     static bool hitNode(const Bounds3 &b, const RaySlabs &r, double tMin, double tMax);
 
@@ -61,28 +68,40 @@ class Bvh {
 };
 
 inline bool Bvh::hitNode(const Bounds3 &b, const RaySlabs &r, double tMin, double tMax) {
+    static_assert(sizeof(Bounds3) == 6 * sizeof(double) && offsetof(Bounds3, max) == 3 * sizeof(double),
+                  "RaySlabs indexes a box's six planes");
+    // The planes are read as the box's bytes (memcpy of a double: one load)
+    const char *planes = reinterpret_cast<const char *>(&b);
+    auto plane = [planes](int at) {
+        double v;
+        std::memcpy(&v, planes + at * sizeof(double), sizeof v);
+        return v;
+    };
     // pbrt-v3 Bounds3::IntersectP with precomputed reciprocal, written without a loop or an early
     // exit so the three slabs are computed side by side (the result is the same: t0 only grows
     // and t1 only shrinks). The comparisons are NaN-safe: a NaN slab leaves t0/t1 unchanged.
-    double nearX = ((r.neg[0] ? b.max.x : b.min.x) - r.o.x) * r.invDir.x;
-    double nearY = ((r.neg[1] ? b.max.y : b.min.y) - r.o.y) * r.invDir.y;
-    double nearZ = ((r.neg[2] ? b.max.z : b.min.z) - r.o.z) * r.invDir.z;
-    double farX = ((r.neg[0] ? b.min.x : b.max.x) - r.o.x) * r.invDir.x;
-    double farY = ((r.neg[1] ? b.min.y : b.max.y) - r.o.y) * r.invDir.y;
-    double farZ = ((r.neg[2] ? b.min.z : b.max.z) - r.o.z) * r.invDir.z;
-    // Grow the far distance by its rounding error (pbrt's 1 + 2 gamma(3)) away from zero:
-    // span queries look behind the origin too (tMin = -inf), and scaling a negative tFar
-    // would shrink it, so a flat node (one face of a mesh) behind the origin was missed
-    farX += 2 * gamma(3) * std::abs(farX);
-    farY += 2 * gamma(3) * std::abs(farY);
-    farZ += 2 * gamma(3) * std::abs(farZ);
-    double t0 = tMin, t1 = tMax;
+    double nearX = (plane(r.nearAt[0]) - r.o.x) * r.invDir.x;
+    double nearY = (plane(r.nearAt[1]) - r.o.y) * r.invDir.y;
+    double nearZ = (plane(r.nearAt[2]) - r.o.z) * r.invDir.z;
+    double farX = (plane(r.farAt[0]) - r.o.x) * r.invDir.x;
+    double farY = (plane(r.farAt[1]) - r.o.y) * r.invDir.y;
+    double farZ = (plane(r.farAt[2]) - r.o.z) * r.invDir.z;
+    double t0 = tMin;
     t0 = nearX > t0 ? nearX : t0;
-    t1 = farX < t1 ? farX : t1;
     t0 = nearY > t0 ? nearY : t0;
-    t1 = farY < t1 ? farY : t1;
     t0 = nearZ > t0 ? nearZ : t0;
-    t1 = farZ < t1 ? farZ : t1;
+    // The nearest far plane, grown by its rounding error (pbrt's 1 + 2 gamma(3)) away from zero:
+    // span queries look behind the origin too (tMin = -inf), and scaling a negative tFar
+    // would shrink it, so a flat node (one face of a mesh) behind the origin was missed.
+    // Growing is monotonic, so growing the nearest equals the nearest of the grown (where a
+    // far distance is -inf, growing it gives NaN and the slabs' far ends are then all left out:
+    // more nodes are visited, never fewer)
+    double far = kInfinity;
+    far = farX < far ? farX : far;
+    far = farY < far ? farY : far;
+    far = farZ < far ? farZ : far;
+    far += 2 * gamma(3) * std::abs(far);
+    double t1 = far < tMax ? far : tMax;
     return t0 <= t1;
 }
 
