@@ -141,8 +141,10 @@ struct EmbreeScene {
 std::unique_ptr<EmbreeScene> embreeBuild(const std::vector<float> &vertices,
                                          const std::vector<uint32_t> &indices, int threads) {
     auto s = std::make_unique<EmbreeScene>();
-    char config[32];
-    std::snprintf(config, sizeof config, "threads=%d", threads);
+    // EMBREE_CONFIG adds to the device configuration, e.g. "isa=sse4.2" to compare at one ISA
+    const char *extra = std::getenv("EMBREE_CONFIG");
+    char config[256];
+    std::snprintf(config, sizeof config, "threads=%d%s%s", threads, extra ? "," : "", extra ? extra : "");
     s->device = rtcNewDevice(config);
     rtcSetDeviceMemoryMonitorFunction(s->device, monitor, &s->memory);
     s->scene = rtcNewScene(s->device);
