@@ -63,6 +63,61 @@ TEST(Bvh, MatchesBruteForceOnRandomScenes) {
     }
 }
 
+// The node test may visit more than it must, never less: every box that the exact ray meets within
+// [tMin, tMax] is visited. The boxes are built around points of the ray (o + t d rounded, each
+// axis widened by 0 to 2 relative steps, so some are flat or points in one axis) at t before and
+// behind the origin, among random others; directions include zero and negative-zero components,
+// and the scales run from 1e-6 to 1e6.
+TEST(Bvh, VisitsEveryBoxTheRayMeets) {
+    Rng rng(29);
+    for (double scale : {1e-6, 1.0, 1e6}) {
+        SCOPED_TRACE(scale);
+        for (int i = 0; i < 600; ++i) {
+            Vec3 o = Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) * (20 * scale);
+            Vec3 d = normalize(Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5));
+            // One ray in three runs parallel to one or two axes, some with a -0.0 component
+            if (i % 3 == 1) d[i % 2] = (i & 4) ? -0.0 : 0.0;
+            if (i % 9 == 1) d[2] = (i & 8) ? -0.0 : 0.0;
+            if (d == Vec3(0)) d.z = 1;
+            d = normalize(d);
+            bool behind = i % 2 == 0;
+            double tMin = behind ? -kInfinity : 0;
+            std::vector<Bounds3> boxes;
+            std::vector<bool> mustVisit;
+            for (int k = 0; k < 24; ++k) {
+                double t = (rng.uniform() * 20 - (behind ? 10 : 0)) * scale;
+                Vec3 p = o + d * t;
+                Vec3 lo = p, hi = p;
+                int flatAxis = static_cast<int>(rng.uniform() * 3);
+                for (int a = 0; a < 3; ++a) {
+                    if (a == flatAxis && k % 2 == 0) continue;  // flat in this axis
+                    double w = (1e-9 + rng.uniform() * 0.5) * scale;
+                    lo[a] -= w;
+                    hi[a] += w;
+                }
+                boxes.push_back(Bounds3(lo, hi));
+                mustVisit.push_back(true);
+            }
+            for (int k = 0; k < 24; ++k) {
+                Vec3 c = Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) * (30 * scale);
+                boxes.push_back(Bounds3(c, c + Vec3(rng.uniform(), rng.uniform(), rng.uniform()) * scale));
+                mustVisit.push_back(false);
+            }
+            Bvh bvh(boxes);
+            std::vector<bool> visited(boxes.size(), false);
+            double tMax = kInfinity;
+            bvh.traverse(Ray(o, d), tMin, &tMax, [&](uint32_t k, double *) {
+                visited[k] = true;
+                return false;
+            });
+            for (size_t k = 0; k < boxes.size(); ++k)
+                if (mustVisit[k]) {
+                    ASSERT_TRUE(visited[k]) << "ray " << i << " box " << k;
+                }
+        }
+    }
+}
+
 TEST(Bvh, HandlesCoincidentCentroidsAndEmptyInput) {
     std::vector<Bounds3> same(40, Bounds3(Vec3(-1), Vec3(1)));
     Bvh bvh(same);
