@@ -17,6 +17,21 @@
 namespace rt {
 namespace {
 
+// a * b + c as the code is built: a clone for CPUs with FMA (which the resolver picks on such a
+// CPU, as for the triangle test) is where GCC would fuse it without -ffp-contract=off
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
+__attribute__((target_clones("fma", "default")))
+#endif
+double productPlusSum(double a, double b, double c) {
+    return a * b + c;
+}
+
+// The product (1 + 2^-30)(1 - 2^-30) = 1 - 2^-60 rounds to 1, so the sum is 0; fused, it would be
+// -2^-60. The error bounds and the same picture on every CPU need the rounded product.
+TEST(FloatUtil, ProductsAreRoundedBeforeTheSum) {
+    EXPECT_EQ(productPlusSum(1 + 0x1p-30, 1 - 0x1p-30, -1), 0.0);
+}
+
 TEST(Quadratic, SolvesOrderedRoots) {
     double t0, t1;
     ASSERT_TRUE(solveQuadratic(1, -3, 2, &t0, &t1));
