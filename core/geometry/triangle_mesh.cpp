@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/math/float_util.h"
+#include "core/math/fma_clone.h"
 
 namespace rt {
 
@@ -71,14 +72,9 @@ bool TriangleMesh::intersectTriangle(const Ray &r, uint32_t triangle, Hit *hit) 
 }
 
 // The edge functions round once each through std::fma, which without an FMA instruction in the
-// x86-64 baseline is a call into libm; a clone for CPUs with FMA computes the same results
-// (fma is exactly rounded either way, and nothing else is contracted: GCC would fuse the other
-// products and sums of such a clone too, even in ISO C++ mode, were it not for the build's
-// -ffp-contract=off) with the instruction inline. GCC only: Clang refuses to multiversion a function already
-// used above its definition, and the Clang builds are the sanitizer and fuzzing ones.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
-__attribute__((target_clones("fma", "default")))
-#endif
+// x86-64 baseline is a call into libm: a copy for CPUs with FMA has it inline, with the same
+// results (core/math/fma_clone.h)
+SCADRAY_FMA_CLONES
 bool TriangleMesh::intersect(const RayFrame &f, const LeafTriangle &tri, double tMin, double tMax,
                              bool tMaxInclusive, Hit *hit) const {
     const Ray &r = *f.ray;

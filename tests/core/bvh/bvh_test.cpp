@@ -73,7 +73,8 @@ TEST(Bvh, VisitsEveryBoxTheRayMeets) {
     for (double scale : {1e-6, 1.0, 1e6}) {
         SCOPED_TRACE(scale);
         for (int i = 0; i < 600; ++i) {
-            Vec3 o = Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) * (20 * scale);
+            Vec3 o = Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) *
+                     (20 * scale);
             Vec3 d = normalize(Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5));
             // One ray in three runs parallel to one or two axes, some with a -0.0 component
             if (i % 3 == 1) d[i % 2] = (i & 4) ? -0.0 : 0.0;
@@ -99,8 +100,10 @@ TEST(Bvh, VisitsEveryBoxTheRayMeets) {
                 mustVisit.push_back(true);
             }
             for (int k = 0; k < 24; ++k) {
-                Vec3 c = Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) * (30 * scale);
-                boxes.push_back(Bounds3(c, c + Vec3(rng.uniform(), rng.uniform(), rng.uniform()) * scale));
+                Vec3 c = Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) *
+                         (30 * scale);
+                Vec3 size = Vec3(rng.uniform(), rng.uniform(), rng.uniform()) * scale;
+                boxes.push_back(Bounds3(c, c + size));
                 mustVisit.push_back(false);
             }
             Bvh bvh(boxes);

@@ -10,6 +10,7 @@
 #include "core/math/bounds3.h"
 #include "core/math/degree_trig.h"
 #include "core/math/float_util.h"
+#include "core/math/fma_clone.h"
 #include "core/math/quadratic.h"
 #include "core/math/rng.h"
 #include "core/math/transform.h"
@@ -17,11 +18,9 @@
 namespace rt {
 namespace {
 
-// a * b + c as the code is built: a clone for CPUs with FMA (which the resolver picks on such a
+// a * b + c as the code is built: the copy for CPUs with FMA (which the loader picks on such a
 // CPU, as for the triangle test) is where GCC would fuse it without -ffp-contract=off
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
-__attribute__((target_clones("fma", "default")))
-#endif
+SCADRAY_FMA_CLONES
 double productPlusSum(double a, double b, double c) {
     return a * b + c;
 }
