@@ -17,6 +17,9 @@
 #include <stdexcept>
 #include <new>
 #include <thread>
+#include <type_traits>
+
+#include "core/math/float_round.h"
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -46,30 +49,6 @@ void freeLarge(void *p) noexcept { std::free(p); }
 
 namespace {
 
-/// The next float towards +infinity (or -infinity when `down`), by its bits: std::nextafter
-/// is a call into libm, six of them per item box and two per ray. f is not NaN; at an
-/// infinity pointing away (-inf up, +inf down) the step gives the largest finite float.
-float stepFloat(float f, bool down) {
-    constexpr float kStep = std::numeric_limits<float>::denorm_min();
-    if (f == 0) return down ? -kStep : kStep;
-    uint32_t bits;
-    std::memcpy(&bits, &f, 4);
-    // Away from zero adds one to the magnitude, towards zero takes one off
-    bits += (f > 0) != down ? 1 : -1;
-    std::memcpy(&f, &bits, 4);
-    return f;
-}
-
-float roundDown(double x) {
-    float f = static_cast<float>(x);
-    return static_cast<double>(f) > x ? stepFloat(f, true) : f;
-}
-
-float roundUp(double x) {
-    float f = static_cast<float>(x);
-    return static_cast<double>(f) < x ? stepFloat(f, false) : f;
-}
-
 /// Four floats: x, y, z and a spare lane, in one SSE register where there is SSE.
 struct F4 {
 #if defined(__SSE2__)
@@ -81,8 +60,16 @@ struct F4 {
     friend F4 min(F4 a, F4 b) { return {_mm_min_ps(a.v, b.v)}; }
     friend F4 max(F4 a, F4 b) { return {_mm_max_ps(a.v, b.v)}; }
     void store(float out[4]) const { _mm_storeu_ps(out, v); }
-    /// Truncated to int, lane by lane.
-    void storeInt(int out[4]) const { _mm_storeu_si128(reinterpret_cast<__m128i *>(out), _mm_cvttps_epi32(v)); }
+    /// Bit i set where lane i of a is less than that of b.
+    friend int lessMask(F4 a, F4 b) { return _mm_movemask_ps(_mm_cmplt_ps(a.v, b.v)); }
+    /// The first three lanes truncated to int, taken out of the register one by one (through
+    /// memory, each would wait for the whole store).
+    void storeBins(int out[3]) const {
+        __m128i b = _mm_cvttps_epi32(v);
+        out[0] = _mm_cvtsi128_si32(b);
+        out[1] = _mm_cvtsi128_si32(_mm_shuffle_epi32(b, 1));
+        out[2] = _mm_cvtsi128_si32(_mm_shuffle_epi32(b, 2));
+    }
 #else
     float v[4];
     static F4 of(float x, float y, float z, float w) { return {{x, y, z, w}}; }
@@ -96,8 +83,13 @@ struct F4 {
     friend F4 min(F4 a, F4 b) { return zip(a, b, [](float x, float y) { return x < y ? x : y; }); }
     friend F4 max(F4 a, F4 b) { return zip(a, b, [](float x, float y) { return x > y ? x : y; }); }
     void store(float out[4]) const { std::copy(v, v + 4, out); }
-    void storeInt(int out[4]) const {
-        for (int i = 0; i < 4; ++i) out[i] = static_cast<int>(v[i]);
+    void storeBins(int out[3]) const {
+        for (int i = 0; i < 3; ++i) out[i] = static_cast<int>(v[i]);
+    }
+    friend int lessMask(F4 a, F4 b) {
+        int m = 0;
+        for (int i = 0; i < 4; ++i) m |= (a.v[i] < b.v[i]) << i;
+        return m;
     }
 #endif
 };
@@ -111,10 +103,19 @@ struct Box {
     void grow(const Box &b) { grow(b.lo, b.hi); }
     /// Half the surface area; 0 for an empty box.
     float halfArea() const {
+#if defined(__SSE2__)
+        // xy + yz + zx, summed in that order as the scalar code below
+        __m128 d = _mm_sub_ps(hi.v, lo.v);
+        if ((_mm_movemask_ps(_mm_cmpge_ps(d, _mm_setzero_ps())) & 7) != 7) return 0;
+        __m128 p = _mm_mul_ps(d, _mm_shuffle_ps(d, d, _MM_SHUFFLE(3, 0, 2, 1)));
+        __m128 xyPlusYz = _mm_add_ss(p, _mm_shuffle_ps(p, p, _MM_SHUFFLE(1, 1, 1, 1)));
+        return _mm_cvtss_f32(_mm_add_ss(xyPlusYz, _mm_shuffle_ps(p, p, _MM_SHUFFLE(2, 2, 2, 2))));
+#else
         float d[4];
         (hi - lo).store(d);
         if (!(d[0] >= 0 && d[1] >= 0 && d[2] >= 0)) return 0;
         return d[0] * d[1] + d[1] * d[2] + d[2] * d[0];
+#endif
     }
     float lower(int axis) const { float f[4]; lo.store(f); return f[axis]; }
     float upper(int axis) const { float f[4]; hi.store(f); return f[axis]; }
@@ -175,8 +176,8 @@ class WideBvhBuilder {
                 uint32_t bits = static_cast<uint32_t>(i) | Item::kTag;
                 float tag;
                 std::memcpy(&tag, &bits, 4);
-                items_[i] = {F4::of(roundDown(lo[0]), roundDown(lo[1]), roundDown(lo[2]), 0),
-                             F4::of(roundUp(hi[0]), roundUp(hi[1]), roundUp(hi[2]), tag)};
+                items_[i] = {F4::of(floatBelow(lo[0]), floatBelow(lo[1]), floatBelow(lo[2]), 0),
+                             F4::of(floatAbove(hi[0]), floatAbove(hi[1]), floatAbove(hi[2]), tag)};
             }
         });
     }
@@ -214,18 +215,19 @@ class WideBvhBuilder {
         Box boxes[3][kBins];
         uint32_t counts[3][kBins];
         Bins() {}  // left uninitialised: clear() sets what is used
-        void clear(int bins) {
+        /// Clears the first `bins` bins of the axes in `axes` (bit a for axis a).
+        void clear(int bins, int axes) {
             for (int a = 0; a < 3; ++a)
-                for (int k = 0; k < bins; ++k) {
+                for (int k = 0; k < bins && (axes >> a & 1); ++k) {
                     boxes[a][k] = Box();
                     counts[a][k] = 0;
                 }
         }
         /// Adds the items of `o`: boxes merge by min and max and counts by sums, both exact,
         /// so the bins do not depend on how the items were shared out.
-        void merge(const Bins &o, int bins) {
+        void merge(const Bins &o, int bins, int axes) {
             for (int a = 0; a < 3; ++a)
-                for (int k = 0; k < bins; ++k) {
+                for (int k = 0; k < bins && (axes >> a & 1); ++k) {
                     boxes[a][k].grow(o.boxes[a][k]);
                     counts[a][k] += o.counts[a][k];
                 }
@@ -287,31 +289,51 @@ class WideBvhBuilder {
             const F4 origin = r.centroids.lo, scale4 = F4::of(scale[0], scale[1], scale[2], 0);
             const float lastBin = static_cast<float>(nBins - 1);
             const F4 zero = F4::of(0, 0, 0, 0), last = F4::of(lastBin, lastBin, lastBin, 0);
-            auto binOne = [&](const Item &it, Bins &out) {
-                int b[4];
-                min(max((it.centroid() - origin) * scale4, zero), last).storeInt(b);
-                for (int a = 0; a < 3; ++a) {
-                    ++out.counts[a][b[a]];
-                    out.boxes[a][b[a]].grow(it.lo, it.hi);
+            int axes = 0;
+            for (int a = 0; a < 3; ++a) axes |= (scale[a] > 0) << a;
+            // One axis (the longest, for a small range): only its bins
+            const int only = axes == 1 ? 0 : axes == 2 ? 1 : axes == 4 ? 2 : -1;
+            if (only < 0) axes = 7;
+            // Instantiated for one axis and for all three, so the choice is made once per range
+            auto binOne = [&](auto oneAxis, const Item &it, Bins &out) __attribute__((always_inline)) {
+                int b[3];
+                min(max((it.centroid() - origin) * scale4, zero), last).storeBins(b);
+                const F4 itemLo = it.lo, itemHi = it.hi;
+                if constexpr (decltype(oneAxis)::value) {
+                    ++out.counts[only][b[only]];
+                    out.boxes[only][b[only]].grow(itemLo, itemHi);
+                } else {
+                    ++out.counts[0][b[0]];
+                    out.boxes[0][b[0]].grow(itemLo, itemHi);
+                    ++out.counts[1][b[1]];
+                    out.boxes[1][b[1]].grow(itemLo, itemHi);
+                    ++out.counts[2][b[2]];
+                    out.boxes[2][b[2]].grow(itemLo, itemHi);
                 }
             };
-            auto binItems = [&](size_t begin, size_t end, Bins &out) {
-                out.clear(nBins);
+            auto binRange = [&](auto oneAxis, size_t begin, size_t end, Bins &out) {
+                out.clear(nBins, axes);
                 if (end - begin < kTwoBinSetsFrom) {
-                    for (size_t i = begin; i < end; ++i) binOne(items_[i], out);
+                    for (size_t i = begin; i < end; ++i) binOne(oneAxis, items_[i], out);
                     return;
                 }
                 // Neighbouring items mostly fall in the same bins: alternate between two sets
                 // of bins, so that one item's update need not wait for the previous one's
                 Bins other;
-                other.clear(nBins);
+                other.clear(nBins, axes);
                 size_t i = begin;
                 for (; i + 1 < end; i += 2) {
-                    binOne(items_[i], out);
-                    binOne(items_[i + 1], other);
+                    binOne(oneAxis, items_[i], out);
+                    binOne(oneAxis, items_[i + 1], other);
                 }
-                if (i < end) binOne(items_[i], out);
-                out.merge(other, nBins);
+                if (i < end) binOne(oneAxis, items_[i], out);
+                out.merge(other, nBins, axes);
+            };
+            auto binItems = [&](size_t begin, size_t end, Bins &out) {
+                if (only >= 0)
+                    binRange(std::true_type(), begin, end, out);
+                else
+                    binRange(std::false_type(), begin, end, out);
             };
             // The top levels bin in parallel: boxes merge by min and max and counts by sums,
             // both exact, so the bins are the same for any number of threads
@@ -323,7 +345,7 @@ class WideBvhBuilder {
                     binItems(begin, end, parts[part]);
                 });
                 merged = parts[0];
-                for (size_t p = 1; p < parts.size(); ++p) merged.merge(parts[p], nBins);
+                for (size_t p = 1; p < parts.size(); ++p) merged.merge(parts[p], nBins, axes);
             } else {
                 binItems(r.begin, r.end, merged);
             }
@@ -381,32 +403,42 @@ class WideBvhBuilder {
         const int axis = r.axis;
         const float lo = r.centroids.lower(axis);
         const float scale = binScale(r.bins, r.centroids.upper(axis) - lo);
-        auto goesLeft = [&](const Item &it) {
-            float c[4];
-            it.centroid().store(c);
-            // As the binning computes it: clamp, then truncate
-            float f = std::min(std::max((c[axis] - lo) * scale, 0.0f), static_cast<float>(r.bins - 1));
-            return static_cast<int>(f) <= r.bin;
-        };
-        // Partition and measure both sides in the same pass
-        Range l, rt;
+        // The binning clamps (c - lo) * scale to [0, bins - 1] and truncates it, and the split
+        // bin is below bins - 1, so an item goes left exactly when (c - lo) * scale < bin + 1
+        // (c >= lo, and the product is finite or +inf). All lanes are computed, as the binning
+        // computes them, and the axis' lane decides
+        const F4 lo4 = F4::of(lo, lo, lo, lo), scale4 = F4::of(scale, scale, scale, scale);
+        const float limit = static_cast<float>(r.bin + 1);
+        const F4 limit4 = F4::of(limit, limit, limit, limit);
+        const int axisBit = 1 << axis;
+        auto goesLeft = [&](F4 centroid) { return (lessMask((centroid - lo4) * scale4, limit4) & axisBit) != 0; };
+        // Partition and measure both sides in the same pass, the bounds kept in registers
+        Box lBox, lCent, rBox, rCent;
+        Item *items = items_.data();
         uint32_t i = r.begin, j = r.end;
         while (true) {
-            while (i < j && goesLeft(items_[i])) {
-                l.box.grow(items_[i].lo, items_[i].hi);
-                F4 c = items_[i].centroid();
-                l.centroids.grow(c, c);
+            while (i < j) {
+                F4 c = items[i].centroid();
+                if (!goesLeft(c)) break;
+                lBox.grow(items[i].lo, items[i].hi);
+                lCent.grow(c, c);
                 ++i;
             }
-            while (i < j && !goesLeft(items_[j - 1])) {
-                rt.box.grow(items_[j - 1].lo, items_[j - 1].hi);
-                F4 c = items_[j - 1].centroid();
-                rt.centroids.grow(c, c);
+            while (i < j) {
+                F4 c = items[j - 1].centroid();
+                if (goesLeft(c)) break;
+                rBox.grow(items[j - 1].lo, items[j - 1].hi);
+                rCent.grow(c, c);
                 --j;
             }
             if (i >= j) break;
-            std::swap(items_[i], items_[j - 1]);
+            std::swap(items[i], items[j - 1]);
         }
+        Range l, rt;
+        l.box = lBox;
+        l.centroids = lCent;
+        rt.box = rBox;
+        rt.centroids = rCent;
         l.begin = r.begin;
         l.end = rt.begin = i;
         rt.end = r.end;
@@ -540,7 +572,7 @@ bool WideBvh::FloatSlabs::init(const Ray &ray) {
         const int lo = a * kWidth, hi = (3 + a) * kWidth;
         nearAt[a] = nearHi[a] ? hi : lo;
         farAt[a] = nearHi[a] ? lo : hi;
-        float up = roundUp(o), down = roundDown(o);
+        float up = floatAbove(o), down = floatBelow(o);
         oNear[a] = _mm_set1_ps(nearHi[a] ? down : up);
         oFar[a] = _mm_set1_ps(nearHi[a] ? up : down);
         this->inv[a] = _mm_set1_ps(static_cast<float>(inv));

@@ -9,6 +9,7 @@
 
 #include "core/math/bounds3.h"
 #include "core/math/degree_trig.h"
+#include "core/math/float_round.h"
 #include "core/math/float_util.h"
 #include "core/math/fma_clone.h"
 #include "core/math/quadratic.h"
@@ -212,6 +213,41 @@ TEST(FloatUtil, NextUpAndNextDownAreNextafter) {
     }
     EXPECT_TRUE(std::isnan(nextUp(std::nan(""))));
     EXPECT_TRUE(std::isnan(nextDown(std::nan(""))));
+}
+
+// floatBelow and floatAbove, branch-free, give the float the definition asks for: converted to
+// nearest and stepped with std::nextafter where the conversion went the wrong way; the result
+// is on the right side of x and no float lies between them. Signed zeros, doubles below the
+// smallest float denormal, float denormals, the largest floats, doubles beyond them and the
+// infinities included, and doubles one double step either side of floats.
+TEST(FloatUtil, FloatBelowAndAboveAreTheNearestFloatsOnEachSide) {
+    using FL = std::numeric_limits<float>;
+    std::vector<double> values = {0.0, -0.0, 1e-300, -1e-300, 1e-46, -1e-46, 1.0, -1.0, 0.1, -0.1,
+                                  FL::denorm_min(), -double(FL::denorm_min()), FL::min(), -double(FL::min()),
+                                  FL::max(), -double(FL::max()), 3.5e38, -3.5e38, 1e300, -1e300,
+                                  kInfinity, -kInfinity};
+    Rng rng(5);
+    for (int i = 0; i < 3000; ++i) {
+        double v = std::ldexp(rng.uniform() - 0.5, static_cast<int>(rng.uniform() * 300) - 160);
+        values.push_back(v);
+        // a float and its double neighbours
+        double f = static_cast<float>(v);
+        values.insert(values.end(), {f, nextUp(f), nextDown(f)});
+    }
+    for (double x : values) {
+        SCOPED_TRACE(x);
+        float below = static_cast<float>(x), above = below;
+        if (static_cast<double>(below) > x) below = std::nextafter(below, -FL::infinity());
+        if (static_cast<double>(above) < x) above = std::nextafter(above, FL::infinity());
+        EXPECT_EQ(std::bit_cast<uint32_t>(floatBelow(x)), std::bit_cast<uint32_t>(below));
+        EXPECT_EQ(std::bit_cast<uint32_t>(floatAbove(x)), std::bit_cast<uint32_t>(above));
+        EXPECT_LE(static_cast<double>(floatBelow(x)), x);
+        EXPECT_GE(static_cast<double>(floatAbove(x)), x);
+        if (std::isfinite(x)) {
+            EXPECT_GT(static_cast<double>(std::nextafter(floatBelow(x), FL::infinity())), x);
+            EXPECT_LT(static_cast<double>(std::nextafter(floatAbove(x), -FL::infinity())), x);
+        }
+    }
 }
 
 }  // namespace
