@@ -164,6 +164,8 @@ class WideBvhBuilder {
     static constexpr size_t kTwoBinSetsFrom = 256;
     /// Item boxes and the bins of ranges from this size on are computed by all threads.
     static constexpr size_t kParallelFrom = 65536;
+    /// Ranges up to this size partition without a branch per item.
+    static constexpr uint32_t kBranchFreeUpTo = 256;
 
     /// boxOf(i, lo, hi) gives the double bounds of item i.
     template <typename BoxOf>
@@ -412,6 +414,7 @@ class WideBvhBuilder {
         const F4 limit4 = F4::of(limit, limit, limit, limit);
         const int axisBit = 1 << axis;
         auto goesLeft = [&](F4 centroid) { return (lessMask((centroid - lo4) * scale4, limit4) & axisBit) != 0; };
+        if (r.end - r.begin <= kBranchFreeUpTo) return splitSmall(r, goesLeft, left, right);
         // Partition and measure both sides in the same pass, the bounds kept in registers
         Box lBox, lCent, rBox, rCent;
         Item *items = items_.data();
@@ -442,6 +445,53 @@ class WideBvhBuilder {
         l.begin = r.begin;
         l.end = rt.begin = i;
         rt.end = r.end;
+        *left = l;
+        *right = rt;
+    }
+
+    /// The partition of split for a small range, item for item the same, without a branch on
+    /// the items. In a small range the sides alternate at random, and a branch per item
+    /// mispredicted about half of them (26 to 29 cycles an item from 5 to 64 items, against 6
+    /// to 8 in large ranges, whose neighbouring items mostly go the same way). The serial
+    /// partition swaps the k-th item from the left that goes right with the k-th item from the
+    /// right that goes left, until the scans meet where the left side ends: here one pass finds
+    /// each item's side and grows that side's bounds (chosen by index), a second lists the items
+    /// on the wrong side of the end of the left side, and the pairs swap.
+    template <typename GoesLeft>
+    void splitSmall(const Range &r, const GoesLeft &goesLeft, Range *left, Range *right) {
+        const uint32_t begin = r.begin, end = r.end;
+        Item *items = items_.data();
+        uint8_t toLeft[kBranchFreeUpTo];
+        Box bounds[2], centroids[2];  // [1]: the left side
+        uint32_t lefts = 0;
+        for (uint32_t i = begin; i < end; ++i) {
+            F4 c = items[i].centroid();
+            uint32_t side = goesLeft(c);
+            toLeft[i - begin] = static_cast<uint8_t>(side);
+            lefts += side;
+            bounds[side].grow(items[i].lo, items[i].hi);
+            centroids[side].grow(c, c);
+        }
+        const uint32_t mid = begin + lefts;
+        uint32_t wrongLeft[kBranchFreeUpTo], wrongRight[kBranchFreeUpTo];
+        uint32_t pairs = 0, count = 0;
+        for (uint32_t i = begin; i < mid; ++i) {
+            wrongLeft[pairs] = i;
+            pairs += 1u - toLeft[i - begin];
+        }
+        for (uint32_t i = end; i-- > mid;) {
+            wrongRight[count] = i;
+            count += toLeft[i - begin];
+        }
+        for (uint32_t k = 0; k < pairs; ++k) std::swap(items[wrongLeft[k]], items[wrongRight[k]]);
+        Range l, rt;
+        l.box = bounds[1];
+        l.centroids = centroids[1];
+        rt.box = bounds[0];
+        rt.centroids = centroids[0];
+        l.begin = begin;
+        l.end = rt.begin = mid;
+        rt.end = end;
         *left = l;
         *right = rt;
     }
