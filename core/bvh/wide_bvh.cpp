@@ -296,86 +296,115 @@ class WideBvhBuilder {
             // One axis (the longest, for a small range): only its bins
             const int only = axes == 1 ? 0 : axes == 2 ? 1 : axes == 4 ? 2 : -1;
             if (only < 0) axes = 7;
-            // Instantiated for one axis and for all three, so the choice is made once per range
-            auto binOne = [&](auto oneAxis, const Item &it, Bins &out) __attribute__((always_inline)) {
-                int b[3];
-                min(max((it.centroid() - origin) * scale4, zero), last).storeBins(b);
-                const F4 itemLo = it.lo, itemHi = it.hi;
-                if constexpr (decltype(oneAxis)::value) {
-                    ++out.counts[only][b[only]];
-                    out.boxes[only][b[only]].grow(itemLo, itemHi);
-                } else {
-                    ++out.counts[0][b[0]];
-                    out.boxes[0][b[0]].grow(itemLo, itemHi);
-                    ++out.counts[1][b[1]];
-                    out.boxes[1][b[1]].grow(itemLo, itemHi);
-                    ++out.counts[2][b[2]];
-                    out.boxes[2][b[2]].grow(itemLo, itemHi);
+            if (only >= 0 && n <= static_cast<uint32_t>(WideBvh::kMaxLeafItems)) {
+                // Two to four items, one bin each at most: the sweep over the bins below, over
+                // the items themselves (the union of the items of bins 0..k is that of the bins)
+                int bin[WideBvh::kMaxLeafItems];
+                for (uint32_t i = 0; i < n; ++i) {
+                    int b[3];
+                    min(max((items_[r.begin + i].centroid() - origin) * scale4, zero), last).storeBins(b);
+                    bin[i] = b[only];
                 }
-            };
-            auto binRange = [&](auto oneAxis, size_t begin, size_t end, Bins &out) {
-                out.clear(nBins, axes);
-                if (end - begin < kTwoBinSetsFrom) {
-                    for (size_t i = begin; i < end; ++i) binOne(oneAxis, items_[i], out);
-                    return;
-                }
-                // Neighbouring items mostly fall in the same bins: alternate between two sets
-                // of bins, so that one item's update need not wait for the previous one's
-                Bins other;
-                other.clear(nBins, axes);
-                size_t i = begin;
-                for (; i + 1 < end; i += 2) {
-                    binOne(oneAxis, items_[i], out);
-                    binOne(oneAxis, items_[i + 1], other);
-                }
-                if (i < end) binOne(oneAxis, items_[i], out);
-                out.merge(other, nBins, axes);
-            };
-            auto binItems = [&](size_t begin, size_t end, Bins &out) {
-                if (only >= 0)
-                    binRange(std::true_type(), begin, end, out);
-                else
-                    binRange(std::false_type(), begin, end, out);
-            };
-            // The top levels bin in parallel: boxes merge by min and max and counts by sums,
-            // both exact, so the bins are the same for any number of threads
-            // (the levels above the subtree tasks, which run one at a time)
-            Bins merged;
-            if (depth <= kTaskDepth && n >= kParallelFrom && threads_ > 1) {
-                std::vector<Bins> parts(static_cast<size_t>(threads_));
-                parallelFor(r.begin, r.end, parts.size(), [&](size_t part, size_t begin, size_t end) {
-                    binItems(begin, end, parts[part]);
-                });
-                merged = parts[0];
-                for (size_t p = 1; p < parts.size(); ++p) merged.merge(parts[p], nBins, axes);
-            } else {
-                binItems(r.begin, r.end, merged);
-            }
-            const auto &bins = merged.boxes;
-            const auto &counts = merged.counts;
-            for (int a = 0; a < 3; ++a) {
-                if (scale[a] == 0) continue;
-                float rightArea[kBins];
-                uint32_t rightCount[kBins];
-                Box acc;
-                uint32_t cnt = 0;
-                for (int k = nBins - 1; k > 0; --k) {
-                    acc.grow(bins[a][k]);
-                    cnt += counts[a][k];
-                    rightArea[k] = acc.halfArea();
-                    rightCount[k] = cnt;
-                }
-                acc = Box();
-                cnt = 0;
                 for (int k = 0; k < nBins - 1; ++k) {
-                    acc.grow(bins[a][k]);
-                    cnt += counts[a][k];
-                    if (cnt == 0 || rightCount[k + 1] == 0) continue;
-                    float cost = cnt * acc.halfArea() + rightCount[k + 1] * rightArea[k + 1];
+                    Box leftBox, rightBox;
+                    uint32_t leftCount = 0;
+                    for (uint32_t i = 0; i < n; ++i) {
+                        const Item &it = items_[r.begin + i];
+                        bool toLeft = bin[i] <= k;
+                        (toLeft ? leftBox : rightBox).grow(it.lo, it.hi);
+                        leftCount += toLeft;
+                    }
+                    uint32_t rightCount = n - leftCount;
+                    if (leftCount == 0 || rightCount == 0) continue;
+                    float cost = leftCount * leftBox.halfArea() + rightCount * rightBox.halfArea();
                     if (cost < bestCost) {
                         bestCost = cost;
-                        bestAxis = a;
+                        bestAxis = only;
                         bestSplit = k;
+                    }
+                }
+            } else {
+                // Instantiated for one axis and for all three, so the choice is made once per range
+                auto binOne = [&](auto oneAxis, const Item &it, Bins &out) __attribute__((always_inline)) {
+                    int b[3];
+                    min(max((it.centroid() - origin) * scale4, zero), last).storeBins(b);
+                    const F4 itemLo = it.lo, itemHi = it.hi;
+                    if constexpr (decltype(oneAxis)::value) {
+                        ++out.counts[only][b[only]];
+                        out.boxes[only][b[only]].grow(itemLo, itemHi);
+                    } else {
+                        ++out.counts[0][b[0]];
+                        out.boxes[0][b[0]].grow(itemLo, itemHi);
+                        ++out.counts[1][b[1]];
+                        out.boxes[1][b[1]].grow(itemLo, itemHi);
+                        ++out.counts[2][b[2]];
+                        out.boxes[2][b[2]].grow(itemLo, itemHi);
+                    }
+                };
+                auto binRange = [&](auto oneAxis, size_t begin, size_t end, Bins &out) {
+                    out.clear(nBins, axes);
+                    if (end - begin < kTwoBinSetsFrom) {
+                        for (size_t i = begin; i < end; ++i) binOne(oneAxis, items_[i], out);
+                        return;
+                    }
+                    // Neighbouring items mostly fall in the same bins: alternate between two sets
+                    // of bins, so that one item's update need not wait for the previous one's
+                    Bins other;
+                    other.clear(nBins, axes);
+                    size_t i = begin;
+                    for (; i + 1 < end; i += 2) {
+                        binOne(oneAxis, items_[i], out);
+                        binOne(oneAxis, items_[i + 1], other);
+                    }
+                    if (i < end) binOne(oneAxis, items_[i], out);
+                    out.merge(other, nBins, axes);
+                };
+                auto binItems = [&](size_t begin, size_t end, Bins &out) {
+                    if (only >= 0)
+                        binRange(std::true_type(), begin, end, out);
+                    else
+                        binRange(std::false_type(), begin, end, out);
+                };
+                // The top levels bin in parallel: boxes merge by min and max and counts by sums,
+                // both exact, so the bins are the same for any number of threads
+                // (the levels above the subtree tasks, which run one at a time)
+                Bins merged;
+                if (depth <= kTaskDepth && n >= kParallelFrom && threads_ > 1) {
+                    std::vector<Bins> parts(static_cast<size_t>(threads_));
+                    parallelFor(r.begin, r.end, parts.size(), [&](size_t part, size_t begin, size_t end) {
+                        binItems(begin, end, parts[part]);
+                    });
+                    merged = parts[0];
+                    for (size_t p = 1; p < parts.size(); ++p) merged.merge(parts[p], nBins, axes);
+                } else {
+                    binItems(r.begin, r.end, merged);
+                }
+                const auto &bins = merged.boxes;
+                const auto &counts = merged.counts;
+                for (int a = 0; a < 3; ++a) {
+                    if (scale[a] == 0) continue;
+                    float rightArea[kBins];
+                    uint32_t rightCount[kBins];
+                    Box acc;
+                    uint32_t cnt = 0;
+                    for (int k = nBins - 1; k > 0; --k) {
+                        acc.grow(bins[a][k]);
+                        cnt += counts[a][k];
+                        rightArea[k] = acc.halfArea();
+                        rightCount[k] = cnt;
+                    }
+                    acc = Box();
+                    cnt = 0;
+                    for (int k = 0; k < nBins - 1; ++k) {
+                        acc.grow(bins[a][k]);
+                        cnt += counts[a][k];
+                        if (cnt == 0 || rightCount[k + 1] == 0) continue;
+                        float cost = cnt * acc.halfArea() + rightCount[k + 1] * rightArea[k + 1];
+                        if (cost < bestCost) {
+                            bestCost = cost;
+                            bestAxis = a;
+                            bestSplit = k;
+                        }
                     }
                 }
             }
