@@ -178,8 +178,15 @@ class WideBvhBuilder {
                 uint32_t bits = static_cast<uint32_t>(i) | Item::kTag;
                 float tag;
                 std::memcpy(&tag, &bits, 4);
+#if defined(__SSE2__)
+                // x and y two at a time (a third of this pass's time went into the roundings)
+                __m128 loXY = floatsBelow(_mm_loadu_pd(lo)), hiXY = floatsAbove(_mm_loadu_pd(hi));
+                items_[i] = {{_mm_movelh_ps(loXY, _mm_set_ss(floatBelow(lo[2])))},
+                             {_mm_movelh_ps(hiXY, _mm_setr_ps(floatAbove(hi[2]), tag, 0, 0))}};
+#else
                 items_[i] = {F4::of(floatBelow(lo[0]), floatBelow(lo[1]), floatBelow(lo[2]), 0),
                              F4::of(floatAbove(hi[0]), floatAbove(hi[1]), floatAbove(hi[2]), tag)};
+#endif
             }
         });
     }

@@ -248,6 +248,20 @@ TEST(FloatUtil, FloatBelowAndAboveAreTheNearestFloatsOnEachSide) {
             EXPECT_LT(static_cast<double>(std::nextafter(floatAbove(x), -FL::infinity())), x);
         }
     }
+#if defined(__SSE2__)
+    // The two-lane versions give the same floats in both lanes, whatever the other lane holds
+    for (size_t i = 0; i + 1 < values.size(); ++i) {
+        double a = values[i], b = values[values.size() - 1 - i];
+        SCOPED_TRACE(testing::Message() << a << ", " << b);
+        alignas(16) float below[4], above[4];
+        _mm_store_ps(below, floatsBelow(_mm_setr_pd(a, b)));
+        _mm_store_ps(above, floatsAbove(_mm_setr_pd(a, b)));
+        EXPECT_EQ(std::bit_cast<uint32_t>(below[0]), std::bit_cast<uint32_t>(floatBelow(a)));
+        EXPECT_EQ(std::bit_cast<uint32_t>(below[1]), std::bit_cast<uint32_t>(floatBelow(b)));
+        EXPECT_EQ(std::bit_cast<uint32_t>(above[0]), std::bit_cast<uint32_t>(floatAbove(a)));
+        EXPECT_EQ(std::bit_cast<uint32_t>(above[1]), std::bit_cast<uint32_t>(floatAbove(b)));
+    }
+#endif
 }
 
 }  // namespace
