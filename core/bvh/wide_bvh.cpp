@@ -13,7 +13,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <limits>
 #include <stdexcept>
 #include <new>
 #include <thread>
@@ -304,8 +303,9 @@ class WideBvhBuilder {
             const int only = axes == 1 ? 0 : axes == 2 ? 1 : axes == 4 ? 2 : -1;
             if (only < 0) axes = 7;
             if (only >= 0 && n <= static_cast<uint32_t>(WideBvh::kMaxLeafItems)) {
-                // Two to four items, one bin each at most: the sweep over the bins below, over
-                // the items themselves (the union of the items of bins 0..k is that of the bins)
+                // Two to four items, as many bins: the sweep of the bins below, done over the
+                // items themselves (the items of bins 0..k have the union of those bins' boxes),
+                // without clearing and filling bins
                 int bin[WideBvh::kMaxLeafItems];
                 for (uint32_t i = 0; i < n; ++i) {
                     int b[3];

@@ -26,9 +26,8 @@ inline float floatBelow(double x) {
     // -0 included, steps away from zero (+1), a positive one towards it (-1, mod 2^32)
     uint32_t step = (bits >> 31) * 2 - 1;
     bits += static_cast<uint32_t>(static_cast<double>(f) > x) * step;
-    float below;
-    std::memcpy(&below, &bits, 4);
-    return static_cast<double>(f) > x ? below : f;
+    std::memcpy(&f, &bits, 4);
+    return f;
 }
 
 /// The smallest float not below x (x is not NaN); the mirror image of floatBelow.
@@ -38,9 +37,8 @@ inline float floatAbove(double x) {
     std::memcpy(&bits, &f, 4);
     uint32_t step = 1 - (bits >> 31) * 2;
     bits += static_cast<uint32_t>(static_cast<double>(f) < x) * step;
-    float above;
-    std::memcpy(&above, &bits, 4);
-    return static_cast<double>(f) < x ? above : f;
+    std::memcpy(&f, &bits, 4);
+    return f;
 }
 
 #if defined(__SSE2__)
