@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <array>
 
+#include "core/bvh/sah_sweep.h"
+
 namespace rt {
 
 Bvh::Bvh(const std::vector<Bounds3> &itemBounds) {
@@ -68,30 +70,12 @@ int Bvh::build(std::vector<BuildItem> &items, size_t begin, size_t end, int dept
     double bestCost = kInfinity;
     for (int axis = 0; axis < 3; ++axis) {
         if (binScale[axis] == 0) continue;
-        // Sweep from the right to get the area and count of every right side
-        std::array<double, kBins> rightArea{};
-        std::array<int, kBins> rightCount{};
-        Bounds3 acc;
-        int cnt = 0;
-        for (int b = kBins - 1; b > 0; --b) {
-            acc = unionBounds(acc, binBounds[axis][b]);
-            cnt += counts[axis][b];
-            rightArea[b] = acc.surfaceArea();
-            rightCount[b] = cnt;
-        }
-        acc = Bounds3();
-        cnt = 0;
-        for (int b = 0; b < kBins - 1; ++b) {
-            acc = unionBounds(acc, binBounds[axis][b]);
-            cnt += counts[axis][b];
-            if (cnt == 0 || rightCount[b + 1] == 0) continue;
-            double cost = cnt * acc.surfaceArea() + rightCount[b + 1] * rightArea[b + 1];
-            if (cost < bestCost) {
-                bestCost = cost;
-                bestAxis = axis;
-                bestSplit = b;
-            }
-        }
+        sweepBins<kBins>(binBounds[axis].data(), counts[axis].data(), kBins,
+                         [](const Bounds3 &a, const Bounds3 &b) { return unionBounds(a, b); },
+                         [](const Bounds3 &b) { return b.surfaceArea(); }, &bestCost, [&](int b) {
+                             bestAxis = axis;
+                             bestSplit = b;
+                         });
     }
     // Relative cost: one traversal step (1/8 of an item test) plus the expected item tests
     double area = bounds.surfaceArea();
