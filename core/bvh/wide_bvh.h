@@ -17,6 +17,7 @@
 
 #include "core/ir/mesh.h"
 #include "core/math/bounds3.h"
+#include "core/math/float_round.h"
 #include "core/math/float_util.h"
 #include "core/math/ray.h"
 
@@ -115,6 +116,13 @@ class WideBvh {
         double o[3], inv[3];
         int nearHi[3];  ///< the near plane of each axis: hi for a negative direction
         explicit DoubleSlabs(const Ray &ray);
+        /// The ray's interval as the test takes it, made again whenever *tMax falls
+        struct Limits {
+            double tMin, tMax;
+        };
+        static Limits limits(double tMin, double tMax) { return {tMin, tMax}; }
+        static void lower(Limits &l, double tMax) { l.tMax = tMax; }
+        int test(const Node &n, const Limits &l, float tn[kWidth]) const { return test(n, l.tMin, l.tMax, tn); }
         int test(const Node &n, double tMin, double tMax, float tn[kWidth]) const;
     };
 #if defined(__SSE2__)
@@ -125,15 +133,48 @@ class WideBvh {
     /// of the reciprocal, of the subtraction and of the product (3 float units in all), covered
     /// by kMargin with room for the margin's own rounding, and results in the denormal range,
     /// covered by kTiny.
-    struct FloatSlabs {
-        __m128 oNear[3], oFar[3], inv[3];
-        int nearHi[3];
-        /// Per axis, where in a node (in floats from lo[0][0]) the near and the far planes lie
+    /// The origin and planes of a float test: per axis, where in a node (in floats from
+    /// lo[0][0]) the near and the far planes lie, and the origin rounded for each.
+    struct FloatRay {
+        __m128 oNear[3], oFar[3];
         int nearAt[3], farAt[3];
         /// False where the ray does not fit in floats (an origin beyond 1e30, a direction
         /// component beyond 1e30 or below 1e-30 and not zero): DoubleSlabs takes those rays.
+        /// inv gets the reciprocal of the direction.
+        bool init(const Ray &ray, double inv[3]);
+    };
+    struct FloatSlabs : FloatRay {
+        __m128 inv[3];
         bool init(const Ray &ray);
+        using Limits = DoubleSlabs::Limits;
+        static Limits limits(double tMin, double tMax) { return {tMin, tMax}; }
+        static void lower(Limits &l, double tMax) { l.tMax = tMax; }
+        int test(const Node &n, const Limits &l, float tn[kWidth]) const { return test(n, l.tMin, l.tMax, tn); }
         int test(const Node &n, double tMin, double tMax, float tn[kWidth]) const;
+    };
+    /// FloatSlabs for a ray that starts at tMin >= 0 (closest hits and shadow rays: everything
+    /// but the whole-line queries of CSG), with the margins folded into the ray. Only distances
+    /// at or beyond 0 decide there: a negative near distance gives way to tMin, and a negative far
+    /// one culls the child as the exact one does (the origin's rounding keeps the sign of each
+    /// plane's distance, and a zero stays zero). So the near planes take the reciprocal shrunk
+    /// by kMargin and the far planes the reciprocal grown by it, which makes a positive near
+    /// distance no greater and a positive far one no smaller than the exact one whatever the
+    /// rounding of the reciprocal, the subtraction and the products (3 float units); kTiny still
+    /// covers results in the denormal range, and tMin and tMax are rounded outward to floats
+    /// once per leaf visited instead of converted per node. The result is the same set of hits:
+    /// a conservative test visits every child the exact ray meets.
+    struct ForwardSlabs : FloatRay {
+        __m128 invNear[3], invFar[3];
+        /// As FloatSlabs::init; tMin >= 0 is the caller's to ensure.
+        bool init(const Ray &ray);
+        struct Limits {
+            __m128 t0, t1;
+        };
+        static Limits limits(double tMin, double tMax) {
+            return {_mm_set1_ps(floatBelow(tMin)), _mm_set1_ps(floatAbove(tMax))};
+        }
+        static void lower(Limits &l, double tMax) { l.t1 = _mm_set1_ps(floatAbove(tMax)); }
+        int test(const Node &n, const Limits &l, float tn[kWidth]) const;
     };
     static constexpr float kMargin = 1.0f / (1 << 20);  ///< 16 float units
     static constexpr float kTiny = 1.17549435e-38f;       ///< the smallest normal float
@@ -157,8 +198,13 @@ template <typename Visit>
 void WideBvh::traverseSlots(const Ray &ray, double tMin, double *tMax, Visit &&visit) const {
     if (nodes_.empty()) return;
 #if defined(__SSE2__)
-    FloatSlabs f;
-    if (f.init(ray)) return walk(f, tMin, tMax, visit);
+    if (tMin >= 0) {
+        ForwardSlabs f;
+        if (f.init(ray)) return walk(f, tMin, tMax, visit);
+    } else {
+        FloatSlabs f;
+        if (f.init(ray)) return walk(f, tMin, tMax, visit);
+    }
 #endif
     walk(DoubleSlabs(ray), tMin, tMax, visit);
 }
@@ -187,6 +233,25 @@ inline int WideBvh::FloatSlabs::test(const Node &n, double tMin, double tMax, fl
     const __m128 tiny = _mm_set1_ps(kTiny);
     t0 = _mm_sub_ps(_mm_min_ps(_mm_mul_ps(t0, down), _mm_mul_ps(t0, up)), tiny);
     t1 = _mm_add_ps(_mm_max_ps(_mm_mul_ps(t1, down), _mm_mul_ps(t1, up)), tiny);
+    _mm_storeu_ps(tn, t0);
+    return _mm_movemask_ps(_mm_cmple_ps(t0, t1));
+}
+
+inline int WideBvh::ForwardSlabs::test(const Node &n, const Limits &l, float tn[kWidth]) const {
+    __m128 t0 = l.t0, t1 = l.t1;
+    const float *planes = &n.lo[0][0];
+    // NaN distances leave the interval as it was, as in FloatSlabs::test
+    auto axis = [&](int a) {
+        t0 = _mm_max_ps(_mm_mul_ps(_mm_sub_ps(_mm_load_ps(planes + nearAt[a]), oNear[a]), invNear[a]), t0);
+        t1 = _mm_min_ps(_mm_mul_ps(_mm_sub_ps(_mm_load_ps(planes + farAt[a]), oFar[a]), invFar[a]), t1);
+    };
+    axis(0);
+    axis(1);
+    axis(2);
+    // A near distance that overflowed stands for one beyond the largest float (an overflowed
+    // far one is beyond it anyway, and a far one below minus the largest float culls as -inf does)
+    t0 = _mm_sub_ps(_mm_min_ps(t0, _mm_set1_ps(3.40282347e38f)), _mm_set1_ps(kTiny));
+    t1 = _mm_add_ps(t1, _mm_set1_ps(kTiny));
     _mm_storeu_ps(tn, t0);
     return _mm_movemask_ps(_mm_cmple_ps(t0, t1));
 }
@@ -262,6 +327,7 @@ void WideBvh::walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit) 
     Entry stack[kStackSize];
     int top = 0;
     uint32_t current = 0;  // the root is always a node
+    typename Slabs::Limits limits = slabs.limits(tMin, *tMax);
     auto push = [&](uint32_t ref, float tNear) {
         stack[top++] = {ref, tNear};
 #if defined(__SSE2__)
@@ -277,10 +343,11 @@ void WideBvh::walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit) 
             uint32_t first = (current & ~kLeaf) >> 2, count = (current & 3) + 1;
             for (uint32_t i = 0; i < count; ++i)
                 if (visit(first + i, tMax)) return;
+            slabs.lower(limits, *tMax);
         } else {
             const Node &n = nodes_[current];
             alignas(16) float tn[4];
-            int mask = slabs.test(n, tMin, *tMax, tn);
+            int mask = slabs.test(n, limits, tn);
             // Without the empty slots (an inverted infinite box still meets a ray with tMax = inf)
 #if defined(__SSE2__)
             mask &= ~_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(

@@ -400,7 +400,8 @@ TEST(WideBvh, OverItemBoxesVisitsEveryBoxTheRayMeetsEvenEmptyInfiniteAndHugeOnes
         if (k % 16 == 5) o = o * 1e31;                  // beyond the float range: the double test
         if (lengthSquared(d) == 0) continue;
         Ray r(o, d);
-        for (double tMin : {0.0, -kInfinity}) {
+        // From 0 and beyond it (the forward test) and from -inf (the whole line)
+        for (double tMin : {0.0, 2.5, 1e-300, -kInfinity}) {
             double tMax = k % 3 ? kInfinity : 7.5;
             std::vector<char> visited(boxes.size(), 0);
             double far = tMax;
