@@ -635,47 +635,77 @@ class WideBvhBuilder {
 };
 
 #if defined(__SSE2__)
-bool WideBvh::FloatRay::init(const Ray &ray, double inv[3]) {
-    for (int a = 0; a < 3; ++a) {
-        double o = ray.o[a];
-        inv[a] = 1 / ray.d[a];
-        if (!(std::abs(o) <= 1e30)) return false;
-        if (!std::isinf(inv[a]) && !(std::abs(inv[a]) >= 1e-30 && std::abs(inv[a]) <= 1e30)) return false;
-        // For a positive direction the near distance (b - o) * inv is smallest for the largest
-        // origin: the float above o; the far distance is largest for the float below. A plane b
-        // is a float, so b - oNear has the sign of b - o or is zero (a NaN distance where inv
-        // is infinite, which the tests ignore)
-        bool negative = inv[a] < 0;
-        const int lo = a * kWidth, hi = (3 + a) * kWidth;
-        nearAt[a] = negative ? hi : lo;
-        farAt[a] = negative ? lo : hi;
-        float up = floatAbove(o), down = floatBelow(o);
-        oNear[a] = _mm_set1_ps(negative ? down : up);
-        oFar[a] = _mm_set1_ps(negative ? up : down);
-    }
+namespace {
+/// Lanes 0, 1 and 2 of v, each in all four lanes of its own vector
+void broadcastLanes(__m128 v, __m128 out[3]) {
+    out[0] = _mm_shuffle_ps(v, v, _MM_SHUFFLE(0, 0, 0, 0));
+    out[1] = _mm_shuffle_ps(v, v, _MM_SHUFFLE(1, 1, 1, 1));
+    out[2] = _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 2, 2, 2));
+}
+}  // namespace
+
+bool WideBvh::FloatRay::init(const Ray &ray, __m128 *inv) {
+    const __m128d one = _mm_set1_pd(1);
+    const __m128d oXY = _mm_loadu_pd(&ray.o.x), oZZ = _mm_set1_pd(ray.o.z);
+    const __m128d invXY = _mm_div_pd(one, _mm_loadu_pd(&ray.d.x)), invZZ = _mm_div_pd(one, _mm_set1_pd(ray.d.z));
+    // Both lanes fit: |o| <= 1e30 and 1e-30 <= |inv| <= 1e30 or inv infinite (a NaN fails
+    // every comparison)
+    auto fits = [](__m128d o, __m128d i) {
+        const __m128d magnitude = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffff));
+        const __m128d big = _mm_set1_pd(1e30), small = _mm_set1_pd(1e-30);
+        __m128d ao = _mm_and_pd(o, magnitude), ai = _mm_and_pd(i, magnitude);
+        __m128d finite = _mm_and_pd(_mm_cmpge_pd(ai, small), _mm_cmple_pd(ai, big));
+        __m128d ok = _mm_and_pd(_mm_cmple_pd(ao, big), _mm_or_pd(finite, _mm_cmpeq_pd(ai, _mm_set1_pd(kInfinity))));
+        return _mm_movemask_pd(ok) == 3;
+    };
+    if (!(fits(oXY, invXY) & fits(oZZ, invZZ))) return false;
+    // The reciprocals rounded to nearest floats in lanes 0 to 2 (an infinite one stays infinite,
+    // and each keeps its sign, as none is below 1e-30)
+    *inv = _mm_movelh_ps(_mm_cvtpd_ps(invXY), _mm_cvtpd_ps(invZZ));
+    const __m128 negative = _mm_cmplt_ps(*inv, _mm_setzero_ps());
+    // For a positive direction the near distance (b - o) * inv is smallest for the largest
+    // origin: the float above o; the far distance is largest for the float below. A plane b
+    // is a float, so b - oNear has the sign of b - o or is zero (a NaN distance where inv is
+    // infinite, which the tests ignore)
+    const __m128 up = _mm_movelh_ps(floatsAbove(oXY), floatsAbove(oZZ));
+    const __m128 down = _mm_movelh_ps(floatsBelow(oXY), floatsBelow(oZZ));
+    broadcastLanes(_mm_or_ps(_mm_and_ps(negative, down), _mm_andnot_ps(negative, up)), oNear);
+    broadcastLanes(_mm_or_ps(_mm_and_ps(negative, up), _mm_andnot_ps(negative, down)), oFar);
+    // Per sign pattern, where the near and the far planes lie: a negative direction meets the
+    // hi plane first
+    static constexpr auto kPlanes = [] {
+        std::array<std::array<int, 6>, 8> t{};
+        for (int signs = 0; signs < 8; ++signs)
+            for (int a = 0; a < 3; ++a) {
+                int hiNear = (signs >> a) & 1;
+                t[signs][a] = (a + 3 * hiNear) * kWidth;
+                t[signs][3 + a] = (3 + a - 3 * hiNear) * kWidth;
+            }
+        return t;
+    }();
+    const auto &planes = kPlanes[_mm_movemask_ps(negative) & 7];
+    std::copy(planes.begin(), planes.begin() + 3, nearAt);
+    std::copy(planes.begin() + 3, planes.end(), farAt);
     return true;
 }
 
 bool WideBvh::FloatSlabs::init(const Ray &ray) {
-    double exact[3];
-    if (!FloatRay::init(ray, exact)) return false;
-    for (int a = 0; a < 3; ++a) inv[a] = _mm_set1_ps(static_cast<float>(exact[a]));
+    __m128 f;
+    if (!FloatRay::init(ray, &f)) return false;
+    broadcastLanes(f, inv);
     return true;
 }
 
 bool WideBvh::ForwardSlabs::init(const Ray &ray) {
-    double exact[3];
-    if (!FloatRay::init(ray, exact)) return false;
-    for (int a = 0; a < 3; ++a) {
-        // The float reciprocal (within half a unit of the exact one) shrunk and grown by the
-        // margin: with the rounding of the margin's product, the subtraction and the node
-        // test's product, the near planes' distances are no greater than the exact ones and the
-        // far planes' no smaller (16 units of margin against 3 of rounding); an infinite
-        // reciprocal (a zero direction component) stays infinite
-        const __m128 f = _mm_set1_ps(static_cast<float>(exact[a]));
-        invNear[a] = _mm_mul_ps(f, _mm_set1_ps(1 - kMargin));
-        invFar[a] = _mm_mul_ps(f, _mm_set1_ps(1 + kMargin));
-    }
+    __m128 f;
+    if (!FloatRay::init(ray, &f)) return false;
+    // The float reciprocal (within half a unit of the exact one) shrunk and grown by the
+    // margin: with the rounding of the margin's product, the subtraction and the node test's
+    // product, the near planes' distances are no greater than the exact ones and the far
+    // planes' no smaller (16 units of margin against 3 of rounding); an infinite reciprocal (a
+    // zero direction component) stays infinite
+    broadcastLanes(_mm_mul_ps(f, _mm_set1_ps(1 - kMargin)), invNear);
+    broadcastLanes(_mm_mul_ps(f, _mm_set1_ps(1 + kMargin)), invFar);
     return true;
 }
 #endif
