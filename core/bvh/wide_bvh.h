@@ -342,7 +342,7 @@ void WideBvh::walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit) 
             // Every interior child's node is fetched while this one is tested, so the walk waits
             // on memory about once a level instead of once a node (a leaf or an empty slot
             // fetches this node again). Written out: GCC 12 at -O2 dropped these prefetches
-            // when they sat in a lambda, and kept a loop with a branch per child
+            // from a lambda called for each child, and kept a loop with a branch per child
             const char *base = reinterpret_cast<const char *>(nodes_.data());
             const uint32_t r0 = n.child[0], r1 = n.child[1], r2 = n.child[2], r3 = n.child[3];
             const char *p0 = base + size_t{(r0 & kLeaf) ? current : r0} * sizeof(Node);
