@@ -110,29 +110,24 @@ class WideBvh {
     static constexpr int kStackSize = 3 * kMaxDepth + 4;
     friend class WideBvhBuilder;
 
-    /// The slab test of the four children of a node: the mask of those the ray meets within
-    /// [tMin, tMax], and for each a float no greater than its near distance.
-    struct DoubleSlabs {
-        double o[3], inv[3];
-        int nearHi[3];  ///< the near plane of each axis: hi for a negative direction
-        explicit DoubleSlabs(const Ray &ray);
-        /// The ray's interval as the test takes it, made again whenever *tMax falls
+    /// The ray's interval [tMin, tMax] as a node test takes it: made once a walk, and again
+    /// whenever a leaf lowers *tMax. These tests take it as it is; ForwardSlabs rounds it.
+    struct PlainLimits {
         struct Limits {
             double tMin, tMax;
         };
         static Limits limits(double tMin, double tMax) { return {tMin, tMax}; }
         static void lower(Limits &l, double tMax) { l.tMax = tMax; }
-        int test(const Node &n, const Limits &l, float tn[kWidth]) const { return test(n, l.tMin, l.tMax, tn); }
-        int test(const Node &n, double tMin, double tMax, float tn[kWidth]) const;
+    };
+    /// The slab test of the four children of a node: the mask of those the ray meets within
+    /// [tMin, tMax], and for each a float no greater than its near distance.
+    struct DoubleSlabs : PlainLimits {
+        double o[3], inv[3];
+        int nearHi[3];  ///< the near plane of each axis: hi for a negative direction
+        explicit DoubleSlabs(const Ray &ray);
+        int test(const Node &n, const Limits &l, float tn[kWidth]) const;
     };
 #if defined(__SSE2__)
-    /// The same test in float, conservatively: it meets every child that the exact ray meets
-    /// within [tMin, tMax] (and so every child that DoubleSlabs meets), so the hits are the same.
-    /// The origin is rounded per plane in the direction that gives the smaller near distance and
-    /// the larger far one, so its rounding costs nothing per node; what is left is the rounding
-    /// of the reciprocal, of the subtraction and of the product (3 float units in all), covered
-    /// by kMargin with room for the margin's own rounding, and results in the denormal range,
-    /// covered by kTiny.
     /// The origin and planes of a float test: per axis, where in a node (in floats from
     /// lo[0][0]) the near and the far planes lie, and the origin rounded for each.
     struct FloatRay {
@@ -146,14 +141,17 @@ class WideBvh {
         /// the near planes' and the far planes' reciprocals.
         void clip(const Node &n, const __m128 invNear[3], const __m128 invFar[3], __m128 &t0, __m128 &t1) const;
     };
-    struct FloatSlabs : FloatRay {
+    /// The same test in float, conservatively: it meets every child that the exact ray meets
+    /// within [tMin, tMax] (and so every child that DoubleSlabs meets), so the hits are the same.
+    /// The origin is rounded per plane in the direction that gives the smaller near distance and
+    /// the larger far one, so its rounding costs nothing per node; what is left is the rounding
+    /// of the reciprocal, of the subtraction and of the product (3 float units in all), covered
+    /// by kMargin with room for the margin's own rounding, and results in the denormal range,
+    /// covered by kTiny.
+    struct FloatSlabs : FloatRay, PlainLimits {
         __m128 inv[3];
         bool init(const Ray &ray);
-        using Limits = DoubleSlabs::Limits;
-        static Limits limits(double tMin, double tMax) { return {tMin, tMax}; }
-        static void lower(Limits &l, double tMax) { l.tMax = tMax; }
-        int test(const Node &n, const Limits &l, float tn[kWidth]) const { return test(n, l.tMin, l.tMax, tn); }
-        int test(const Node &n, double tMin, double tMax, float tn[kWidth]) const;
+        int test(const Node &n, const Limits &l, float tn[kWidth]) const;
     };
     /// FloatSlabs for a ray that starts at tMin >= 0 (closest hits and shadow rays: everything
     /// but the whole-line queries of CSG), with the margins folded into the ray. Only distances
@@ -181,6 +179,7 @@ class WideBvh {
     };
     static constexpr float kMargin = 1.0f / (1 << 20);  ///< 16 float units
     static constexpr float kTiny = 1.17549435e-38f;       ///< the smallest normal float
+    static constexpr float kLargest = 3.40282347e38f;     ///< the largest finite float
 #endif
     template <typename BoxOf>
     void build(size_t n, BoxOf &&boxOf, int threads);
@@ -228,11 +227,11 @@ inline void WideBvh::FloatRay::clip(const Node &n, const __m128 invNear[3], cons
     axis(2);
 }
 
-inline int WideBvh::FloatSlabs::test(const Node &n, double tMin, double tMax, float tn[kWidth]) const {
-    __m128 t0 = _mm_set1_ps(static_cast<float>(tMin)), t1 = _mm_set1_ps(static_cast<float>(tMax));
+inline int WideBvh::FloatSlabs::test(const Node &n, const Limits &l, float tn[kWidth]) const {
+    __m128 t0 = _mm_set1_ps(static_cast<float>(l.tMin)), t1 = _mm_set1_ps(static_cast<float>(l.tMax));
     clip(n, inv, inv, t0, t1);
     // A distance that overflowed stands for one beyond the largest float, not for infinity
-    const __m128 big = _mm_set1_ps(3.40282347e38f);
+    const __m128 big = _mm_set1_ps(kLargest);
     t0 = _mm_min_ps(t0, big);
     t1 = _mm_max_ps(t1, _mm_sub_ps(_mm_setzero_ps(), big));
     // Widen both ends by the relative margin and the absolute one. Both widenings are monotonic,
@@ -251,7 +250,7 @@ inline int WideBvh::ForwardSlabs::test(const Node &n, const Limits &l, float tn[
     clip(n, invNear, invFar, t0, t1);
     // A near distance that overflowed stands for one beyond the largest float (an overflowed
     // far one is beyond it anyway, and a far one below minus the largest float culls as -inf does)
-    t0 = _mm_sub_ps(_mm_min_ps(t0, _mm_set1_ps(3.40282347e38f)), _mm_set1_ps(kTiny));
+    t0 = _mm_sub_ps(_mm_min_ps(t0, _mm_set1_ps(kLargest)), _mm_set1_ps(kTiny));
     t1 = _mm_add_ps(t1, _mm_set1_ps(kTiny));
     _mm_storeu_ps(tn, t0);
     return _mm_movemask_ps(_mm_cmple_ps(t0, t1));
@@ -262,7 +261,8 @@ inline WideBvh::DoubleSlabs::DoubleSlabs(const Ray &ray)
     : o{ray.o.x, ray.o.y, ray.o.z}, inv{1 / ray.d.x, 1 / ray.d.y, 1 / ray.d.z},
       nearHi{inv[0] < 0, inv[1] < 0, inv[2] < 0} {}
 
-inline int WideBvh::DoubleSlabs::test(const Node &n, double tMin, double tMax, float tn[kWidth]) const {
+inline int WideBvh::DoubleSlabs::test(const Node &n, const Limits &l, float tn[kWidth]) const {
+    const double tMin = l.tMin, tMax = l.tMax;
     // Far distances grow by their rounding error away from zero, as in Bvh::hitNode
     constexpr double kSlop = 2 * gamma(3);
     alignas(16) double t[4];
