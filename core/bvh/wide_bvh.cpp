@@ -20,6 +20,7 @@
 
 #include "core/bvh/sah_sweep.h"
 #include "core/math/float_round.h"
+#include "core/system/parallel_for.h"
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -169,7 +170,8 @@ class WideBvhBuilder {
 
     /// boxOf(i, lo, hi) gives the double bounds of item i.
     template <typename BoxOf>
-    WideBvhBuilder(size_t n, BoxOf &&boxOf, WideBvh &bvh, int threads) : bvh_(bvh), threads_(threads) {
+    WideBvhBuilder(size_t n, BoxOf &&boxOf, WideBvh &bvh, int threads, float itemCost)
+        : bvh_(bvh), threads_(threads), itemCost_(itemCost) {
         items_.resize(n);
         parallelFor(0, n, n >= kParallelFrom ? static_cast<size_t>(threads) : 1, [&](size_t, size_t begin, size_t end) {
             for (size_t i = begin; i < end; ++i) {
@@ -242,18 +244,6 @@ class WideBvhBuilder {
                 }
         }
     };
-
-    /// f(part, begin, end) for `parts` consecutive chunks of [begin, end), one thread each.
-    template <typename F>
-    static void parallelFor(size_t begin, size_t end, size_t parts, F &&f) {
-        if (parts <= 1) return f(size_t{0}, begin, end);
-        std::vector<std::thread> workers;
-        size_t chunk = (end - begin + parts - 1) / parts;
-        auto run = [&](size_t i) { f(i, std::min(end, begin + i * chunk), std::min(end, begin + (i + 1) * chunk)); };
-        for (size_t i = 1; i < parts; ++i) workers.emplace_back(run, i);
-        run(0);
-        for (auto &w : workers) w.join();
-    }
 
     /// Bins per unit of centroid extent (the last centroid falls just inside the last bin).
     static float binScale(int bins, float extent) { return static_cast<float>(bins) / extent * (1 - 1e-6f); }
@@ -406,10 +396,11 @@ class WideBvhBuilder {
                 }
             }
         }
-        // Relative cost: a node visit (a cache miss, mostly) costs about one triangle test
+        // In units of a node visit (a cache miss, mostly): a split costs a visit and the items'
+        // tests weighted by the children's areas, a leaf its items' tests
         float area = r.box.halfArea();
-        float splitCost = area > 0 && bestAxis >= 0 ? 1.0f + bestCost / area : INFINITY;
-        if (n <= static_cast<uint32_t>(WideBvh::kMaxLeafItems) && splitCost >= n) {
+        float splitCost = area > 0 && bestAxis >= 0 ? 1.0f + itemCost_ * bestCost / area : INFINITY;
+        if (n <= static_cast<uint32_t>(WideBvh::kMaxLeafItems) && splitCost >= itemCost_ * n) {
             r.decision = Range::kLeaf;
             return;
         }
@@ -631,6 +622,7 @@ class WideBvhBuilder {
 
     WideBvh &bvh_;
     int threads_;
+    float itemCost_;
     LargeVector<Item> items_;
 };
 
@@ -711,16 +703,16 @@ bool WideBvh::ForwardSlabs::init(const Ray &ray) {
 #endif
 
 template <typename BoxOf>
-void WideBvh::build(size_t n, BoxOf &&boxOf, int threads) {
+void WideBvh::build(size_t n, BoxOf &&boxOf, int threads, float itemCost) {
     if (n >= kMaxItems) throw std::length_error("a BVH indexes at most 2^29 items (triangles or CSG operands)");
     if (n == 0) return;
     if (threads <= 0) threads = std::max(1u, std::thread::hardware_concurrency());
-    WideBvhBuilder builder(n, boxOf, *this, threads);
+    WideBvhBuilder builder(n, boxOf, *this, threads, itemCost);
     builder.build();
     nodes_.shrink_to_fit();
 }
 
-WideBvh::WideBvh(const ir::Mesh &mesh, int threads) {
+WideBvh::WideBvh(const ir::Mesh &mesh, int threads, float itemCost) {
     build(mesh.triangles.size(), [&](size_t i, double lo[3], double hi[3]) {
         const auto &t = mesh.triangles[i];
         const Vec3 &p0 = mesh.positions[t[0]], &p1 = mesh.positions[t[1]], &p2 = mesh.positions[t[2]];
@@ -728,16 +720,16 @@ WideBvh::WideBvh(const ir::Mesh &mesh, int threads) {
             lo[a] = std::min({p0[a], p1[a], p2[a]});
             hi[a] = std::max({p0[a], p1[a], p2[a]});
         }
-    }, threads);
+    }, threads, itemCost);
 }
 
-WideBvh::WideBvh(const std::vector<Bounds3> &items, int threads) {
+WideBvh::WideBvh(const std::vector<Bounds3> &items, int threads, float itemCost) {
     build(items.size(), [&](size_t i, double lo[3], double hi[3]) {
         for (int a = 0; a < 3; ++a) {
             lo[a] = items[i].min[a];
             hi[a] = items[i].max[a];
         }
-    }, threads);
+    }, threads, itemCost);
 }
 
 }  // namespace rt

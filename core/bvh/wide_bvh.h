@@ -77,14 +77,22 @@ class WideBvh {
     static constexpr uint32_t kLeaf = 0x80000000u;
     static constexpr uint32_t kEmpty = 0xffffffffu;
 
+    /// The cost of testing one item in a leaf, against one node visit, that the build's SAH
+    /// weighs: a leaf of n items costs n times it. CSG operands are tested one at a time (1);
+    /// where TriangleMesh tests a leaf's triangles four at a time (TriangleMesh::fourWideLeaves)
+    /// a leaf costs little more than one triangle, and a quarter makes almost every range of up
+    /// to four triangles a leaf (a ray's tests are the same and the tree depends only on this).
+    static constexpr float kItemCost = 1.0f;
+    static constexpr float kTriangleCost = 0.25f;
+
     WideBvh() = default;
     /// threads: 0 for std::thread::hardware_concurrency(). The tree does not depend on it.
     /// Throws std::length_error beyond kMaxItems.
     /// Over the triangles of a mesh.
-    explicit WideBvh(const ir::Mesh &mesh, int threads = 0);
+    explicit WideBvh(const ir::Mesh &mesh, int threads = 0, float itemCost = kTriangleCost);
     /// Over item boxes, which may be empty, infinite or beyond the float range: they are
     /// rounded outward to floats, and their centres clamped to it.
-    explicit WideBvh(const std::vector<Bounds3> &items, int threads = 1);
+    explicit WideBvh(const std::vector<Bounds3> &items, int threads = 1, float itemCost = kItemCost);
 
     const LargeVector<Node> &nodes() const { return nodes_; }
     /// Item (triangle) indices in leaf order.
@@ -103,6 +111,18 @@ class WideBvh {
     /// dependent load of the item index.
     template <typename Visit>
     void traverseSlots(const Ray &ray, double tMin, double *tMax, Visit &&visit) const;
+
+    /// Per-item data a caller keeps in leaf order (a mesh's leaf vertices): item slot s's data
+    /// starts at base + s * stride. The walk prefetches the start of each leaf child's data
+    /// while it tests the node, a level before it visits the leaf.
+    struct LeafData {
+        const void *base = nullptr;
+        size_t stride = 0;
+    };
+    /// As traverseSlots, a leaf at a time: visit(first, count, tMax) gets the leaf's slots
+    /// [first, first + count) (count <= kMaxLeafItems).
+    template <typename Visit>
+    void traverseLeaves(const Ray &ray, double tMin, double *tMax, Visit &&visit, LeafData data = {}) const;
 
   private:
     /// Depth bound of the build; with at most three pushes a level it sizes the traversal stack.
@@ -182,9 +202,9 @@ class WideBvh {
     static constexpr float kLargest = 3.40282347e38f;     ///< the largest finite float
 #endif
     template <typename BoxOf>
-    void build(size_t n, BoxOf &&boxOf, int threads);
+    void build(size_t n, BoxOf &&boxOf, int threads, float itemCost);
     template <typename Slabs, typename Visit>
-    void walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit) const;
+    void walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit, LeafData data) const;
 
     LargeVector<Node> nodes_;
     LargeVector<uint32_t> order_;
@@ -198,17 +218,26 @@ void WideBvh::traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit)
 
 template <typename Visit>
 void WideBvh::traverseSlots(const Ray &ray, double tMin, double *tMax, Visit &&visit) const {
+    traverseLeaves(ray, tMin, tMax, [&](uint32_t first, uint32_t count, double *far) {
+        for (uint32_t i = 0; i < count; ++i)
+            if (visit(first + i, far)) return true;
+        return false;
+    });
+}
+
+template <typename Visit>
+void WideBvh::traverseLeaves(const Ray &ray, double tMin, double *tMax, Visit &&visit, LeafData data) const {
     if (nodes_.empty()) return;
 #if defined(__SSE2__)
     if (tMin >= 0) {
         ForwardSlabs f;
-        if (f.init(ray)) return walk(f, tMin, tMax, visit);
+        if (f.init(ray)) return walk(f, tMin, tMax, visit, data);
     } else {
         FloatSlabs f;
-        if (f.init(ray)) return walk(f, tMin, tMax, visit);
+        if (f.init(ray)) return walk(f, tMin, tMax, visit, data);
     }
 #endif
-    walk(DoubleSlabs(ray), tMin, tMax, visit);
+    walk(DoubleSlabs(ray), tMin, tMax, visit, data);
 }
 
 #if defined(__SSE2__)
@@ -320,7 +349,7 @@ inline int WideBvh::DoubleSlabs::test(const Node &n, const Limits &l, float tn[k
 }
 
 template <typename Slabs, typename Visit>
-void WideBvh::walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit) const {
+void WideBvh::walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit, LeafData data) const {
     struct Entry {
         uint32_t ref;
         float tNear;  ///< no greater than the child's near distance
@@ -332,23 +361,23 @@ void WideBvh::walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit) 
     auto push = [&](uint32_t ref, float tNear) { stack[top++] = {ref, tNear}; };
     while (true) {
         if (current & kLeaf) {
-            uint32_t first = (current & ~kLeaf) >> 2, count = (current & 3) + 1;
-            for (uint32_t i = 0; i < count; ++i)
-                if (visit(first + i, tMax)) return;
+            if (visit((current & ~kLeaf) >> 2, (current & 3) + 1, tMax)) return;
             slabs.lower(limits, *tMax);
         } else {
             const Node &n = nodes_[current];
 #if defined(__SSE2__)
-            // Every interior child's node is fetched while this one is tested, so the walk waits
-            // on memory about once a level instead of once a node (a leaf or an empty slot
-            // fetches this node again). Written out: GCC 12 at -O2 dropped these prefetches
-            // from a lambda called for each child, and kept a loop with a branch per child
+            // Every child's node or leaf data is fetched while this node is tested, so the walk
+            // waits on memory about once a level instead of once a node (without leaf data, a
+            // leaf or an empty slot fetches the root, which is in cache). Written out: GCC 12 at
+            // -O2 dropped these prefetches from a lambda called for each child, and kept a loop
+            // with a branch per child
             const char *base = reinterpret_cast<const char *>(nodes_.data());
-            const uint32_t r0 = n.child[0], r1 = n.child[1], r2 = n.child[2], r3 = n.child[3];
-            const char *p0 = base + size_t{(r0 & kLeaf) ? current : r0} * sizeof(Node);
-            const char *p1 = base + size_t{(r1 & kLeaf) ? current : r1} * sizeof(Node);
-            const char *p2 = base + size_t{(r2 & kLeaf) ? current : r2} * sizeof(Node);
-            const char *p3 = base + size_t{(r3 & kLeaf) ? current : r3} * sizeof(Node);
+            const char *leafBase = data.base ? static_cast<const char *>(data.base) : base;
+            const size_t stride = data.base ? data.stride : 0;
+            auto at = [&](uint32_t r) {
+                return (r & kLeaf) ? leafBase + size_t{(r & ~kLeaf) >> 2} * stride : base + size_t{r} * sizeof(Node);
+            };
+            const char *p0 = at(n.child[0]), *p1 = at(n.child[1]), *p2 = at(n.child[2]), *p3 = at(n.child[3]);
             _mm_prefetch(p0, _MM_HINT_T0);
             _mm_prefetch(p0 + 64, _MM_HINT_T0);
             _mm_prefetch(p1, _MM_HINT_T0);

@@ -5,8 +5,13 @@
 #include <algorithm>
 #include <cmath>
 
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
+
 #include "core/math/float_util.h"
 #include "core/math/fma_clone.h"
+#include "core/system/parallel_for.h"
 
 namespace rt {
 
@@ -27,7 +32,94 @@ bool ownsEdge(const Vec3 &a, const Vec3 &b, double sign) {
     return dy > 0 || (dy == 0 && dx < 0);
 }
 
+#if defined(__x86_64__) && defined(__GNUC__)
+#define SCADRAY_LEAF_FILTER 1
+#define SCADRAY_AVX2_FMA __attribute__((target("avx2,fma")))
+SCADRAY_AVX2_FMA inline __m256d differenceOfProducts4(__m256d a, __m256d b, __m256d c, __m256d d) {
+    __m256d cd = _mm256_mul_pd(c, d);
+    return _mm256_add_pd(_mm256_fmsub_pd(a, b, cd), _mm256_fnmadd_pd(c, d, cd));
+}
+
+/// Of up to four triangles (coordinate a of vertex v of each in lane i of p[3 * v + a]), the
+/// lanes below n whose three edge functions in the ray's frame do not have mixed signs: each
+/// value computed with the operations, in the order and the rounding, of
+/// TriangleMesh::intersect (the translation, the shear as a product then a sum,
+/// differenceOfProducts with its two FMAs), so a lane left out is one that intersect rejects
+/// at its first test. NaN edge functions pass, as there.
+SCADRAY_AVX2_FMA inline unsigned edgeCandidates(const __m256d p[9], uint32_t n, const Vec3 &o, int kx, int ky, int kz,
+                                                double sx, double sy) {
+    const __m256d ox = _mm256_set1_pd(o[kx]), oy = _mm256_set1_pd(o[ky]), oz = _mm256_set1_pd(o[kz]);
+    const __m256d shx = _mm256_set1_pd(sx), shy = _mm256_set1_pd(sy);
+    __m256d x[3], y[3];
+    for (int v = 0; v < 3; ++v) {
+        __m256d z = _mm256_sub_pd(p[3 * v + kz], oz);
+        x[v] = _mm256_add_pd(_mm256_sub_pd(p[3 * v + kx], ox), _mm256_mul_pd(shx, z));
+        y[v] = _mm256_add_pd(_mm256_sub_pd(p[3 * v + ky], oy), _mm256_mul_pd(shy, z));
+    }
+    __m256d e0 = differenceOfProducts4(x[1], y[2], y[1], x[2]);
+    __m256d e1 = differenceOfProducts4(x[2], y[0], y[2], x[0]);
+    __m256d e2 = differenceOfProducts4(x[0], y[1], y[0], x[1]);
+    const __m256d zero = _mm256_setzero_pd();
+    __m256d negative = _mm256_or_pd(_mm256_or_pd(_mm256_cmp_pd(e0, zero, _CMP_LT_OQ), _mm256_cmp_pd(e1, zero, _CMP_LT_OQ)),
+                                    _mm256_cmp_pd(e2, zero, _CMP_LT_OQ));
+    __m256d positive = _mm256_or_pd(_mm256_or_pd(_mm256_cmp_pd(e0, zero, _CMP_GT_OQ), _mm256_cmp_pd(e1, zero, _CMP_GT_OQ)),
+                                    _mm256_cmp_pd(e2, zero, _CMP_GT_OQ));
+    unsigned mixed = static_cast<unsigned>(_mm256_movemask_pd(_mm256_and_pd(negative, positive)));
+    return ~mixed & ((1u << n) - 1);
+}
+
+/// edgeCandidates of a float leaf of n triangles (TriangleMesh::leafVertices' layout; a lane
+/// beyond n reads the next coordinate's floats, or the padding, and is left out).
+SCADRAY_AVX2_FMA unsigned floatLeafCandidates(const float *leaf, uint32_t n, const Vec3 &o, int kx, int ky, int kz,
+                                              double sx, double sy) {
+    __m256d p[9];
+    for (int j = 0; j < 9; ++j) p[j] = _mm256_cvtps_pd(_mm_loadu_ps(leaf + j * n));
+    return edgeCandidates(p, n, o, kx, ky, kz, sx, sy);
+}
+
+/// edgeCandidates of a leaf of n triangle records, the positions gathered by vertex index (a
+/// lane beyond n repeats the last triangle and is left out).
+SCADRAY_AVX2_FMA unsigned indexedLeafCandidates(const TriangleMesh::LeafTriangle *leaf, uint32_t n,
+                                                const Vec3 *positions, const Vec3 &o, int kx, int ky, int kz,
+                                                double sx, double sy) {
+    const TriangleMesh::LeafTriangle &t0 = leaf[0], &t1 = leaf[n > 1 ? 1 : 0], &t2 = leaf[n > 2 ? 2 : 0],
+                                     &t3 = leaf[n > 3 ? 3 : 0];
+    static_assert(sizeof(Vec3) == 3 * sizeof(double));
+    const double *base = &positions[0].x;
+    const __m128i three = _mm_set1_epi32(3);
+    __m256d p[9];
+    for (int v = 0; v < 3; ++v) {
+        // Vertex indices below 2^29 (kMaxItems triangles, 3 vertices each, fit in 31 bits)
+        const __m128i at = _mm_mullo_epi32(_mm_set_epi32(static_cast<int>(t3.v[v]), static_cast<int>(t2.v[v]),
+                                                         static_cast<int>(t1.v[v]), static_cast<int>(t0.v[v])),
+                                           three);
+        for (int a = 0; a < 3; ++a)
+            p[3 * v + a] = _mm256_mask_i32gather_pd(_mm256_setzero_pd(), base + a, at,
+                                                    _mm256_castsi256_pd(_mm256_set1_epi64x(-1)), 8);
+    }
+    return edgeCandidates(p, n, o, kx, ky, kz, sx, sy);
+}
+
+const bool kHasAvx2Fma = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+#endif
+
+/// True when every position of the mesh is exactly a float.
+bool allFloats(const ir::Mesh &mesh) {
+    for (const Vec3 &p : mesh.positions)
+        for (int a = 0; a < 3; ++a)
+            if (!(static_cast<double>(static_cast<float>(p[a])) == p[a])) return false;
+    return true;
+}
+
 }  // namespace
+
+bool TriangleMesh::fourWideLeaves() {
+#ifdef SCADRAY_LEAF_FILTER
+    return kHasAvx2Fma;
+#else
+    return false;
+#endif
+}
 
 TriangleMesh::TriangleMesh(ir::MeshPtr mesh, int buildThreads) : mesh_(std::move(mesh)) {
     const ir::Mesh &m = *mesh_;
@@ -38,8 +130,11 @@ TriangleMesh::TriangleMesh(ir::MeshPtr mesh, int buildThreads) : mesh_(std::move
         if (!m.normals.empty())
             smooth_[i] = !(m.normals[t[0]] == m.normals[t[1]] && m.normals[t[1]] == m.normals[t[2]]);
     }
-    bvh_ = WideBvh(m, buildThreads);
-    leafTriangles_ = leafOrder(m, bvh_);
+    // The four-wide edge test makes a leaf of up to four triangles cost little more than one,
+    // so where it runs the BVH has fuller leaves
+    bvh_ = WideBvh(m, buildThreads, fourWideLeaves() ? WideBvh::kTriangleCost : WideBvh::kItemCost);
+    leafVertices_ = leafVertices(m, bvh_, buildThreads);
+    if (leafVertices_.empty()) leafTriangles_ = leafOrder(m, bvh_);
     topology_ = ir::analyzeMesh(m);
 }
 
@@ -51,8 +146,64 @@ LargeVector<TriangleMesh::LeafTriangle> TriangleMesh::leafOrder(const ir::Mesh &
     return out;
 }
 
+LargeVector<float> TriangleMesh::leafVertices(const ir::Mesh &mesh, const WideBvh &bvh, int threads) {
+    LargeVector<float> out;
+    if (bvh.empty() || !allFloats(mesh)) return out;
+    const auto &order = bvh.itemOrder();
+    // Left unwritten by resize: the threads that fill it touch its pages first
+    out.resize(9 * order.size() + kLeafPadding);
+    const auto &nodes = bvh.nodes();
+    if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    const size_t parts = nodes.size() >= 4096 ? static_cast<size_t>(threads) : 1;
+    parallelFor(0, nodes.size(), parts, [&](size_t, size_t begin, size_t end) {
+        for (size_t k = begin; k < end; ++k)
+            for (uint32_t ref : nodes[k].child) {
+                if (ref == WideBvh::kEmpty || !(ref & WideBvh::kLeaf)) continue;
+                const uint32_t first = (ref & ~WideBvh::kLeaf) >> 2, n = (ref & 3) + 1;
+                float *leaf = out.data() + size_t{9} * first;
+                for (uint32_t i = 0; i < n; ++i) {
+                    const auto &t = mesh.triangles[order[first + i]];
+                    for (int j = 0; j < 9; ++j) leaf[j * n + i] = static_cast<float>(mesh.positions[t[j / 3]][j % 3]);
+                }
+            }
+    });
+    std::fill(out.end() - kLeafPadding, out.end(), 0.0f);
+    return out;
+}
+
 size_t TriangleMesh::extraBytes() const {
-    return bvh_.bytes() + leafTriangles_.capacity() * sizeof(LeafTriangle) + smooth_.capacity() / 8;
+    return bvh_.bytes() + leafTriangles_.capacity() * sizeof(LeafTriangle) +
+           leafVertices_.capacity() * sizeof(float) + smooth_.capacity() / 8;
+}
+
+template <typename F>
+void TriangleMesh::forLeaf(const RayFrame &frame, uint32_t first, uint32_t count, F &&f) const {
+    const Vec3 &o = frame.ray->o;
+    unsigned lanes = (1u << count) - 1;
+    if (leafVertices_.empty()) {
+        const auto &pos = mesh_->positions;
+        const LeafTriangle *leaf = leafTriangles_.data() + first;
+#ifdef SCADRAY_LEAF_FILTER
+        if (kHasAvx2Fma)
+            lanes = indexedLeafCandidates(leaf, count, pos.data(), o, frame.kx, frame.ky, frame.kz, frame.sx, frame.sy);
+#endif
+        for (; lanes != 0; lanes &= lanes - 1) {
+            const LeafTriangle &t = leaf[__builtin_ctz(lanes)];
+            f(pos[t.v[0]], pos[t.v[1]], pos[t.v[2]], t.triangle);
+        }
+        return;
+    }
+    const float *leaf = leafVertices_.data() + size_t{9} * first;
+#ifdef SCADRAY_LEAF_FILTER
+    if (kHasAvx2Fma) lanes = floatLeafCandidates(leaf, count, o, frame.kx, frame.ky, frame.kz, frame.sx, frame.sy);
+#endif
+    for (; lanes != 0; lanes &= lanes - 1) {
+        const uint32_t i = static_cast<uint32_t>(__builtin_ctz(lanes));
+        auto vertex = [&](int v) {
+            return Vec3(leaf[(3 * v) * count + i], leaf[(3 * v + 1) * count + i], leaf[(3 * v + 2) * count + i]);
+        };
+        f(vertex(0), vertex(1), vertex(2), bvh_.itemOrder()[first + i]);
+    }
 }
 
 TriangleMesh::RayFrame::RayFrame(const Ray &r) : ray(&r) {
@@ -67,21 +218,18 @@ TriangleMesh::RayFrame::RayFrame(const Ray &r) : ray(&r) {
 }
 
 bool TriangleMesh::intersectTriangle(const Ray &r, uint32_t triangle, Hit *hit) const {
-    return intersect(RayFrame(r), {mesh_->triangles[triangle], triangle}, -kInfinity, kInfinity,
-                     false, hit);
+    const auto &t = mesh_->triangles[triangle];
+    const auto &pos = mesh_->positions;
+    return intersect(RayFrame(r), pos[t[0]], pos[t[1]], pos[t[2]], triangle, -kInfinity, kInfinity, false, hit);
 }
 
 // The edge functions round once each through std::fma, which without an FMA instruction in the
 // x86-64 baseline is a call into libm: a copy for CPUs with FMA has it inline, with the same
 // results (core/math/fma_clone.h)
 SCADRAY_FMA_CLONES
-bool TriangleMesh::intersect(const RayFrame &f, const LeafTriangle &tri, double tMin, double tMax,
-                             bool tMaxInclusive, Hit *hit) const {
+bool TriangleMesh::intersect(const RayFrame &f, const Vec3 &p0, const Vec3 &p1, const Vec3 &p2,
+                             uint32_t triangle, double tMin, double tMax, bool tMaxInclusive, Hit *hit) const {
     const Ray &r = *f.ray;
-    const auto &idx = tri.v;
-    const uint32_t triangle = tri.triangle;
-    const Vec3 &p0 = mesh_->positions[idx[0]], &p1 = mesh_->positions[idx[1]],
-               &p2 = mesh_->positions[idx[2]];
     // Translate the vertices to the ray origin, permute and shear into the ray's frame
     const int kx = f.kx, ky = f.ky, kz = f.kz;
     Vec3 p0t(p0[kx] - r.o[kx], p0[ky] - r.o[ky], p0[kz] - r.o[kz]);
@@ -138,30 +286,33 @@ bool TriangleMesh::closest(const Ray &r, double tMin, double tMax, Hit *hit) con
     bool found = false;
     double far = tMax;
     RayFrame frame(r);
-    bvh_.traverseSlots(r, tMin, &far, [&](uint32_t slot, double *tFar) {
-        Hit h;
-        const LeafTriangle &tri = leafTriangles_[slot];
-        // A tie at the closest t goes to the lower triangle index
-        if (!intersect(frame, tri, tMin, *tFar, found && tri.triangle < hit->triangle, &h)) return false;
-        // A hit within its own rounding error of the origin may be the surface the ray
-        // starts on: t must be conservatively positive (pbrt-v3 Triangle::Intersect)
-        if (h.t <= h.tError) return false;
-        *hit = h;
-        *tFar = h.t;
-        found = true;
+    bvh_.traverseLeaves(r, tMin, &far, [&](uint32_t first, uint32_t count, double *tFar) {
+        forLeaf(frame, first, count, [&](const Vec3 &p0, const Vec3 &p1, const Vec3 &p2, uint32_t triangle) {
+            Hit h;
+            // A tie at the closest t goes to the lower triangle index
+            if (!intersect(frame, p0, p1, p2, triangle, tMin, *tFar, found && triangle < hit->triangle, &h)) return;
+            // A hit within its own rounding error of the origin may be the surface the ray
+            // starts on: t must be conservatively positive (pbrt-v3 Triangle::Intersect)
+            if (h.t <= h.tError) return;
+            *hit = h;
+            *tFar = h.t;
+            found = true;
+        });
         return false;
-    });
+    }, leafData());
     return found;
 }
 
 void TriangleMesh::allHits(const Ray &r, std::vector<Hit> &out) const {
     double far = kInfinity;
     RayFrame frame(r);
-    bvh_.traverseSlots(r, -kInfinity, &far, [&](uint32_t slot, double *) {
-        Hit h;
-        if (intersect(frame, leafTriangles_[slot], -kInfinity, kInfinity, false, &h)) out.push_back(h);
+    bvh_.traverseLeaves(r, -kInfinity, &far, [&](uint32_t first, uint32_t count, double *) {
+        forLeaf(frame, first, count, [&](const Vec3 &p0, const Vec3 &p1, const Vec3 &p2, uint32_t triangle) {
+            Hit h;
+            if (intersect(frame, p0, p1, p2, triangle, -kInfinity, kInfinity, false, &h)) out.push_back(h);
+        });
         return false;
-    });
+    }, leafData());
 }
 
 ObjectSurface TriangleMesh::surface(const Hit &hit, Vec3 *shadingNormal,

@@ -26,6 +26,19 @@ class TriangleMesh {
     };
     /// The triangles of `mesh` in the leaf order of `bvh` (built over that mesh).
     static LargeVector<LeafTriangle> leafOrder(const ir::Mesh &mesh, const WideBvh &bvh);
+    /// Floats after the last leaf's vertices, so a four-lane load of a shorter leaf stays in
+    /// the array.
+    static constexpr size_t kLeafPadding = 4;
+    /// The vertices of `mesh`'s triangles as floats, leaf by leaf of `bvh` (built over that
+    /// mesh): for a leaf of n triangles from slot `first`, coordinate j (vertex j / 3, axis
+    /// j % 3) of its i-th triangle is at [9 * first + j * n + i], so the leaf's triangles sit
+    /// side by side, four to a SIMD register; then kLeafPadding floats. Empty unless every
+    /// position is a float (as STL and glTF give them), so the floats stand for the positions
+    /// exactly. threads: 0 for all cores.
+    static LargeVector<float> leafVertices(const ir::Mesh &mesh, const WideBvh &bvh, int threads = 0);
+    /// Whether a leaf's triangles are tested four at a time (on a CPU with AVX2 and FMA); mesh
+    /// BVHs are then built with WideBvh::kTriangleCost, for fuller leaves.
+    static bool fourWideLeaves();
 
     struct Hit {
         double t = 0;
@@ -47,7 +60,11 @@ class TriangleMesh {
     /// Bytes held by the BVH and the derived data (not counting the shared ir::Mesh).
     size_t extraBytes() const;
     const WideBvh &bvh() const { return bvh_; }
+    /// A mesh's leaves hold either the triangles' vertices as floats (leafVertices, for a mesh
+    /// whose positions are all floats) or their vertex indices (leafTriangles, for the others);
+    /// the other array is empty. The hits are the same either way.
     const LargeVector<LeafTriangle> &leafTriangles() const { return leafTriangles_; }
+    const LargeVector<float> &leafVertices() const { return leafVertices_; }
 
     /// Watertight ray-triangle test (Woop, Benthin and Wald 2013; pbrt-v3 section 3.6.2) for
     /// any t along the line, with a fill convention on edges and vertices: a ray through a
@@ -74,14 +91,26 @@ class TriangleMesh {
         double sx, sy, sz;
         explicit RayFrame(const Ray &r);
     };
-    /// intersectTriangle for a ray frame, returning false early when t is not within
-    /// (tMin, tMax), or (tMin, tMax] when tMaxInclusive.
-    bool intersect(const RayFrame &f, const LeafTriangle &tri, double tMin, double tMax,
-                   bool tMaxInclusive, Hit *hit) const;
+    /// intersectTriangle for a ray frame and the triangle's vertices, returning false early
+    /// when t is not within (tMin, tMax), or (tMin, tMax] when tMaxInclusive.
+    bool intersect(const RayFrame &f, const Vec3 &p0, const Vec3 &p1, const Vec3 &p2, uint32_t triangle,
+                   double tMin, double tMax, bool tMaxInclusive, Hit *hit) const;
+    /// Calls f(p0, p1, p2, triangle) for the triangles of the leaf [first, first + count) that
+    /// the ray can hit: all of them, or on a CPU with AVX2 and FMA, those whose edge functions
+    /// in the ray's frame do not have mixed signs (computed four at a time exactly as intersect
+    /// computes them, so what it leaves out, intersect rejects).
+    /// Where the walk prefetches a leaf's data: its vertices, or its triangles' records.
+    WideBvh::LeafData leafData() const {
+        if (!leafVertices_.empty()) return {leafVertices_.data(), 9 * sizeof(float)};
+        return {leafTriangles_.data(), sizeof(LeafTriangle)};
+    }
+    template <typename F>
+    void forLeaf(const RayFrame &frame, uint32_t first, uint32_t count, F &&f) const;
 
     ir::MeshPtr mesh_;
     WideBvh bvh_;
-    LargeVector<LeafTriangle> leafTriangles_;  ///< in bvh_.itemOrder()
+    LargeVector<LeafTriangle> leafTriangles_;  ///< in bvh_.itemOrder(), for a mesh not all in floats
+    LargeVector<float> leafVertices_;          ///< as leafVertices() lays them out, or empty
     Bounds3 bounds_;
     ir::MeshTopology topology_;
     /// Per triangle: true when its vertex normals differ (POV-Ray shades only such triangles

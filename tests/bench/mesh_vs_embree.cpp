@@ -4,7 +4,9 @@
 // 2 threads, closest-hit rays per CPU-second (one thread) for 640x480 camera rays and for
 // random rays, and bytes per triangle.
 // Built with Embree where CMake finds it (SCADRAY_HAVE_EMBREE); otherwise prints scadray only.
-// Run: build/tests/mesh_vs_embree [LEVELS]   (icosphere of 20 * 4^LEVELS triangles; default 8)
+// Run: build/tests/mesh_vs_embree [LEVELS] [--double]   (icosphere of 20 * 4^LEVELS triangles,
+// default 8; positions rounded to floats, as STL and glTF give them, or with --double as
+// computed, so scadray's leaves keep vertex indices while Embree gets them rounded)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -219,8 +221,18 @@ double agreement(const TraceResult &a, const TraceResult &b) {
     return 100.0 * same / a.triangle.size();
 }
 
-int run(int levels) {
+int run(int levels, bool doublePositions) {
+    // Positions rounded to floats, as an STL or glTF file gives them, so both libraries trace
+    // exactly the same triangles. Through a volatile: GCC 12.2's SLP vectorizer at -O2 drops
+    // the rounding of x and y in `p = {float(p.x), float(p.y), float(p.z)}` (and in a loop over
+    // p[a]), leaving them doubles
     auto mesh = test::icosphere(levels, 1);
+    if (!doublePositions)
+        for (auto &p : mesh->positions)
+            for (int a = 0; a < 3; ++a) {
+                volatile float f = static_cast<float>(p[a]);
+                p[a] = f;
+            }
     size_t tris = mesh->triangles.size();
     std::printf("icosphere: %zu triangles, %zu vertices\n", tris, mesh->positions.size());
     double meshBytes = (mesh->positions.size() * sizeof(Vec3) + tris * sizeof(mesh->triangles[0])) /
@@ -230,8 +242,9 @@ int run(int levels) {
     // The BVH and the leaf-ordered copy of the triangles that its leaves read: together they
     // are what Embree's build makes (its leaves hold the triangles)
     auto buildBvh = [&](int threads) {
-        WideBvh bvh(*mesh, threads);
-        auto leaves = TriangleMesh::leafOrder(*mesh, bvh);
+        WideBvh bvh(*mesh, threads, TriangleMesh::fourWideLeaves() ? WideBvh::kTriangleCost : WideBvh::kItemCost);
+        auto vertices = TriangleMesh::leafVertices(*mesh, bvh, threads);
+        if (vertices.empty()) auto leaves = TriangleMesh::leafOrder(*mesh, bvh);
     };
     double build1 = bestWall(3, [&] { buildBvh(1); }, &cpu1);
     double build2 = bestWall(3, [&] { buildBvh(2); }, &cpu2);
@@ -249,6 +262,7 @@ int run(int levels) {
                     tm->bvh().nodes().size(), sizeof(WideBvh::Node),
                     children / static_cast<double>(tm->bvh().nodes().size()), leaves,
                     tris / static_cast<double>(leaves), tm->bvh().depth());
+        std::printf("scadray leaves hold %s\n", tm->leafVertices().empty() ? "vertex indices" : "float vertices");
     }
     auto camera = cameraRays();
     auto random = randomRays(camera.size());
@@ -333,4 +347,14 @@ int run(int levels) {
 }  // namespace
 }  // namespace rt
 
-int main(int argc, char **argv) { return rt::run(argc > 1 ? std::atoi(argv[1]) : 8); }
+int main(int argc, char **argv) {
+    int levels = 8;
+    bool doublePositions = false;
+    for (int i = 1; i < argc; ++i) {
+        if (std::string(argv[i]) == "--double")
+            doublePositions = true;
+        else
+            levels = std::atoi(argv[i]);
+    }
+    return rt::run(levels, doublePositions);
+}
