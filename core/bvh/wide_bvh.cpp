@@ -650,7 +650,7 @@ bool WideBvh::FloatRay::init(const Ray &ray, __m128 *inv) {
         __m128d ok = _mm_and_pd(_mm_cmple_pd(ao, big), _mm_or_pd(finite, _mm_cmpeq_pd(ai, _mm_set1_pd(kInfinity))));
         return _mm_movemask_pd(ok) == 3;
     };
-    if (!(fits(oXY, invXY) & fits(oZZ, invZZ))) return false;
+    if (!(static_cast<int>(fits(oXY, invXY)) & static_cast<int>(fits(oZZ, invZZ)))) return false;
     // The reciprocals rounded to nearest floats in lanes 0 to 2 (an infinite one stays infinite,
     // and each keeps its sign, as none is below 1e-30)
     *inv = _mm_movelh_ps(_mm_cvtpd_ps(invXY), _mm_cvtpd_ps(invZZ));

@@ -7,6 +7,7 @@
 // SAH build, parallel below the top levels and identical for any number of threads.
 #pragma once
 
+#include <cassert>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -95,8 +96,11 @@ class WideBvh {
     explicit WideBvh(const std::vector<Bounds3> &items, int threads = 1, float itemCost = kItemCost);
 
     const LargeVector<Node> &nodes() const { return nodes_; }
-    /// Item (triangle) indices in leaf order.
+    /// Item (triangle) indices in leaf order; empty after dropItemOrder().
     const LargeVector<uint32_t> &itemOrder() const { return order_; }
+    /// Frees the item order, for a caller that keeps it in its own leaf data and only uses
+    /// traverseLeaves or traverseSlots; traverse needs it.
+    void dropItemOrder() { LargeVector<uint32_t>().swap(order_); }
     size_t bytes() const { return nodes_.capacity() * sizeof(Node) + order_.capacity() * sizeof(uint32_t); }
     int depth() const { return depth_; }
 
@@ -116,13 +120,14 @@ class WideBvh {
     /// starts at base + s * stride. The walk prefetches the start of each leaf child's data
     /// while it tests the node, a level before it visits the leaf.
     struct LeafData {
-        const void *base = nullptr;
-        size_t stride = 0;
+        const void *base;  ///< null: no leaf data
+        size_t stride;
     };
     /// As traverseSlots, a leaf at a time: visit(first, count, tMax) gets the leaf's slots
     /// [first, first + count) (count <= kMaxLeafItems).
     template <typename Visit>
-    void traverseLeaves(const Ray &ray, double tMin, double *tMax, Visit &&visit, LeafData data = {}) const;
+    void traverseLeaves(const Ray &ray, double tMin, double *tMax, Visit &&visit,
+                        LeafData data = {nullptr, 0}) const;
 
   private:
     /// Depth bound of the build; with at most three pushes a level it sizes the traversal stack.
@@ -213,6 +218,7 @@ class WideBvh {
 
 template <typename Visit>
 void WideBvh::traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit) const {
+    assert(order_.size() > 0 || nodes_.empty());  // not after dropItemOrder()
     traverseSlots(ray, tMin, tMax, [&](uint32_t slot, double *far) { return visit(order_[slot], far); });
 }
 

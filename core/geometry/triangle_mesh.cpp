@@ -3,7 +3,9 @@
 #include "core/geometry/triangle_mesh.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 #if defined(__x86_64__)
 #include <immintrin.h>
@@ -40,25 +42,29 @@ SCADRAY_AVX2_FMA inline __m256d differenceOfProducts4(__m256d a, __m256d b, __m2
     return _mm256_add_pd(_mm256_fmsub_pd(a, b, cd), _mm256_fnmadd_pd(c, d, cd));
 }
 
-/// Of up to four triangles (coordinate a of vertex v of each in lane i of p[3 * v + a]), the
-/// lanes below n whose three edge functions in the ray's frame do not have mixed signs: each
-/// value computed with the operations, in the order and the rounding, of
+/// Of up to four triangles (load(3 * v + a) gives coordinate a of vertex v of each, one
+/// triangle a lane), the lanes below n whose three edge functions in the ray's frame do not have
+/// mixed signs: each value computed with the operations, in the order and the rounding, of
 /// TriangleMesh::intersect (the translation, the shear as a product then a sum,
 /// differenceOfProducts with its two FMAs), so a lane left out is one that intersect rejects
 /// at its first test. NaN edge functions pass, as there.
-SCADRAY_AVX2_FMA inline unsigned edgeCandidates(const __m256d p[9], uint32_t n, const Vec3 &o, int kx, int ky, int kz,
-                                                double sx, double sy) {
-    const __m256d ox = _mm256_set1_pd(o[kx]), oy = _mm256_set1_pd(o[ky]), oz = _mm256_set1_pd(o[kz]);
-    const __m256d shx = _mm256_set1_pd(sx), shy = _mm256_set1_pd(sy);
-    __m256d x[3], y[3];
-    for (int v = 0; v < 3; ++v) {
-        __m256d z = _mm256_sub_pd(p[3 * v + kz], oz);
-        x[v] = _mm256_add_pd(_mm256_sub_pd(p[3 * v + kx], ox), _mm256_mul_pd(shx, z));
-        y[v] = _mm256_add_pd(_mm256_sub_pd(p[3 * v + ky], oy), _mm256_mul_pd(shy, z));
-    }
-    __m256d e0 = differenceOfProducts4(x[1], y[2], y[1], x[2]);
-    __m256d e1 = differenceOfProducts4(x[2], y[0], y[2], x[0]);
-    __m256d e2 = differenceOfProducts4(x[0], y[1], y[0], x[1]);
+template <typename Load>
+SCADRAY_AVX2_FMA inline unsigned edgeCandidates(const Load &load, uint32_t n, const TriangleMesh::RayFrame &f) {
+    const __m256d ox = _mm256_set1_pd(f.ox), oy = _mm256_set1_pd(f.oy), oz = _mm256_set1_pd(f.oz);
+    const __m256d shx = _mm256_set1_pd(f.sx), shy = _mm256_set1_pd(f.sy);
+    const int kx = f.kx, ky = f.ky, kz = f.kz;
+    // Vertex v translated to the origin, permuted and sheared (written out: GCC keeps a loop
+    // over the vertices, with its results on the stack)
+    __m256d z0 = _mm256_sub_pd(load(kz), oz), z1 = _mm256_sub_pd(load(3 + kz), oz), z2 = _mm256_sub_pd(load(6 + kz), oz);
+    __m256d x0 = _mm256_add_pd(_mm256_sub_pd(load(kx), ox), _mm256_mul_pd(shx, z0));
+    __m256d y0 = _mm256_add_pd(_mm256_sub_pd(load(ky), oy), _mm256_mul_pd(shy, z0));
+    __m256d x1 = _mm256_add_pd(_mm256_sub_pd(load(3 + kx), ox), _mm256_mul_pd(shx, z1));
+    __m256d y1 = _mm256_add_pd(_mm256_sub_pd(load(3 + ky), oy), _mm256_mul_pd(shy, z1));
+    __m256d x2 = _mm256_add_pd(_mm256_sub_pd(load(6 + kx), ox), _mm256_mul_pd(shx, z2));
+    __m256d y2 = _mm256_add_pd(_mm256_sub_pd(load(6 + ky), oy), _mm256_mul_pd(shy, z2));
+    __m256d e0 = differenceOfProducts4(x1, y2, y1, x2);
+    __m256d e1 = differenceOfProducts4(x2, y0, y2, x0);
+    __m256d e2 = differenceOfProducts4(x0, y1, y0, x1);
     const __m256d zero = _mm256_setzero_pd();
     __m256d negative = _mm256_or_pd(_mm256_or_pd(_mm256_cmp_pd(e0, zero, _CMP_LT_OQ), _mm256_cmp_pd(e1, zero, _CMP_LT_OQ)),
                                     _mm256_cmp_pd(e2, zero, _CMP_LT_OQ));
@@ -68,36 +74,43 @@ SCADRAY_AVX2_FMA inline unsigned edgeCandidates(const __m256d p[9], uint32_t n, 
     return ~mixed & ((1u << n) - 1);
 }
 
-/// edgeCandidates of a float leaf of n triangles (TriangleMesh::leafVertices' layout; a lane
-/// beyond n reads the next coordinate's floats, or the padding, and is left out).
-SCADRAY_AVX2_FMA unsigned floatLeafCandidates(const float *leaf, uint32_t n, const Vec3 &o, int kx, int ky, int kz,
-                                              double sx, double sy) {
-    __m256d p[9];
-    for (int j = 0; j < 9; ++j) p[j] = _mm256_cvtps_pd(_mm_loadu_ps(leaf + j * n));
-    return edgeCandidates(p, n, o, kx, ky, kz, sx, sy);
+/// Coordinate j of a float leaf's n triangles (TriangleMesh::floatLeaves' layout, from the
+/// first coordinate; a lane beyond n reads the next coordinate's words, or the next leaf's, or
+/// the padding, and is left out).
+struct FloatLeafLoad {
+    const float *c;  // _mm_loadu_ps may alias the leaf's 32-bit words
+    uint32_t n;
+    SCADRAY_AVX2_FMA __m256d operator()(int j) const { return _mm256_cvtps_pd(_mm_loadu_ps(c + j * n)); }
+};
+
+SCADRAY_AVX2_FMA unsigned floatLeafCandidates(const uint32_t *coordinates, uint32_t n, const TriangleMesh::RayFrame &f) {
+    return edgeCandidates(FloatLeafLoad{reinterpret_cast<const float *>(coordinates), n}, n, f);
 }
 
-/// edgeCandidates of a leaf of n triangle records, the positions gathered by vertex index (a
-/// lane beyond n repeats the last triangle and is left out).
+/// Coordinate j of a leaf of triangle records, gathered by vertex index: at[v] holds three
+/// times each lane's index of vertex v (a lane beyond the leaf repeats its first triangle).
+struct GatherLoad {
+    const double *positions;
+    __m128i at[3];
+    SCADRAY_AVX2_FMA __m256d operator()(int j) const {
+        return _mm256_mask_i32gather_pd(_mm256_setzero_pd(), positions + j % 3, at[j / 3],
+                                        _mm256_castsi256_pd(_mm256_set1_epi64x(-1)), 8);
+    }
+};
+
+/// edgeCandidates of a leaf of n triangle records, the positions gathered by vertex index
+/// (three times an index must fit in 31 bits: TriangleMesh checks the vertex count).
 SCADRAY_AVX2_FMA unsigned indexedLeafCandidates(const TriangleMesh::LeafTriangle *leaf, uint32_t n,
-                                                const Vec3 *positions, const Vec3 &o, int kx, int ky, int kz,
-                                                double sx, double sy) {
+                                                const Vec3 *positions, const TriangleMesh::RayFrame &f) {
     const TriangleMesh::LeafTriangle &t0 = leaf[0], &t1 = leaf[n > 1 ? 1 : 0], &t2 = leaf[n > 2 ? 2 : 0],
                                      &t3 = leaf[n > 3 ? 3 : 0];
     static_assert(sizeof(Vec3) == 3 * sizeof(double));
-    const double *base = &positions[0].x;
-    const __m128i three = _mm_set1_epi32(3);
-    __m256d p[9];
-    for (int v = 0; v < 3; ++v) {
-        // Vertex indices below 2^29 (kMaxItems triangles, 3 vertices each, fit in 31 bits)
-        const __m128i at = _mm_mullo_epi32(_mm_set_epi32(static_cast<int>(t3.v[v]), static_cast<int>(t2.v[v]),
-                                                         static_cast<int>(t1.v[v]), static_cast<int>(t0.v[v])),
-                                           three);
-        for (int a = 0; a < 3; ++a)
-            p[3 * v + a] = _mm256_mask_i32gather_pd(_mm256_setzero_pd(), base + a, at,
-                                                    _mm256_castsi256_pd(_mm256_set1_epi64x(-1)), 8);
-    }
-    return edgeCandidates(p, n, o, kx, ky, kz, sx, sy);
+    GatherLoad load{&positions[0].x, {}};
+    for (int v = 0; v < 3; ++v)
+        load.at[v] = _mm_mullo_epi32(_mm_set_epi32(static_cast<int>(t3.v[v]), static_cast<int>(t2.v[v]),
+                                                   static_cast<int>(t1.v[v]), static_cast<int>(t0.v[v])),
+                                     _mm_set1_epi32(3));
+    return edgeCandidates(load, n, f);
 }
 
 const bool kHasAvx2Fma = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
@@ -133,8 +146,15 @@ TriangleMesh::TriangleMesh(ir::MeshPtr mesh, int buildThreads) : mesh_(std::move
     // The four-wide edge test makes a leaf of up to four triangles cost little more than one,
     // so where it runs the BVH has fuller leaves
     bvh_ = WideBvh(m, buildThreads, fourWideLeaves() ? WideBvh::kTriangleCost : WideBvh::kItemCost);
-    leafVertices_ = leafVertices(m, bvh_, buildThreads);
-    if (leafVertices_.empty()) leafTriangles_ = leafOrder(m, bvh_);
+    floatLeaves_ = floatLeaves(m, bvh_, buildThreads);
+#ifdef SCADRAY_LEAF_FILTER
+    // Gathers take signed 32-bit offsets: three times a vertex index must fit
+    gatherFilter_ = kHasAvx2Fma && m.positions.size() <= size_t{INT32_MAX} / 3;
+#endif
+    if (floatLeaves_.empty())
+        leafTriangles_ = leafOrder(m, bvh_);
+    else
+        bvh_.dropItemOrder();  // the float leaves hold it
     topology_ = ir::analyzeMesh(m);
 }
 
@@ -146,12 +166,12 @@ LargeVector<TriangleMesh::LeafTriangle> TriangleMesh::leafOrder(const ir::Mesh &
     return out;
 }
 
-LargeVector<float> TriangleMesh::leafVertices(const ir::Mesh &mesh, const WideBvh &bvh, int threads) {
-    LargeVector<float> out;
+LargeVector<uint32_t> TriangleMesh::floatLeaves(const ir::Mesh &mesh, const WideBvh &bvh, int threads) {
+    LargeVector<uint32_t> out;
     if (bvh.empty() || !allFloats(mesh)) return out;
     const auto &order = bvh.itemOrder();
     // Left unwritten by resize: the threads that fill it touch its pages first
-    out.resize(9 * order.size() + kLeafPadding);
+    out.resize(kFloatLeafWords * order.size() + kLeafPadding);
     const auto &nodes = bvh.nodes();
     if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     const size_t parts = nodes.size() >= 4096 ? static_cast<size_t>(threads) : 1;
@@ -160,32 +180,33 @@ LargeVector<float> TriangleMesh::leafVertices(const ir::Mesh &mesh, const WideBv
             for (uint32_t ref : nodes[k].child) {
                 if (ref == WideBvh::kEmpty || !(ref & WideBvh::kLeaf)) continue;
                 const uint32_t first = (ref & ~WideBvh::kLeaf) >> 2, n = (ref & 3) + 1;
-                float *leaf = out.data() + size_t{9} * first;
+                uint32_t *leaf = out.data() + kFloatLeafWords * first;
                 for (uint32_t i = 0; i < n; ++i) {
-                    const auto &t = mesh.triangles[order[first + i]];
-                    for (int j = 0; j < 9; ++j) leaf[j * n + i] = static_cast<float>(mesh.positions[t[j / 3]][j % 3]);
+                    const uint32_t triangle = order[first + i];
+                    const auto &t = mesh.triangles[triangle];
+                    leaf[i] = triangle;
+                    for (int j = 0; j < 9; ++j)
+                        leaf[n + j * n + i] = std::bit_cast<uint32_t>(static_cast<float>(mesh.positions[t[j / 3]][j % 3]));
                 }
             }
     });
-    std::fill(out.end() - kLeafPadding, out.end(), 0.0f);
+    std::fill(out.end() - kLeafPadding, out.end(), 0u);
     return out;
 }
 
 size_t TriangleMesh::extraBytes() const {
     return bvh_.bytes() + leafTriangles_.capacity() * sizeof(LeafTriangle) +
-           leafVertices_.capacity() * sizeof(float) + smooth_.capacity() / 8;
+           floatLeaves_.capacity() * sizeof(uint32_t) + smooth_.capacity() / 8;
 }
 
 template <typename F>
 void TriangleMesh::forLeaf(const RayFrame &frame, uint32_t first, uint32_t count, F &&f) const {
-    const Vec3 &o = frame.ray->o;
     unsigned lanes = (1u << count) - 1;
-    if (leafVertices_.empty()) {
+    if (floatLeaves_.empty()) {
         const auto &pos = mesh_->positions;
         const LeafTriangle *leaf = leafTriangles_.data() + first;
 #ifdef SCADRAY_LEAF_FILTER
-        if (kHasAvx2Fma)
-            lanes = indexedLeafCandidates(leaf, count, pos.data(), o, frame.kx, frame.ky, frame.kz, frame.sx, frame.sy);
+        if (gatherFilter_) lanes = indexedLeafCandidates(leaf, count, pos.data(), frame);
 #endif
         for (; lanes != 0; lanes &= lanes - 1) {
             const LeafTriangle &t = leaf[__builtin_ctz(lanes)];
@@ -193,16 +214,14 @@ void TriangleMesh::forLeaf(const RayFrame &frame, uint32_t first, uint32_t count
         }
         return;
     }
-    const float *leaf = leafVertices_.data() + size_t{9} * first;
+    const uint32_t *leaf = floatLeaves_.data() + kFloatLeafWords * first, *coordinates = leaf + count;
 #ifdef SCADRAY_LEAF_FILTER
-    if (kHasAvx2Fma) lanes = floatLeafCandidates(leaf, count, o, frame.kx, frame.ky, frame.kz, frame.sx, frame.sy);
+    if (kHasAvx2Fma) lanes = floatLeafCandidates(coordinates, count, frame);
 #endif
     for (; lanes != 0; lanes &= lanes - 1) {
         const uint32_t i = static_cast<uint32_t>(__builtin_ctz(lanes));
-        auto vertex = [&](int v) {
-            return Vec3(leaf[(3 * v) * count + i], leaf[(3 * v + 1) * count + i], leaf[(3 * v + 2) * count + i]);
-        };
-        f(vertex(0), vertex(1), vertex(2), bvh_.itemOrder()[first + i]);
+        auto at = [&](int j) { return static_cast<double>(std::bit_cast<float>(coordinates[j * count + i])); };
+        f(Vec3(at(0), at(1), at(2)), Vec3(at(3), at(4), at(5)), Vec3(at(6), at(7), at(8)), leaf[i]);
     }
 }
 
@@ -215,6 +234,9 @@ TriangleMesh::RayFrame::RayFrame(const Ray &r) : ray(&r) {
     sx = -d.x / d.z;
     sy = -d.y / d.z;
     sz = 1 / d.z;
+    ox = r.o[kx];
+    oy = r.o[ky];
+    oz = r.o[kz];
 }
 
 bool TriangleMesh::intersectTriangle(const Ray &r, uint32_t triangle, Hit *hit) const {

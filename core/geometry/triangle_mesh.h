@@ -26,16 +26,18 @@ class TriangleMesh {
     };
     /// The triangles of `mesh` in the leaf order of `bvh` (built over that mesh).
     static LargeVector<LeafTriangle> leafOrder(const ir::Mesh &mesh, const WideBvh &bvh);
-    /// Floats after the last leaf's vertices, so a four-lane load of a shorter leaf stays in
-    /// the array.
+    /// Words after the last leaf, so a four-lane load of a shorter leaf stays in the array.
     static constexpr size_t kLeafPadding = 4;
-    /// The vertices of `mesh`'s triangles as floats, leaf by leaf of `bvh` (built over that
-    /// mesh): for a leaf of n triangles from slot `first`, coordinate j (vertex j / 3, axis
-    /// j % 3) of its i-th triangle is at [9 * first + j * n + i], so the leaf's triangles sit
-    /// side by side, four to a SIMD register; then kLeafPadding floats. Empty unless every
-    /// position is a float (as STL and glTF give them), so the floats stand for the positions
-    /// exactly. threads: 0 for all cores.
-    static LargeVector<float> leafVertices(const ir::Mesh &mesh, const WideBvh &bvh, int threads = 0);
+    /// Words of float leaves a triangle takes: its index and its nine coordinates.
+    static constexpr size_t kFloatLeafWords = 10;
+    /// `mesh`'s triangles leaf by leaf of `bvh` (built over that mesh), each leaf in one run of
+    /// 32-bit words: for a leaf of n triangles from slot `first`, at [10 * first, 10 * (first +
+    /// n)), first the n triangles' indices, then their vertices as floats, coordinate by
+    /// coordinate: coordinate j (vertex j / 3, axis j % 3) of the i-th triangle in word
+    /// n + j * n + i, so a leaf's triangles sit side by side, four to a SIMD register. Then
+    /// kLeafPadding words. Empty unless every position is a float (as STL and glTF give them),
+    /// so the floats stand for the positions exactly. threads: 0 for all cores.
+    static LargeVector<uint32_t> floatLeaves(const ir::Mesh &mesh, const WideBvh &bvh, int threads = 0);
     /// Whether a leaf's triangles are tested four at a time (on a CPU with AVX2 and FMA); mesh
     /// BVHs are then built with WideBvh::kTriangleCost, for fuller leaves.
     static bool fourWideLeaves();
@@ -60,11 +62,12 @@ class TriangleMesh {
     /// Bytes held by the BVH and the derived data (not counting the shared ir::Mesh).
     size_t extraBytes() const;
     const WideBvh &bvh() const { return bvh_; }
-    /// A mesh's leaves hold either the triangles' vertices as floats (leafVertices, for a mesh
-    /// whose positions are all floats) or their vertex indices (leafTriangles, for the others);
-    /// the other array is empty. The hits are the same either way.
+    /// A mesh's leaves hold either its triangles' indices and vertices as floats (floatLeaves,
+    /// for a mesh whose positions are all floats; its BVH then keeps no item order, which the
+    /// leaves hold) or their vertex indices (leafTriangles, for the others); the other array is
+    /// empty. The hits are the same either way.
     const LargeVector<LeafTriangle> &leafTriangles() const { return leafTriangles_; }
-    const LargeVector<float> &leafVertices() const { return leafVertices_; }
+    const LargeVector<uint32_t> &floatLeaves() const { return floatLeaves_; }
 
     /// Watertight ray-triangle test (Woop, Benthin and Wald 2013; pbrt-v3 section 3.6.2) for
     /// any t along the line, with a fill convention on edges and vertices: a ray through a
@@ -83,14 +86,16 @@ class TriangleMesh {
     /// tangent, vertex colour) that the mesh has.
     ObjectSurface surface(const Hit &hit, Vec3 *shadingNormal, SurfaceInteraction *si) const;
 
-  private:
     /// The ray in the watertight test's frame: the axis of its largest component is z.
     struct RayFrame {
         const Ray *ray;
         int kx, ky, kz;
         double sx, sy, sz;
+        double ox, oy, oz;  ///< the origin, permuted
         explicit RayFrame(const Ray &r);
     };
+
+  private:
     /// intersectTriangle for a ray frame and the triangle's vertices, returning false early
     /// when t is not within (tMin, tMax), or (tMin, tMax] when tMaxInclusive.
     bool intersect(const RayFrame &f, const Vec3 &p0, const Vec3 &p1, const Vec3 &p2, uint32_t triangle,
@@ -101,7 +106,7 @@ class TriangleMesh {
     /// computes them, so what it leaves out, intersect rejects).
     /// Where the walk prefetches a leaf's data: its vertices, or its triangles' records.
     WideBvh::LeafData leafData() const {
-        if (!leafVertices_.empty()) return {leafVertices_.data(), 9 * sizeof(float)};
+        if (!floatLeaves_.empty()) return {floatLeaves_.data(), kFloatLeafWords * sizeof(uint32_t)};
         return {leafTriangles_.data(), sizeof(LeafTriangle)};
     }
     template <typename F>
@@ -110,7 +115,8 @@ class TriangleMesh {
     ir::MeshPtr mesh_;
     WideBvh bvh_;
     LargeVector<LeafTriangle> leafTriangles_;  ///< in bvh_.itemOrder(), for a mesh not all in floats
-    LargeVector<float> leafVertices_;          ///< as leafVertices() lays them out, or empty
+    LargeVector<uint32_t> floatLeaves_;        ///< as floatLeaves() lays them out, or empty
+    bool gatherFilter_ = false;                ///< leafTriangles_ take the four-wide test
     Bounds3 bounds_;
     ir::MeshTopology topology_;
     /// Per triangle: true when its vertex normals differ (POV-Ray shades only such triangles

@@ -243,8 +243,8 @@ int run(int levels, bool doublePositions) {
     // are what Embree's build makes (its leaves hold the triangles)
     auto buildBvh = [&](int threads) {
         WideBvh bvh(*mesh, threads, TriangleMesh::fourWideLeaves() ? WideBvh::kTriangleCost : WideBvh::kItemCost);
-        auto vertices = TriangleMesh::leafVertices(*mesh, bvh, threads);
-        if (vertices.empty()) auto leaves = TriangleMesh::leafOrder(*mesh, bvh);
+        auto floats = TriangleMesh::floatLeaves(*mesh, bvh, threads);
+        if (floats.empty()) auto leaves = TriangleMesh::leafOrder(*mesh, bvh);
     };
     double build1 = bestWall(3, [&] { buildBvh(1); }, &cpu1);
     double build2 = bestWall(3, [&] { buildBvh(2); }, &cpu2);
@@ -262,7 +262,7 @@ int run(int levels, bool doublePositions) {
                     tm->bvh().nodes().size(), sizeof(WideBvh::Node),
                     children / static_cast<double>(tm->bvh().nodes().size()), leaves,
                     tris / static_cast<double>(leaves), tm->bvh().depth());
-        std::printf("scadray leaves hold %s\n", tm->leafVertices().empty() ? "vertex indices" : "float vertices");
+        std::printf("scadray leaves hold %s\n", tm->floatLeaves().empty() ? "vertex indices" : "float vertices");
     }
     auto camera = cameraRays();
     auto random = randomRays(camera.size());

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -102,7 +103,7 @@ void expectClosestMatchesBruteForce(double scale, const Vec3 &offset, bool float
     auto m = troubleMesh(3, scale, offset);
     if (floats) m = inFloats(m);
     TriangleMesh mesh(m);
-    ASSERT_EQ(mesh.leafVertices().empty(), !floats);
+    ASSERT_EQ(mesh.floatLeaves().empty(), !floats);
     ASSERT_EQ(mesh.leafTriangles().empty(), floats);
     int hits = 0;
     for (const Ray &r : testRays(*m, scale, offset, 1500)) {
@@ -137,30 +138,38 @@ TEST(WideBvh, FloatLeavesClosestHitMatchesBruteForceAtEveryScale) {
     expectClosestMatchesBruteForce(1e6, Vec3(3e9, 0, -1e9), true);
 }
 
-TEST(WideBvh, FloatLeavesHoldEachLeafsVerticesSideBySide) {
+TEST(WideBvh, FloatLeavesHoldEachLeafsTrianglesAndVerticesSideBySide) {
     auto m = inFloats(troubleMesh(4, 1, Vec3(0.25, 0, 0)));
     TriangleMesh mesh(m);
-    const auto &order = mesh.bvh().itemOrder();
-    const auto &v = mesh.leafVertices();
-    ASSERT_EQ(v.size(), 9 * order.size() + TriangleMesh::kLeafPadding);
+    // The float leaves hold the item order, so the mesh's BVH drops its own; the same build
+    // gives it
+    EXPECT_TRUE(mesh.bvh().itemOrder().empty());
+    WideBvh same(*m, 1, TriangleMesh::fourWideLeaves() ? WideBvh::kTriangleCost : WideBvh::kItemCost);
+    ASSERT_EQ(same.nodes().size(), mesh.bvh().nodes().size());
+    const auto &order = same.itemOrder();
+    const auto &words = mesh.floatLeaves();
+    ASSERT_EQ(words.size(), TriangleMesh::kFloatLeafWords * order.size() + TriangleMesh::kLeafPadding);
     size_t leafTriangles = 0;
     for (const auto &node : mesh.bvh().nodes())
         for (uint32_t ref : node.child) {
             if (ref == WideBvh::kEmpty || !(ref & WideBvh::kLeaf)) continue;
             const uint32_t first = (ref & ~WideBvh::kLeaf) >> 2, n = (ref & 3) + 1;
+            const uint32_t *leaf = words.data() + TriangleMesh::kFloatLeafWords * first;
             leafTriangles += n;
-            for (uint32_t i = 0; i < n; ++i)
+            for (uint32_t i = 0; i < n; ++i) {
+                ASSERT_EQ(leaf[i], order[first + i]);
                 for (int j = 0; j < 9; ++j)
-                    ASSERT_EQ(v[9 * first + j * n + i], m->positions[m->triangles[order[first + i]][j / 3]][j % 3]);
+                    ASSERT_EQ(std::bit_cast<float>(leaf[n + j * n + i]), m->positions[m->triangles[leaf[i]][j / 3]][j % 3]);
+            }
         }
     EXPECT_EQ(leafTriangles, order.size());
-    // One position that is not a float (0.1) and the mesh keeps vertex indices
-    auto d = troubleMesh(2, 1, Vec3(0));
+    // One position that is not a float (0.1) and the mesh keeps vertex indices and its order
+    auto d = inFloats(troubleMesh(2, 1, Vec3(0)));
     d->positions[7].y = 0.1;
-    d = inFloats(d);
-    d->positions[7].y = 0.1;
-    EXPECT_TRUE(TriangleMesh(d).leafVertices().empty());
-    EXPECT_FALSE(TriangleMesh(d).leafTriangles().empty());
+    TriangleMesh indexed(d);
+    EXPECT_TRUE(indexed.floatLeaves().empty());
+    EXPECT_FALSE(indexed.leafTriangles().empty());
+    EXPECT_FALSE(indexed.bvh().itemOrder().empty());
 }
 
 TEST(WideBvh, ClosestHitMatchesBruteForceFarFromTheOriginAtEveryScale) {
@@ -191,7 +200,7 @@ TEST(WideBvh, AllHitsAreEveryCrossingOfTheLine) {
     for (const Ray &r : testRays(*m, 1, Vec3(0), 600)) ASSERT_NO_FATAL_FAILURE(expectAllHitsMatchBruteForce(mesh, r));
     auto f = inFloats(troubleMesh(3, 1, Vec3(0)));
     TriangleMesh floats(f);
-    ASSERT_FALSE(floats.leafVertices().empty());
+    ASSERT_FALSE(floats.floatLeaves().empty());
     for (const Ray &r : testRays(*f, 1, Vec3(0), 600)) ASSERT_NO_FATAL_FAILURE(expectAllHitsMatchBruteForce(floats, r));
 }
 
@@ -384,7 +393,7 @@ TEST(WideBvh, FloatNodeTestLosesNoHitOnStiffRaysAtEveryScale) {
                 auto m = troubleMesh(2, scale, offset);
                 if (floats) m = inFloats(m);
                 TriangleMesh mesh(m);
-                ASSERT_EQ(mesh.leafVertices().empty(), !floats);
+                ASSERT_EQ(mesh.floatLeaves().empty(), !floats);
                 int hits = 0;
                 expectSameAsBruteForce(mesh, testRays(*m, scale, offset, 150), &hits);
                 expectSameAsBruteForce(mesh, stiffRays(*m, mesh.bvh(), scale, 60), &hits);
