@@ -185,8 +185,13 @@ LargeVector<uint32_t> TriangleMesh::floatLeaves(const ir::Mesh &mesh, const Wide
                     const uint32_t triangle = order[first + i];
                     const auto &t = mesh.triangles[triangle];
                     leaf[i] = triangle;
-                    for (int j = 0; j < 9; ++j)
-                        leaf[n + j * n + i] = std::bit_cast<uint32_t>(static_cast<float>(mesh.positions[t[j / 3]][j % 3]));
+                    uint32_t *c = leaf + n + i;
+                    for (int v = 0; v < 3; ++v) {
+                        const Vec3 &p = mesh.positions[t[v]];
+                        c[(3 * v) * n] = std::bit_cast<uint32_t>(static_cast<float>(p.x));
+                        c[(3 * v + 1) * n] = std::bit_cast<uint32_t>(static_cast<float>(p.y));
+                        c[(3 * v + 2) * n] = std::bit_cast<uint32_t>(static_cast<float>(p.z));
+                    }
                 }
             }
     });
