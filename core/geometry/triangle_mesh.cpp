@@ -113,7 +113,6 @@ SCADRAY_AVX2_FMA unsigned indexedLeafCandidates(const TriangleMesh::LeafTriangle
     return edgeCandidates(load, n, f);
 }
 
-const bool kHasAvx2Fma = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
 #endif
 
 /// True when every position of the mesh is exactly a float.
@@ -128,7 +127,12 @@ bool allFloats(const ir::Mesh &mesh) {
 
 bool TriangleMesh::fourWideLeaves() {
 #ifdef SCADRAY_LEAF_FILTER
-    return kHasAvx2Fma;
+    // (__builtin_cpu_init first: this may run from another file's static constructor)
+    static const bool has = [] {
+        __builtin_cpu_init();
+        return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+    }();
+    return has;
 #else
     return false;
 #endif
@@ -147,10 +151,8 @@ TriangleMesh::TriangleMesh(ir::MeshPtr mesh, int buildThreads) : mesh_(std::move
     // so where it runs the BVH has fuller leaves
     bvh_ = WideBvh(m, buildThreads, fourWideLeaves() ? WideBvh::kTriangleCost : WideBvh::kItemCost);
     floatLeaves_ = floatLeaves(m, bvh_, buildThreads);
-#ifdef SCADRAY_LEAF_FILTER
     // Gathers take signed 32-bit offsets: three times a vertex index must fit
-    gatherFilter_ = kHasAvx2Fma && m.positions.size() <= size_t{INT32_MAX} / 3;
-#endif
+    fourWide_ = fourWideLeaves() && (!floatLeaves_.empty() || m.positions.size() <= size_t{INT32_MAX} / 3);
     if (floatLeaves_.empty())
         leafTriangles_ = leafOrder(m, bvh_);
     else
@@ -211,7 +213,7 @@ void TriangleMesh::forLeaf(const RayFrame &frame, uint32_t first, uint32_t count
         const auto &pos = mesh_->positions;
         const LeafTriangle *leaf = leafTriangles_.data() + first;
 #ifdef SCADRAY_LEAF_FILTER
-        if (gatherFilter_) lanes = indexedLeafCandidates(leaf, count, pos.data(), frame);
+        if (fourWide_) lanes = indexedLeafCandidates(leaf, count, pos.data(), frame);
 #endif
         for (; lanes != 0; lanes &= lanes - 1) {
             const LeafTriangle &t = leaf[__builtin_ctz(lanes)];
@@ -221,7 +223,7 @@ void TriangleMesh::forLeaf(const RayFrame &frame, uint32_t first, uint32_t count
     }
     const uint32_t *leaf = floatLeaves_.data() + kFloatLeafWords * first, *coordinates = leaf + count;
 #ifdef SCADRAY_LEAF_FILTER
-    if (kHasAvx2Fma) lanes = floatLeafCandidates(coordinates, count, frame);
+    if (fourWide_) lanes = floatLeafCandidates(coordinates, count, frame);
 #endif
     for (; lanes != 0; lanes &= lanes - 1) {
         const uint32_t i = static_cast<uint32_t>(__builtin_ctz(lanes));

@@ -116,7 +116,7 @@ class TriangleMesh {
     WideBvh bvh_;
     LargeVector<LeafTriangle> leafTriangles_;  ///< in bvh_.itemOrder(), for a mesh not all in floats
     LargeVector<uint32_t> floatLeaves_;        ///< as floatLeaves() lays them out, or empty
-    bool gatherFilter_ = false;                ///< leafTriangles_ take the four-wide test
+    bool fourWide_ = false;                    ///< leaves take the four-wide edge test
     Bounds3 bounds_;
     ir::MeshTopology topology_;
     /// Per triangle: true when its vertex normals differ (POV-Ray shades only such triangles
