@@ -4,7 +4,7 @@
 # STL) and the 1.04-million instanced triangles of MetalRoughSpheresNoTextures at 640x480, and
 # prints wall time and peak memory of each whole run. Then scadray's mesh BVH side by side with
 # Embree 3 where installed (build on 1 and 2 threads, camera and random rays, bytes per
-# triangle), and the Google Benchmark of BVH build and closest-hit rays at growing sizes.
+# triangle; with the positions in floats, as STL and glTF give them, and in double), and the Google Benchmark of BVH build and closest-hit rays at growing sizes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}
@@ -22,6 +22,8 @@ if [ -f "$samples" ]; then
     echo "1.04 M instanced triangles (MetalRoughSpheresNoTextures.glb):"
     run "$samples" -o "$tmp/spheres.png" -W 640 -H 480
 fi
-echo "scadray and Embree 3 on the same 1.31 M-triangle icosphere and the same rays:"
+echo "scadray and Embree 3 on the same 1.31 M-triangle icosphere (positions in floats) and the same rays:"
 "$build/tests/mesh_vs_embree" 8
+echo "the same with scadray's positions in double (leaves keep vertex indices; Embree traces them rounded):"
+"$build/tests/mesh_vs_embree" 8 --double
 "$build/tests/mesh_bench"
