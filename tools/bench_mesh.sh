@@ -4,7 +4,8 @@
 # STL) and the 1.04-million instanced triangles of MetalRoughSpheresNoTextures at 640x480, and
 # prints wall time and peak memory of each whole run. Then scadray's mesh BVH side by side with
 # Embree 3 where installed (build on 1 and 2 threads, camera and random rays, bytes per
-# triangle; with the positions in floats, as STL and glTF give them, and in double), and the Google Benchmark of BVH build and closest-hit rays at growing sizes.
+# triangle; with the positions in floats, as STL and glTF give them, and in double), and the
+# Google Benchmark of BVH build and closest-hit rays at growing sizes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}

@@ -42,8 +42,8 @@ SCADRAY_AVX2_FMA inline __m256d differenceOfProducts4(__m256d a, __m256d b, __m2
     return _mm256_add_pd(_mm256_fmsub_pd(a, b, cd), _mm256_fnmadd_pd(c, d, cd));
 }
 
-/// Of up to four triangles (load(3 * v + a) gives coordinate a of vertex v of each, one
-/// triangle a lane), the lanes below n whose three edge functions in the ray's frame do not have
+/// Of up to four triangles (load(v, a) gives coordinate a of vertex v of each, one triangle a
+/// lane), the lanes below n whose three edge functions in the ray's frame do not have
 /// mixed signs: each value computed with the operations, in the order and the rounding, of
 /// TriangleMesh::intersect (the translation, the shear as a product then a sum,
 /// differenceOfProducts with its two FMAs), so a lane left out is one that intersect rejects
@@ -55,13 +55,13 @@ SCADRAY_AVX2_FMA inline unsigned edgeCandidates(const Load &load, uint32_t n, co
     const int kx = f.kx, ky = f.ky, kz = f.kz;
     // Vertex v translated to the origin, permuted and sheared (written out: GCC keeps a loop
     // over the vertices, with its results on the stack)
-    __m256d z0 = _mm256_sub_pd(load(kz), oz), z1 = _mm256_sub_pd(load(3 + kz), oz), z2 = _mm256_sub_pd(load(6 + kz), oz);
-    __m256d x0 = _mm256_add_pd(_mm256_sub_pd(load(kx), ox), _mm256_mul_pd(shx, z0));
-    __m256d y0 = _mm256_add_pd(_mm256_sub_pd(load(ky), oy), _mm256_mul_pd(shy, z0));
-    __m256d x1 = _mm256_add_pd(_mm256_sub_pd(load(3 + kx), ox), _mm256_mul_pd(shx, z1));
-    __m256d y1 = _mm256_add_pd(_mm256_sub_pd(load(3 + ky), oy), _mm256_mul_pd(shy, z1));
-    __m256d x2 = _mm256_add_pd(_mm256_sub_pd(load(6 + kx), ox), _mm256_mul_pd(shx, z2));
-    __m256d y2 = _mm256_add_pd(_mm256_sub_pd(load(6 + ky), oy), _mm256_mul_pd(shy, z2));
+    __m256d z0 = _mm256_sub_pd(load(0, kz), oz), z1 = _mm256_sub_pd(load(1, kz), oz), z2 = _mm256_sub_pd(load(2, kz), oz);
+    __m256d x0 = _mm256_add_pd(_mm256_sub_pd(load(0, kx), ox), _mm256_mul_pd(shx, z0));
+    __m256d y0 = _mm256_add_pd(_mm256_sub_pd(load(0, ky), oy), _mm256_mul_pd(shy, z0));
+    __m256d x1 = _mm256_add_pd(_mm256_sub_pd(load(1, kx), ox), _mm256_mul_pd(shx, z1));
+    __m256d y1 = _mm256_add_pd(_mm256_sub_pd(load(1, ky), oy), _mm256_mul_pd(shy, z1));
+    __m256d x2 = _mm256_add_pd(_mm256_sub_pd(load(2, kx), ox), _mm256_mul_pd(shx, z2));
+    __m256d y2 = _mm256_add_pd(_mm256_sub_pd(load(2, ky), oy), _mm256_mul_pd(shy, z2));
     __m256d e0 = differenceOfProducts4(x1, y2, y1, x2);
     __m256d e1 = differenceOfProducts4(x2, y0, y2, x0);
     __m256d e2 = differenceOfProducts4(x0, y1, y0, x1);
@@ -74,26 +74,29 @@ SCADRAY_AVX2_FMA inline unsigned edgeCandidates(const Load &load, uint32_t n, co
     return ~mixed & ((1u << n) - 1);
 }
 
-/// Coordinate j of a float leaf's n triangles (TriangleMesh::floatLeaves' layout, from the
-/// first coordinate; a lane beyond n reads the next coordinate's words, or the next leaf's, or
+/// Coordinate a of vertex v of a float leaf's n triangles (TriangleMesh::floatLeaves' layout,
+/// from the first coordinate; a lane beyond n reads the next coordinate's words, or the next leaf's, or
 /// the padding, and is left out).
 struct FloatLeafLoad {
     const float *c;  // _mm_loadu_ps may alias the leaf's 32-bit words
     uint32_t n;
-    SCADRAY_AVX2_FMA __m256d operator()(int j) const { return _mm256_cvtps_pd(_mm_loadu_ps(c + j * n)); }
+    SCADRAY_AVX2_FMA __m256d operator()(int v, int a) const {
+        return _mm256_cvtps_pd(_mm_loadu_ps(c + (3 * v + a) * n));
+    }
 };
 
 SCADRAY_AVX2_FMA unsigned floatLeafCandidates(const uint32_t *coordinates, uint32_t n, const TriangleMesh::RayFrame &f) {
     return edgeCandidates(FloatLeafLoad{reinterpret_cast<const float *>(coordinates), n}, n, f);
 }
 
-/// Coordinate j of a leaf of triangle records, gathered by vertex index: at[v] holds three
-/// times each lane's index of vertex v (a lane beyond the leaf repeats its first triangle).
+/// Coordinate a of vertex v of a leaf of triangle records, gathered by vertex index: at[v]
+/// holds three times each lane's index of vertex v (a lane beyond the leaf repeats its first
+/// triangle).
 struct GatherLoad {
     const double *positions;
     __m128i at[3];
-    SCADRAY_AVX2_FMA __m256d operator()(int j) const {
-        return _mm256_mask_i32gather_pd(_mm256_setzero_pd(), positions + j % 3, at[j / 3],
+    SCADRAY_AVX2_FMA __m256d operator()(int v, int a) const {
+        return _mm256_mask_i32gather_pd(_mm256_setzero_pd(), positions + a, at[v],
                                         _mm256_castsi256_pd(_mm256_set1_epi64x(-1)), 8);
     }
 };
