@@ -365,6 +365,18 @@ void WideBvh::walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit, 
     uint32_t current = 0;  // the root is always a node
     typename Slabs::Limits limits = slabs.limits(tMin, *tMax);
     auto push = [&](uint32_t ref, float tNear) { stack[top++] = {ref, tNear}; };
+#if defined(__SSE2__)
+    // Where a child's data starts, for the prefetches: its node, or its leaf's data (without
+    // leaf data, the root, which is in cache)
+    const char *base = reinterpret_cast<const char *>(nodes_.data());
+    const char *leafBase = data.base ? static_cast<const char *>(data.base) : base;
+    const size_t stride = data.base ? data.stride : 0;
+    auto at = [&](uint32_t r) {
+        return (r & kLeaf) ? leafBase + size_t{(r & ~kLeaf) >> 2} * stride : base + size_t{r} * sizeof(Node);
+    };
+#else
+    (void)data;
+#endif
     while (true) {
         if (current & kLeaf) {
             if (visit((current & ~kLeaf) >> 2, (current & 3) + 1, tMax)) return;
@@ -373,16 +385,9 @@ void WideBvh::walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit, 
             const Node &n = nodes_[current];
 #if defined(__SSE2__)
             // Every child's node or leaf data is fetched while this node is tested, so the walk
-            // waits on memory about once a level instead of once a node (without leaf data, a
-            // leaf or an empty slot fetches the root, which is in cache). Written out: GCC 12 at
+            // waits on memory about once a level instead of once a node. Written out: GCC 12 at
             // -O2 dropped these prefetches from a lambda called for each child, and kept a loop
             // with a branch per child
-            const char *base = reinterpret_cast<const char *>(nodes_.data());
-            const char *leafBase = data.base ? static_cast<const char *>(data.base) : base;
-            const size_t stride = data.base ? data.stride : 0;
-            auto at = [&](uint32_t r) {
-                return (r & kLeaf) ? leafBase + size_t{(r & ~kLeaf) >> 2} * stride : base + size_t{r} * sizeof(Node);
-            };
             const char *p0 = at(n.child[0]), *p1 = at(n.child[1]), *p2 = at(n.child[2]), *p3 = at(n.child[3]);
             _mm_prefetch(p0, _MM_HINT_T0);
             _mm_prefetch(p0 + 64, _MM_HINT_T0);

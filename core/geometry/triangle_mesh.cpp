@@ -75,8 +75,8 @@ SCADRAY_AVX2_FMA inline unsigned edgeCandidates(const Load &load, uint32_t n, co
 }
 
 /// Coordinate a of vertex v of a float leaf's n triangles (TriangleMesh::floatLeaves' layout,
-/// from the first coordinate; a lane beyond n reads the next coordinate's words, or the next leaf's, or
-/// the padding, and is left out).
+/// from the first coordinate; a lane beyond n reads the next coordinate's words, or the next
+/// leaf's, or the padding, and is left out).
 struct FloatLeafLoad {
     const float *c;  // _mm_loadu_ps may alias the leaf's 32-bit words
     uint32_t n;
@@ -141,6 +141,12 @@ bool TriangleMesh::fourWideLeaves() {
 #endif
 }
 
+WideBvh TriangleMesh::buildBvh(const ir::Mesh &mesh, int threads) {
+    // The four-wide edge test makes a leaf of up to four triangles cost little more than one,
+    // so where it runs the BVH has fuller leaves
+    return WideBvh(mesh, threads, fourWideLeaves() ? WideBvh::kTriangleCost : WideBvh::kItemCost);
+}
+
 TriangleMesh::TriangleMesh(ir::MeshPtr mesh, int buildThreads) : mesh_(std::move(mesh)) {
     const ir::Mesh &m = *mesh_;
     smooth_.resize(m.triangles.size(), false);
@@ -150,9 +156,7 @@ TriangleMesh::TriangleMesh(ir::MeshPtr mesh, int buildThreads) : mesh_(std::move
         if (!m.normals.empty())
             smooth_[i] = !(m.normals[t[0]] == m.normals[t[1]] && m.normals[t[1]] == m.normals[t[2]]);
     }
-    // The four-wide edge test makes a leaf of up to four triangles cost little more than one,
-    // so where it runs the BVH has fuller leaves
-    bvh_ = WideBvh(m, buildThreads, fourWideLeaves() ? WideBvh::kTriangleCost : WideBvh::kItemCost);
+    bvh_ = buildBvh(m, buildThreads);
     floatLeaves_ = floatLeaves(m, bvh_, buildThreads);
     // Gathers take signed 32-bit offsets: three times a vertex index must fit
     fourWide_ = fourWideLeaves() && (!floatLeaves_.empty() || m.positions.size() <= size_t{INT32_MAX} / 3);

@@ -41,6 +41,8 @@ class TriangleMesh {
     /// Whether a leaf's triangles are tested four at a time (on a CPU with AVX2 and FMA); mesh
     /// BVHs are then built with WideBvh::kTriangleCost, for fuller leaves.
     static bool fourWideLeaves();
+    /// The BVH a TriangleMesh builds over `mesh` on this CPU (threads: 0 for all cores).
+    static WideBvh buildBvh(const ir::Mesh &mesh, int threads);
 
     struct Hit {
         double t = 0;
@@ -100,15 +102,15 @@ class TriangleMesh {
     /// when t is not within (tMin, tMax), or (tMin, tMax] when tMaxInclusive.
     bool intersect(const RayFrame &f, const Vec3 &p0, const Vec3 &p1, const Vec3 &p2, uint32_t triangle,
                    double tMin, double tMax, bool tMaxInclusive, Hit *hit) const;
-    /// Calls f(p0, p1, p2, triangle) for the triangles of the leaf [first, first + count) that
-    /// the ray can hit: all of them, or on a CPU with AVX2 and FMA, those whose edge functions
-    /// in the ray's frame do not have mixed signs (computed four at a time exactly as intersect
-    /// computes them, so what it leaves out, intersect rejects).
-    /// Where the walk prefetches a leaf's data: its vertices, or its triangles' records.
+    /// Where the walk prefetches a leaf's data: its float leaf, or its triangles' records.
     WideBvh::LeafData leafData() const {
         if (!floatLeaves_.empty()) return {floatLeaves_.data(), kFloatLeafWords * sizeof(uint32_t)};
         return {leafTriangles_.data(), sizeof(LeafTriangle)};
     }
+    /// Calls f(p0, p1, p2, triangle) for the triangles of the leaf [first, first + count) that
+    /// the ray can hit: all of them, or on a CPU with AVX2 and FMA, those whose edge functions
+    /// in the ray's frame do not have mixed signs (computed four at a time exactly as intersect
+    /// computes them, so what it leaves out, intersect rejects).
     template <typename F>
     void forLeaf(const RayFrame &frame, uint32_t first, uint32_t count, F &&f) const;
 

@@ -223,16 +223,9 @@ double agreement(const TraceResult &a, const TraceResult &b) {
 
 int run(int levels, bool doublePositions) {
     // Positions rounded to floats, as an STL or glTF file gives them, so both libraries trace
-    // exactly the same triangles. Through a volatile: GCC 12.2's SLP vectorizer at -O2 drops
-    // the rounding of x and y in `p = {float(p.x), float(p.y), float(p.z)}` (and in a loop over
-    // p[a]), leaving them doubles
+    // exactly the same triangles
     auto mesh = test::icosphere(levels, 1);
-    if (!doublePositions)
-        for (auto &p : mesh->positions)
-            for (int a = 0; a < 3; ++a) {
-                volatile float f = static_cast<float>(p[a]);
-                p[a] = f;
-            }
+    if (!doublePositions) mesh = test::inFloats(mesh);
     size_t tris = mesh->triangles.size();
     std::printf("icosphere: %zu triangles, %zu vertices\n", tris, mesh->positions.size());
     double meshBytes = (mesh->positions.size() * sizeof(Vec3) + tris * sizeof(mesh->triangles[0])) /
@@ -242,7 +235,7 @@ int run(int levels, bool doublePositions) {
     // The BVH and the leaf-ordered copy of the triangles that its leaves read: together they
     // are what Embree's build makes (its leaves hold the triangles)
     auto buildBvh = [&](int threads) {
-        WideBvh bvh(*mesh, threads, TriangleMesh::fourWideLeaves() ? WideBvh::kTriangleCost : WideBvh::kItemCost);
+        WideBvh bvh = TriangleMesh::buildBvh(*mesh, threads);
         auto floats = TriangleMesh::floatLeaves(*mesh, bvh, threads);
         if (floats.empty()) auto leaves = TriangleMesh::leafOrder(*mesh, bvh);
     };

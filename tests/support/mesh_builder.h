@@ -62,4 +62,16 @@ inline std::shared_ptr<ir::Mesh> icosphere(int levels, double r, bool normals = 
     return m;
 }
 
+/// m with every position rounded to a float, as STL and glTF give them (a TriangleMesh of it
+/// keeps float leaves). Through a volatile: GCC 12.2's SLP vectorizer at -O2 drops the rounding
+/// of x and y from a plain loop of p[a] = float(p[a]) (and from p = {float(p.x), ...}).
+inline std::shared_ptr<ir::Mesh> inFloats(std::shared_ptr<ir::Mesh> m) {
+    for (auto &p : m->positions)
+        for (int a = 0; a < 3; ++a) {
+            volatile float f = static_cast<float>(p[a]);
+            p[a] = f;
+        }
+    return m;
+}
+
 }  // namespace rt::test

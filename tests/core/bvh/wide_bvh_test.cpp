@@ -48,18 +48,6 @@ std::shared_ptr<ir::Mesh> troubleMesh(int levels, double scale, const Vec3 &offs
     return m;
 }
 
-/// m with every position rounded to a float, as STL and glTF give them: its leaves hold the
-/// vertices as floats. Through a volatile: GCC 12.2's SLP vectorizer at -O2 drops the rounding
-/// of x and y from a plain loop of p[a] = float(p[a]).
-std::shared_ptr<ir::Mesh> inFloats(std::shared_ptr<ir::Mesh> m) {
-    for (auto &p : m->positions)
-        for (int a = 0; a < 3; ++a) {
-            volatile float f = static_cast<float>(p[a]);
-            p[a] = f;
-        }
-    return m;
-}
-
 struct Expected {
     bool found = false;
     double t = kInfinity;
@@ -101,7 +89,7 @@ std::vector<Ray> testRays(const ir::Mesh &m, double scale, const Vec3 &offset, i
 
 void expectClosestMatchesBruteForce(double scale, const Vec3 &offset, bool floats = false) {
     auto m = troubleMesh(3, scale, offset);
-    if (floats) m = inFloats(m);
+    if (floats) m = test::inFloats(m);
     TriangleMesh mesh(m);
     ASSERT_EQ(mesh.floatLeaves().empty(), !floats);
     ASSERT_EQ(mesh.leafTriangles().empty(), floats);
@@ -139,12 +127,12 @@ TEST(WideBvh, FloatLeavesClosestHitMatchesBruteForceAtEveryScale) {
 }
 
 TEST(WideBvh, FloatLeavesHoldEachLeafsTrianglesAndVerticesSideBySide) {
-    auto m = inFloats(troubleMesh(4, 1, Vec3(0.25, 0, 0)));
+    auto m = test::inFloats(troubleMesh(4, 1, Vec3(0.25, 0, 0)));
     TriangleMesh mesh(m);
     // The float leaves hold the item order, so the mesh's BVH drops its own; the same build
     // gives it
     EXPECT_TRUE(mesh.bvh().itemOrder().empty());
-    WideBvh same(*m, 1, TriangleMesh::fourWideLeaves() ? WideBvh::kTriangleCost : WideBvh::kItemCost);
+    WideBvh same = TriangleMesh::buildBvh(*m, 1);
     ASSERT_EQ(same.nodes().size(), mesh.bvh().nodes().size());
     const auto &order = same.itemOrder();
     const auto &words = mesh.floatLeaves();
@@ -164,7 +152,7 @@ TEST(WideBvh, FloatLeavesHoldEachLeafsTrianglesAndVerticesSideBySide) {
         }
     EXPECT_EQ(leafTriangles, order.size());
     // One position that is not a float (0.1) and the mesh keeps vertex indices and its order
-    auto d = inFloats(troubleMesh(2, 1, Vec3(0)));
+    auto d = test::inFloats(troubleMesh(2, 1, Vec3(0)));
     d->positions[7].y = 0.1;
     TriangleMesh indexed(d);
     EXPECT_TRUE(indexed.floatLeaves().empty());
@@ -198,7 +186,7 @@ TEST(WideBvh, AllHitsAreEveryCrossingOfTheLine) {
     auto m = troubleMesh(3, 1, Vec3(0));
     TriangleMesh mesh(m);
     for (const Ray &r : testRays(*m, 1, Vec3(0), 600)) ASSERT_NO_FATAL_FAILURE(expectAllHitsMatchBruteForce(mesh, r));
-    auto f = inFloats(troubleMesh(3, 1, Vec3(0)));
+    auto f = test::inFloats(troubleMesh(3, 1, Vec3(0)));
     TriangleMesh floats(f);
     ASSERT_FALSE(floats.floatLeaves().empty());
     for (const Ray &r : testRays(*f, 1, Vec3(0), 600)) ASSERT_NO_FATAL_FAILURE(expectAllHitsMatchBruteForce(floats, r));
@@ -391,7 +379,7 @@ TEST(WideBvh, FloatNodeTestLosesNoHitOnStiffRaysAtEveryScale) {
                 // (floats 1e5 away are 1/128 apart: a sphere of 1e-6 there has collapsed)
                 if (floats && scale < 1 && offset.x != 0) continue;
                 auto m = troubleMesh(2, scale, offset);
-                if (floats) m = inFloats(m);
+                if (floats) m = test::inFloats(m);
                 TriangleMesh mesh(m);
                 ASSERT_EQ(mesh.floatLeaves().empty(), !floats);
                 int hits = 0;
