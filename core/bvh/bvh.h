@@ -40,6 +40,27 @@ class Bvh {
     template <typename Visit>
     void traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit) const;
 
+    /// The octant of a direction as traverse() orders children: bit a set where the direction's
+    /// component on axis a is negative (its reciprocal is).
+    static int octant(const Vec3 &d) { return (1 / d.x < 0) | (1 / d.y < 0) << 1 | (1 / d.z < 0) << 2; }
+
+    /// The leaves, in the order traverse() meets them for rays of `octant`, of the subtrees
+    /// whose boxes `keep(bounds)` accepts (a conservative cull: ConeLists).
+    template <typename Keep>
+    void collectLeaves(int octant, Keep &&keep, std::vector<uint32_t> &leaves) const;
+
+    /// The visits traverse() makes, for a ray that can reach no leaf but `leaves` (node indices
+    /// from collectLeaves() for the ray's octant, a superset of the leaves whose boxes the ray
+    /// meets). Each leaf's box is tested with the ray's tMax of the moment, as traverse() tests
+    /// it when it gets there; where it passes, so did every ancestor's in traverse(): a parent's
+    /// box contains the child's and was tested with a tMax no smaller, and the slab test is
+    /// monotonic in both (for finite boxes and a direction with no zero component, where no
+    /// slab distance is NaN; callers make sure of both). So the same items are visited in the
+    /// same order with the same tMax.
+    template <typename Visit>
+    void traverseLeaves(const uint32_t *leaves, size_t count, const Ray &ray, double tMin,
+                        double *tMax, Visit &&visit) const;
+
   private:
     struct BuildItem {
         Bounds3 bounds;
@@ -131,6 +152,45 @@ void Bvh::traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit) con
             if (top == 0) return;
             current = stack[--top];
         }
+    }
+}
+
+template <typename Keep>
+void Bvh::collectLeaves(int octant, Keep &&keep, std::vector<uint32_t> &leaves) const {
+    if (nodes_.empty()) return;
+    uint32_t stack[128];
+    int top = 0;
+    uint32_t current = 0;
+    while (true) {
+        const Node &node = nodes_[current];
+        if (keep(node.bounds)) {
+            if (node.count > 0) {
+                leaves.push_back(current);
+                if (top == 0) return;
+                current = stack[--top];
+            } else if (octant >> node.axis & 1) {
+                stack[top++] = current + 1;
+                current = node.offset;
+            } else {
+                stack[top++] = node.offset;
+                current = current + 1;
+            }
+        } else {
+            if (top == 0) return;
+            current = stack[--top];
+        }
+    }
+}
+
+template <typename Visit>
+void Bvh::traverseLeaves(const uint32_t *leaves, size_t count, const Ray &ray, double tMin,
+                         double *tMax, Visit &&visit) const {
+    const RaySlabs slabs(ray);
+    for (size_t l = 0; l < count; ++l) {
+        const Node &node = nodes_[leaves[l]];
+        if (!hitNode(node.bounds, slabs, tMin, *tMax)) continue;
+        for (uint32_t i = 0; i < node.count; ++i)
+            if (visit(order_[node.offset + i], tMax)) return;
     }
 }
 

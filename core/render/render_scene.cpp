@@ -398,15 +398,19 @@ std::unique_ptr<RenderScene> RenderScene::compile(const ir::Scene &scene, Diagno
         });
     }
     rs->bvh_ = Bvh(bounds);
+    // Camera rays look up the leaves their direction can meet (POV-Ray's vista buffer)
+    if (rs->camera_.projection == ir::Projection::Perspective && !rs->objects_.empty() &&
+        rs->objects_.size() >= options.vistaFromObjects)
+        rs->vista_ = std::make_unique<VistaLists>(rs->bvh_, rs->camera_.location);
     rs->stats_.objects = rs->objects_.size();
     rs->stats_.bvhDepth = rs->bvh_.depth();
     return rs;
 }
 
 bool RenderScene::intersect(const Ray &ray, double tMin, double tMax, SurfaceInteraction *si,
-                            SpanScratch &scratch) const {
+                            SpanScratch &scratch, const VistaLists *vista) const {
     Hit hit;
-    bool found = closestHit(ray, tMin, tMax, &hit, scratch);
+    bool found = closestHit(ray, tMin, tMax, &hit, scratch, vista);
     if (!found) {
         si->tie = hit.tie;
         return false;
@@ -423,7 +427,7 @@ SurfaceInteraction RenderScene::surfaceAt(const Ray &ray, const Hit &hit) const 
 }
 
 bool RenderScene::closestHit(const Ray &ray, double tMin, double tMax, Hit *hit,
-                             SpanScratch &scratch) const {
+                             SpanScratch &scratch, const VistaLists *vista) const {
     Crossing best;
     const Shape *bestObject = nullptr;
     bool tie = false;
@@ -431,7 +435,8 @@ bool RenderScene::closestHit(const Ray &ray, double tMin, double tMax, Hit *hit,
     double cancelled = kInfinity;  // nearest coincident faces that cancelled in any object
     // Objects whose first crossing lies just beyond the closest one are still visited, so a
     // coincident face of another object is noticed as a tie
-    bvh_.traverse(ray, tMin, &closest, [&](uint32_t index, double *tFar) {
+    // Inlined into both walks below (GCC 12 would otherwise call it: 6 % slower)
+    auto visit = [&](uint32_t index, double *tFar) __attribute__((always_inline)) {
         Crossing c;
         const Shape *obj = objects_[index].get();
         scratch.cancelledTie = kInfinity;
@@ -448,7 +453,12 @@ bool RenderScene::closestHit(const Ray &ray, double tMin, double tMax, Hit *hit,
             tie = tie || c.t - best.t <= eps;
         }
         return false;
-    });
+    };
+    const VistaLists::Cell *cell = vista ? vista->find(ray, tMin, tMax) : nullptr;
+    if (cell)
+        bvh_.traverseLeaves(cell->leaves, cell->count, ray, tMin, &closest, visit);
+    else
+        bvh_.traverse(ray, tMin, &closest, visit);
     if (!bestObject || best.t >= tMax) {
         hit->tie = cancelled < tMax;  // a miss can still pass coincident faces
         return false;

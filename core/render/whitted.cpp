@@ -64,7 +64,8 @@ Rgb WhittedIntegrator::trace(const Ray &ray, int level, double weight, const Int
     const ir::Settings &s = scene_.settings();
     if (level >= s.maxTraceLevel || weight < s.adcBailout) return Rgb(0);
     SurfaceInteraction si;
-    bool hit = scene_.intersect(ray, 0, kInfinity, &si, ctx.scratch);
+    // A camera ray looks up the leaves it can meet (VistaLists::find checks that it is one)
+    bool hit = scene_.intersect(ray, 0, kInfinity, &si, ctx.scratch, level == 0 ? scene_.vista() : nullptr);
     ctx.tie = ctx.tie || si.tie;
     if (level == 0) ctx.firstHit = hit ? si.leaf : nullptr;  // the camera ray
     if (!hit) return missRadiance(s, ray.d);  // the background or the environment

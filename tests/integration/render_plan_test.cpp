@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 
 #include "core/ir/scene_defaults.h"
@@ -23,12 +24,13 @@ struct Compiled {
     std::unique_ptr<RenderScene> rs;
 };
 
-Compiled compileScene(ir::Scene source, bool plan) {
+Compiled compileScene(ir::Scene source, bool plan, bool vista = true) {
     Compiled c{std::move(source), nullptr};
     DiagnosticSink diag;
     ir::completeScene(c.scene, diag);
     CompileOptions co;
     co.plan = plan;
+    co.vistaFromObjects = vista ? 1 : SIZE_MAX;
     c.rs = RenderScene::compile(c.scene, diag, co);
     return c;
 }
@@ -182,6 +184,34 @@ TEST(RenderPlan, NeverChangesThePicture) {
     }
     EXPECT_GE(scenes, 30);
     EXPECT_GT(wastedShadowRays, 0);
+}
+
+TEST(RenderPlan, VistaListsNeverChangeThePicture) {
+    // Every scene, its camera rays taking the leaf lists of their direction's cell (in scenes
+    // of any size here) and walking the whole tree: the same picture, ties and ray counts,
+    // bit for bit
+    int scenes = 0, listing = 0;
+    for (const char *dir : {"", "crosscheck", "stiff", "montecarlo"}) {
+        for (const auto &e : fs::directory_iterator(scene(dir))) {
+            if (e.path().extension() != ".scad" || e.path().filename() == "scadray.scad") continue;
+            SCOPED_TRACE(e.path().string());
+            Compiled with = compileScene(load(e.path().string()), true, true);
+            Compiled without = compileScene(load(e.path().string()), true, false);
+            EXPECT_EQ(without.rs->vista(), nullptr);
+            RenderResult a = render(*with.rs, 4, 64, 48), b = render(*without.rs, 4, 64, 48);
+            EXPECT_EQ(maxDifference(a.image, b.image), 0);
+            EXPECT_EQ(maxDifference(a.ties, b.ties), 0);
+            EXPECT_EQ(a.stats.camera, b.stats.camera);
+            EXPECT_EQ(a.stats.shadow, b.stats.shadow);
+            EXPECT_EQ(a.stats.reflection, b.stats.reflection);
+            EXPECT_EQ(a.stats.refraction, b.stats.refraction);
+            EXPECT_EQ(a.stats.spanOps, b.stats.spanOps);
+            listing += with.rs->vista() && with.rs->vista()->cellsListing() > 0;
+            ++scenes;
+        }
+    }
+    EXPECT_GE(scenes, 30);
+    EXPECT_GE(listing, scenes / 2);  // most scenes' camera rays took the lists
 }
 
 TEST(RenderPlan, PrintPlateSplitsItsUnionAndDropsTheSpool) {

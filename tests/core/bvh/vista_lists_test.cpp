@@ -1,0 +1,203 @@
+// SPDX-License-Identifier: MIT
+// The camera's leaf lists: a ray from the apex that takes its cell's list makes exactly the
+// visits of the whole tree's traversal (same items, same order, same tMax at each), on random
+// scenes of boxes (flat, tiny, huge, around and behind the apex) at scales 1e-6 to 1e6, with
+// directions on the borders of cells; rays the lists cannot serve are refused.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <thread>
+#include <vector>
+
+#include "core/bvh/vista_lists.h"
+#include "core/math/rng.h"
+
+namespace rt {
+namespace {
+
+struct Visit {
+    uint32_t item;
+    double tMax;
+    bool operator==(const Visit &) const = default;
+};
+
+/// A closest-hit visitor over boxes: an item's box entry beyond tMin lowers tMax to it, as a
+/// surface hit would (so later leaves are tested against a shrinking interval).
+struct Recorder {
+    const std::vector<Bounds3> &boxes;
+    const Ray &ray;
+    double tMin;
+    std::vector<Visit> visits;
+    bool operator()(uint32_t item, double *tMax) {
+        visits.push_back({item, *tMax});
+        double t0, t1;
+        if (boxes[item].intersectP(ray, tMin, *tMax, &t0, &t1) && t0 > tMin) *tMax = t0;
+        return false;
+    }
+};
+
+std::vector<Bounds3> randomBoxes(Rng &rng, int count, double scale, const Vec3 &apex) {
+    std::vector<Bounds3> boxes;
+    for (int i = 0; i < count; ++i) {
+        Vec3 c(rng.uniform() * 20 - 10, rng.uniform() * 20 - 10, rng.uniform() * 20 - 10);
+        Vec3 h(rng.uniform(), rng.uniform(), rng.uniform());
+        switch (i % 5) {
+        case 0: h[i % 3] = 0; break;                  // flat, as a face of a mesh
+        case 1: h = h * 1e-4; break;                  // tiny
+        case 2: if (i % 15 == 2) c = Vec3(0); break;  // around the apex
+        case 3: h = h * 8; break;                     // large
+        default: break;
+        }
+        boxes.push_back(Bounds3((c - h) * scale + apex, (c + h) * scale + apex));
+    }
+    return boxes;
+}
+
+/// Directions from the apex: random ones, and ones on the borders of cells (face coordinates
+/// k / 32 exactly, and one ulp beside them).
+std::vector<Vec3> directions(Rng &rng, int count) {
+    std::vector<Vec3> dirs;
+    for (int i = 0; i < count; ++i) {
+        Vec3 d(rng.uniform() * 2 - 1, rng.uniform() * 2 - 1, rng.uniform() * 2 - 1);
+        if (i % 3 == 0) {
+            int axis = i % 3 == 0 ? (i / 3) % 3 : 0;
+            double border = std::floor(rng.uniform() * 64) / 32 - 1;  // a cell border of 64
+            Vec3 e;
+            e[axis] = i % 2 ? 1 : -1;
+            e[(axis + 1) % 3] = border;
+            e[(axis + 2) % 3] = rng.uniform() * 2 - 1;
+            if (i % 9 == 3) e[(axis + 1) % 3] = std::nextafter(border, 2.0);
+            d = e;
+        }
+        if (length(d) > 1e-3) dirs.push_back(normalize(d));
+    }
+    return dirs;
+}
+
+TEST(VistaLists, SameVisitsAsTheWholeTree) {
+    Rng rng(7);
+    size_t served = 0, rays = 0;
+    for (double scale : {1e-6, 1.0, 1e6}) {
+        for (int scene = 0; scene < 6; ++scene) {
+            SCOPED_TRACE("scale " + std::to_string(scale) + ", scene " + std::to_string(scene));
+            Vec3 apex = Vec3(rng.uniform() * 4 - 2, rng.uniform() * 4 - 2, rng.uniform() * 4 - 2) *
+                        (scene % 2 ? scale * 1e3 : scale);
+            std::vector<Bounds3> boxes = randomBoxes(rng, 40 + 60 * scene, scale, apex);
+            Bvh bvh(boxes);
+            VistaLists vista(bvh, apex, scene < 3 ? 64 : 8);
+            ASSERT_TRUE(vista.enabled());
+            for (const Vec3 &d : directions(rng, 600)) {
+                Ray ray(apex, d);
+                ++rays;
+                Recorder whole{boxes, ray, 0, {}}, listed{boxes, ray, 0, {}};
+                double tWhole = kInfinity, tListed = kInfinity;
+                bvh.traverse(ray, 0, &tWhole, whole);
+                const VistaLists::Cell *cell = vista.find(ray, 0, kInfinity);
+                if (!cell) continue;
+                ++served;
+                bvh.traverseLeaves(cell->leaves, cell->count, ray, 0, &tListed, listed);
+                ASSERT_EQ(whole.visits, listed.visits) << "direction " << d.x << " " << d.y << " " << d.z;
+                ASSERT_EQ(tWhole, tListed);
+            }
+        }
+    }
+    // Many rays take the lists (the others meet full cells in these crowded scenes, or their
+    // directions rounded into the next octant's cell)
+    EXPECT_GT(served, rays / 3);
+}
+
+TEST(VistaLists, TinyBoxesOnTheBordersOfCells) {
+    // A ray along the border of two cells meets a box that lies on the border line; whichever
+    // cell the ray's rounded coordinates pick must list it
+    Rng rng(5);
+    for (double scale : {1e-6, 1.0, 1e6}) {
+        Vec3 apex = Vec3(0.75, -1.5, 0.25) * scale;
+        std::vector<Vec3> border;
+        for (int i = 0; i < 300; ++i) {
+            int axis = i % 3;
+            Vec3 e;
+            e[axis] = i % 2 ? 1 : -1;
+            e[(axis + 1) % 3] = std::floor(rng.uniform() * 64) / 32 - 1;
+            e[(axis + 2) % 3] = rng.uniform() * 1.8 - 0.9;
+            border.push_back(normalize(e));
+        }
+        std::vector<Bounds3> boxes = randomBoxes(rng, 30, scale, apex);
+        for (const Vec3 &d : border) {
+            Vec3 c = apex + d * (3 * scale);
+            boxes.push_back(Bounds3(c - Vec3(1e-7 * scale), c + Vec3(1e-7 * scale)));
+        }
+        Bvh bvh(boxes);
+        VistaLists vista(bvh, apex, 64);
+        int served = 0;
+        for (const Vec3 &d : border) {
+            Ray ray(apex, d);
+            Recorder whole{boxes, ray, 0, {}}, listed{boxes, ray, 0, {}};
+            double tWhole = kInfinity, tListed = kInfinity;
+            bvh.traverse(ray, 0, &tWhole, whole);
+            ASSERT_FALSE(whole.visits.empty());
+            const VistaLists::Cell *cell = vista.find(ray, 0, kInfinity);
+            if (!cell) continue;
+            ++served;
+            bvh.traverseLeaves(cell->leaves, cell->count, ray, 0, &tListed, listed);
+            ASSERT_EQ(whole.visits, listed.visits) << "direction " << d.x << " " << d.y << " " << d.z;
+        }
+        EXPECT_GT(served, 200);
+    }
+}
+
+TEST(VistaLists, RefusesRaysItCannotServe) {
+    Rng rng(3);
+    Vec3 apex(1, 2, 3);
+    std::vector<Bounds3> boxes = randomBoxes(rng, 20, 1, apex);
+    Bvh bvh(boxes);
+    VistaLists vista(bvh, apex);
+    Vec3 d = normalize(Vec3(0.3, -0.4, 0.8));
+    EXPECT_NE(vista.find(Ray(apex, d), 0, kInfinity), nullptr);
+    EXPECT_EQ(vista.find(Ray(apex + Vec3(1e-9, 0, 0), d), 0, kInfinity), nullptr);  // not from the apex
+    EXPECT_EQ(vista.find(Ray(apex, d), 0, 10), nullptr);                           // bounded
+    EXPECT_EQ(vista.find(Ray(apex, d), 1e-3, kInfinity), nullptr);                 // not from its start
+    EXPECT_EQ(vista.find(Ray(apex, Vec3(0, 0.6, 0.8)), 0, kInfinity), nullptr);     // a zero component
+    EXPECT_EQ(vista.find(Ray(apex, Vec3(-0.0, 0.6, 0.8)), 0, kInfinity), nullptr);
+    EXPECT_GT(vista.cellsListing(), 0u);
+
+    // An empty or unbounded box in the tree turns the lists off
+    std::vector<Bounds3> open = boxes;
+    open.push_back(Bounds3::infinite());
+    Bvh openBvh(open);
+    EXPECT_FALSE(VistaLists(openBvh, apex).enabled());
+    Bvh emptyBvh(std::vector<Bounds3>{Bounds3()});  // a leaf holding only an empty item
+    EXPECT_FALSE(VistaLists(emptyBvh, apex).enabled());
+    EXPECT_FALSE(VistaLists(bvh, apex, 7).enabled());  // an odd resolution would mix octants
+    Bvh none(std::vector<Bounds3>{});
+    EXPECT_EQ(VistaLists(none, apex).find(Ray(apex, d), 0, kInfinity), nullptr);
+}
+
+TEST(VistaLists, CellsBuiltByTwoThreadsAtOnce) {
+    // Both threads build cells as they need them; each sees complete cells and the same lists
+    Rng rng(11);
+    Vec3 apex(0.5, -0.25, 0.125);
+    std::vector<Bounds3> boxes = randomBoxes(rng, 300, 1, apex);
+    Bvh bvh(boxes);
+    VistaLists vista(bvh, apex, 16);
+    std::vector<Vec3> dirs = directions(rng, 4000);
+    std::vector<std::vector<Visit>> results[2];
+    auto run = [&](int t) {
+        for (const Vec3 &d : dirs) {
+            Ray ray(apex, d);
+            Recorder r{boxes, ray, 0, {}};
+            double tMax = kInfinity;
+            if (const VistaLists::Cell *cell = vista.find(ray, 0, kInfinity))
+                bvh.traverseLeaves(cell->leaves, cell->count, ray, 0, &tMax, r);
+            else
+                bvh.traverse(ray, 0, &tMax, r);
+            results[t].push_back(std::move(r.visits));
+        }
+    };
+    std::thread other(run, 1);
+    run(0);
+    other.join();
+    EXPECT_EQ(results[0], results[1]);
+}
+
+}  // namespace
+}  // namespace rt
