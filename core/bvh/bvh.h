@@ -158,28 +158,20 @@ void Bvh::traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit) con
 template <typename Keep>
 void Bvh::collectLeaves(int octant, Keep &&keep, std::vector<uint32_t> &leaves) const {
     if (nodes_.empty()) return;
-    uint32_t stack[128];
-    int top = 0;
-    uint32_t current = 0;
-    while (true) {
-        const Node &node = nodes_[current];
-        if (keep(node.bounds)) {
-            if (node.count > 0) {
-                leaves.push_back(current);
-                if (top == 0) return;
-                current = stack[--top];
-            } else if (octant >> node.axis & 1) {
-                stack[top++] = current + 1;
-                current = node.offset;
-            } else {
-                stack[top++] = node.offset;
-                current = current + 1;
-            }
-        } else {
-            if (top == 0) return;
-            current = stack[--top];
+    // traverse()'s order: at a node split on an axis where the rays run negative, the second
+    // child first (the tree is at most 100 deep)
+    auto collect = [&](auto &self, uint32_t index) -> void {
+        const Node &node = nodes_[index];
+        if (!keep(node.bounds)) return;
+        if (node.count > 0) {
+            leaves.push_back(index);
+            return;
         }
-    }
+        bool secondFirst = octant >> node.axis & 1;
+        self(self, secondFirst ? node.offset : index + 1);
+        self(self, secondFirst ? index + 1 : node.offset);
+    };
+    collect(collect, 0);
 }
 
 template <typename Visit>
