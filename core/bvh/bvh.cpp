@@ -52,9 +52,11 @@ int Bvh::build(std::vector<BuildItem> &items, size_t begin, size_t end, int dept
         binScale[axis] = extent[axis] > 0 && (n >= kAllAxesFrom || axis == longest)
                              ? kBins / extent[axis]
                              : 0;
+    // Clamped before the conversion: an unbounded item's centroid is NaN or infinite, whose
+    // conversion to int is undefined (NaN goes to bin 0)
     auto binOf = [&](const Vec3 &c, int axis) {
-        int b = static_cast<int>((c[axis] - centroidBounds.min[axis]) * binScale[axis]);
-        return std::clamp(b, 0, kBins - 1);
+        double b = (c[axis] - centroidBounds.min[axis]) * binScale[axis];
+        return b >= kBins - 1 ? kBins - 1 : (b > 0 ? static_cast<int>(b) : 0);
     };
     std::array<std::array<int, kBins>, 3> counts{};
     std::array<std::array<Bounds3, kBins>, 3> binBounds;
