@@ -45,7 +45,7 @@ class Bvh {
     static int octant(const Vec3 &d) { return (1 / d.x < 0) | (1 / d.y < 0) << 1 | (1 / d.z < 0) << 2; }
 
     /// The leaves, in the order traverse() meets them for rays of `octant`, of the subtrees
-    /// whose boxes `keep(bounds)` accepts (a conservative cull: ConeLists).
+    /// whose boxes `keep(bounds)` accepts (a conservative cull: VistaLists).
     template <typename Keep>
     void collectLeaves(int octant, Keep &&keep, std::vector<uint32_t> &leaves) const;
 

@@ -29,7 +29,7 @@ struct CompileOptions {
     /// In scenes of at least this many objects, camera rays look up the leaves their direction
     /// can meet instead of walking the scene's tree from the root (VistaLists); the same
     /// picture either way. A tree of a few objects is walked in a few steps, which the lookup
-    /// does not beat (5 objects: 1 to 3 % slower; 150 to 230: 2 % faster; 2,000: 7 %).
+    /// does not beat (5 objects: 1 to 3 % slower; 49 to 227: 1 to 3 % faster; 2,000: 5 %).
     /// SIZE_MAX: never (tests and measurements).
     size_t vistaFromObjects = 16;
 };
