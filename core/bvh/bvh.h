@@ -40,11 +40,8 @@ class Bvh {
     template <typename Visit>
     void traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit) const;
 
-    /// The octant of a direction as traverse() orders children: bit a set where the direction's
-    /// component on axis a is negative (its reciprocal is).
-    static int octant(const Vec3 &d) { return (1 / d.x < 0) | (1 / d.y < 0) << 1 | (1 / d.z < 0) << 2; }
-
-    /// The leaves, in the order traverse() meets them for rays of `octant`, of the subtrees
+    /// The leaves, in the order traverse() meets them for rays of `octant` (bit a set where the
+    /// direction's component on axis a is negative, as its reciprocal is), of the subtrees
     /// whose boxes `keep(bounds)` accepts (a conservative cull: VistaLists).
     template <typename Keep>
     void collectLeaves(int octant, Keep &&keep, std::vector<uint32_t> &leaves) const;

@@ -102,7 +102,9 @@ const VistaLists::Cell *VistaLists::find(const Ray &ray, double tMin, double tMa
     // A zero (or subnormal) component makes slab distances NaN or infinite
     constexpr double kTiny = 1e-300;
     Vec3 m = abs(d);
-    if (!(m.x > kTiny && m.y > kTiny && m.z > kTiny)) return nullptr;
+    if (!(m.x > kTiny && m.y > kTiny && m.z > kTiny && m.x < kInfinity && m.y < kInfinity &&
+          m.z < kInfinity))
+        return nullptr;
     // The face: the axis where the direction is largest, and its sign; then the cell by the
     // face coordinates d[a] / |d[k]|
     int k;
@@ -120,8 +122,10 @@ const VistaLists::Cell *VistaLists::find(const Ray &ray, double tMin, double tMa
     int j = std::clamp(static_cast<int>(db * scale + half), 0, n_ - 1);
     const Cell *cell = cells_[(static_cast<size_t>(face) * n_ + i) * n_ + j].load(std::memory_order_acquire);
     if (!cell) cell = build(face, i, j);
-    // A direction rounding put into a cell of the next octant walks the tree
-    if (cell->whole || cell->octant != Bvh::octant(d)) return nullptr;
+    // A direction rounding put into a cell of the next octant walks the tree (finite nonzero
+    // components have their reciprocals' signs, which order traverse()'s children)
+    int octant = (d.x < 0) | (d.y < 0) << 1 | (d.z < 0) << 2;
+    if (cell->whole || cell->octant != octant) return nullptr;
     return cell;
 }
 

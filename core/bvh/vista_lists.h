@@ -22,7 +22,7 @@ class VistaLists {
 
     struct Cell {
         uint32_t count = 0;
-        uint8_t octant = 0;  ///< Bvh::octant() of the rays the order is for
+        uint8_t octant = 0;  ///< the rays' octant the order is for (Bvh::collectLeaves)
         bool whole = false;  ///< more than kMaxLeaves: rays take the whole tree
         uint32_t leaves[kMaxLeaves];
     };
