@@ -34,8 +34,7 @@ VistaLists::VistaLists(const Bvh &bvh, const Vec3 &apex, int resolution)
     // every box within 1e-9 of them of its cone
     tolerance_ = 1e-9 * scale;
     if (!(scale > 0 && tolerance_ < kInfinity)) return;
-    cells_ = std::make_unique<std::atomic<const Cell *>[]>(cellCount());
-    for (size_t c = 0; c < cellCount(); ++c) cells_[c].store(nullptr, std::memory_order_relaxed);
+    cells_ = std::make_unique<std::atomic<const Cell *>[]>(cellCount());  // all null (C++20)
     enabled_ = true;
 }
 

@@ -399,7 +399,7 @@ std::unique_ptr<RenderScene> RenderScene::compile(const ir::Scene &scene, Diagno
     }
     rs->bvh_ = Bvh(bounds);
     // Camera rays look up the leaves their direction can meet (POV-Ray's vista buffer)
-    if (rs->camera_.projection == ir::Projection::Perspective && !rs->objects_.empty() &&
+    if (rs->camera_.projection == ir::Projection::Perspective &&
         rs->objects_.size() >= options.vistaFromObjects)
         rs->vista_ = std::make_unique<VistaLists>(rs->bvh_, rs->camera_.location);
     rs->stats_.objects = rs->objects_.size();

@@ -53,21 +53,26 @@ std::vector<Bounds3> randomBoxes(Rng &rng, int count, double scale, const Vec3 &
     return boxes;
 }
 
-/// Directions from the apex: random ones, and ones on the borders of cells (face coordinates
-/// k / 32 exactly, and one ulp beside them).
+/// A direction (not normalised) on the border of two cells of a 64-cell face: largest on
+/// `axis`, with sign `sign`, and face coordinate k / 32 - 1 exactly on the next axis.
+Vec3 borderDirection(Rng &rng, int axis, double sign) {
+    Vec3 e;
+    e[axis] = sign;
+    e[(axis + 1) % 3] = std::floor(rng.uniform() * 64) / 32 - 1;
+    e[(axis + 2) % 3] = rng.uniform() * 1.8 - 0.9;
+    return e;
+}
+
+/// Directions from the apex: random ones, and ones on the borders of cells (exactly, and one
+/// ulp beside them).
 std::vector<Vec3> directions(Rng &rng, int count) {
     std::vector<Vec3> dirs;
     for (int i = 0; i < count; ++i) {
         Vec3 d(rng.uniform() * 2 - 1, rng.uniform() * 2 - 1, rng.uniform() * 2 - 1);
         if (i % 3 == 0) {
-            int axis = i % 3 == 0 ? (i / 3) % 3 : 0;
-            double border = std::floor(rng.uniform() * 64) / 32 - 1;  // a cell border of 64
-            Vec3 e;
-            e[axis] = i % 2 ? 1 : -1;
-            e[(axis + 1) % 3] = border;
-            e[(axis + 2) % 3] = rng.uniform() * 2 - 1;
-            if (i % 9 == 3) e[(axis + 1) % 3] = std::nextafter(border, 2.0);
-            d = e;
+            int axis = (i / 3) % 3;
+            d = borderDirection(rng, axis, i % 2 ? 1 : -1);
+            if (i % 9 == 3) d[(axis + 1) % 3] = std::nextafter(d[(axis + 1) % 3], 2.0);
         }
         if (length(d) > 1e-3) dirs.push_back(normalize(d));
     }
@@ -113,14 +118,7 @@ TEST(VistaLists, TinyBoxesOnTheBordersOfCells) {
     for (double scale : {1e-6, 1.0, 1e6}) {
         Vec3 apex = Vec3(0.75, -1.5, 0.25) * scale;
         std::vector<Vec3> border;
-        for (int i = 0; i < 300; ++i) {
-            int axis = i % 3;
-            Vec3 e;
-            e[axis] = i % 2 ? 1 : -1;
-            e[(axis + 1) % 3] = std::floor(rng.uniform() * 64) / 32 - 1;
-            e[(axis + 2) % 3] = rng.uniform() * 1.8 - 0.9;
-            border.push_back(normalize(e));
-        }
+        for (int i = 0; i < 300; ++i) border.push_back(normalize(borderDirection(rng, i % 3, i % 2 ? 1 : -1)));
         std::vector<Bounds3> boxes = randomBoxes(rng, 30, scale, apex);
         for (const Vec3 &d : border) {
             Vec3 c = apex + d * (3 * scale);
