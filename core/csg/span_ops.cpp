@@ -19,22 +19,30 @@ bool evaluate(SpanOp op, bool inA, bool inB) {
 }
 
 /// Walks the crossings of one list in order; each span contributes its entry then its exit.
+/// The current crossing's t is kept at hand (infinity past the end): the sweep reads it several
+/// times a step, and a vector's size() of 48-byte spans costs a division.
 class CrossingCursor {
   public:
-    explicit CrossingCursor(const SpanList &l) : list_(l) {}
-    bool done() const { return index_ >= 2 * list_.size(); }
-    double t() const { return done() ? kInfinity : current().t; }
+    explicit CrossingCursor(const SpanList &l) : spans_(l.data()), end_(2 * l.size()) { load(); }
+    bool done() const { return index_ >= end_; }
+    double t() const { return t_; }
     const Crossing &current() const {
-        const Span &s = list_[index_ / 2];
+        const Span &s = spans_[index_ / 2];
         return index_ % 2 ? s.out : s.in;
     }
     /// Inside state after the current crossing.
     bool insideAfter() const { return index_ % 2 == 0; }
-    void advance() { ++index_; }
+    void advance() {
+        ++index_;
+        load();
+    }
 
   private:
-    const SpanList &list_;
+    void load() { t_ = done() ? kInfinity : current().t; }
+    const Span *spans_;
+    size_t end_;
     size_t index_ = 0;
+    double t_ = kInfinity;
 };
 
 int rankOf(const Crossing &c) { return c.leaf ? c.leaf->tieRank : 0; }
@@ -44,6 +52,8 @@ int rankOf(const Crossing &c) { return c.leaf ? c.leaf->tieRank : 0; }
 void combineSpans(const SpanList &a, const SpanList &b, SpanOp op, SpanList &out,
                   double tieEps, double *cancelledTie) {
     out.clear();
+    // No result has more spans than its operands together: push_back never reallocates
+    out.reserve(a.size() + b.size());
     CrossingCursor ca(a), cb(b);
     bool inA = false, inB = false, inside = false;
     double lastA = -kInfinity, lastB = -kInfinity;  // t of each list's previous crossing
