@@ -368,14 +368,14 @@ ir::Material MaterialMapper::map(int index, bool &hidden) {
                      p.specular > 0 && !p.specularColor.isBlack()},
           ExtTexture{volumeExt, "KHR_materials_volume", "thicknessTexture",
                      &PbrMaterial::thicknessTexture, false, p.thickness > 0}}) {
-        int index = textureRef(e.ext, e.key);
-        if (index < 0 || !e.needed) continue;  // sheen roughness: the mapping has no use for it
+        int texture = textureRef(e.ext, e.key);
+        if (texture < 0 || !e.needed) continue;  // sheen roughness: the mapping has no use for it
         const tinygltf::Value &info = e.ext->Get(e.key);
         tinygltf::ExtensionMap infoExts;
         if (info.Has("extensions") && info.Get("extensions").IsObject())
             for (const std::string &key : info.Get("extensions").Keys())
                 infoExts[key] = info.Get("extensions").Get(key);
-        p.*e.slot = textureInfo(index, static_cast<int>(number(&info, "texCoord", 0)), infoExts,
+        p.*e.slot = textureInfo(texture, static_cast<int>(number(&info, "texCoord", 0)), infoExts,
                                 path + ".extensions." + e.name + "." + e.key, e.srgb);
     }
     mean.clearcoat *= textureMean(p.clearcoatTexture, 0);

@@ -286,7 +286,9 @@ TEST(Extrude, PolygonTouchingItselfSweepsToClosedSolids) {
         int mesh = -1;
         if (const auto *mp = std::get_if<ir::MeshPrim>(&p[i].node->shape)) mesh = mp->mesh;
         if (const auto *pp = std::get_if<ir::PrismPrim>(&p[i].node->shape)) mesh = pp->mesh;
-        if (mesh >= 0) EXPECT_TRUE(ir::analyzeMesh(*r.scene.meshes[mesh]).closed());
+        if (mesh >= 0) {
+            EXPECT_TRUE(ir::analyzeMesh(*r.scene.meshes[mesh]).closed());
+        }
     }
     EXPECT_TRUE(r.warnings().empty());
 }

@@ -192,7 +192,7 @@ void expectSameShape(const ir::PrimShape &a, const ir::PrimShape &b, const std::
         double extent = 1;
         for (const auto &pt : p->outline) extent = std::max({extent, std::fabs(pt.x), std::fabs(pt.y)});
         double tolerance = 4e-6 * extent + 2.0 / 65536;
-        auto close = [&](double a, double b) { return near(a, b) || std::fabs(a - b) <= tolerance; };
+        auto close = [&](double u, double v) { return near(u, v) || std::fabs(u - v) <= tolerance; };
         for (size_t i = 0; i < p->outline.size(); ++i)
             EXPECT_TRUE(close(p->outline[i].x, q.outline[i].x) &&
                         close(p->outline[i].y, q.outline[i].y))

@@ -35,7 +35,9 @@ Bounds3 boundsOf(const std::vector<Vec3> &pts) {
 /// Our scene's points, with spheres and cylinders as OpenSCAD's polytopes.
 std::vector<Vec3> ourPoints(const std::string &src, bool expectQuiet = true) {
     Imported ours = importText(src);
-    if (expectQuiet) EXPECT_TRUE(ours.warnings().empty()) << ours.warnings().front();
+    if (expectQuiet) {
+        EXPECT_TRUE(ours.warnings().empty()) << ours.warnings().front();
+    }
     ir::applyFacets(ours.scene, ir::FacetMode::OpenScad, ours.diag);
     return worldPoints(ours.scene);
 }
@@ -81,8 +83,8 @@ TEST(MinkowskiCrossCheck, ConvexSumsAreOpenScadsPolytope) {
         "minkowski() { cube([10, 10, 2]); sphere(1, $fn=12); }",
         "minkowski() { cube([10, 10, 2], center=true); cylinder(r=2, h=1, $fn=16); }",
         "minkowski() { cube(2); rotate([0, 0, 45]) cube(1); translate([3, 0, 0]) sphere(1, $fn=6); }",
-        "minkowski() { polyhedron([[0,0,0],[2,0,0],[0,2,0],[0,0,2]], "
-        "[[0,1,2],[0,3,1],[0,2,3],[1,3,2]]); sphere(0.3, $fn=8); }",
+        ("minkowski() { polyhedron([[0,0,0],[2,0,0],[0,2,0],[0,0,2]], "
+         "[[0,1,2],[0,3,1],[0,2,3],[1,3,2]]); sphere(0.3, $fn=8); }"),  // one case on two lines
     };
     fs::path dir = scratchDir("minkowski");
     for (const char *src : cases) {
