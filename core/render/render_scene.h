@@ -73,7 +73,7 @@ class RenderScene {
     bool closestHit(const Ray &ray, double tMin, double tMax, Hit *hit, SpanScratch &scratch,
                     const VistaLists *vista = nullptr) const;
     /// Leaf lists for the rays that leave a perspective camera (null for an orthographic one
-    /// and where CompileOptions::vista is off).
+    /// and for scenes of fewer than CompileOptions::vistaFromObjects objects).
     const VistaLists *vista() const { return vista_.get(); }
     /// The surface at a hit closestHit() found along the same ray.
     SurfaceInteraction surfaceAt(const Ray &ray, const Hit &hit) const;
