@@ -4,5 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./tools/setup.sh
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+# SCADRAY_WERROR=ON (as .ci/run sets) makes any compiler warning an error
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DSCADRAY_WERROR="${SCADRAY_WERROR:-OFF}" >/dev/null
 cmake --build build -j "$(nproc)"

@@ -20,7 +20,7 @@ fi
 # Debug keeps assertions; -O1 keeps sanitized code quick
 CC=clang CXX=clang++ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug \
     -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" -DSCADRAY_SANITIZE=ON -DSCADRAY_FUZZ=ON \
-    "${launcher[@]}" >/dev/null
+    -DSCADRAY_WERROR="${SCADRAY_WERROR:-OFF}" "${launcher[@]}" >/dev/null
 
 if [[ "${1:-}" == --build ]]; then
     shift
