@@ -4,7 +4,10 @@
 #include "core/image/image_io.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -40,18 +43,100 @@ std::string lowerExtension(const std::string &path) {
 }
 
 /// Quantises like POV-Ray's IntEncode: floor(clamp(v,0,1) * max + 0.5).
+double quantiseValue(double v, double maxValue, bool srgb) {
+    if (!std::isfinite(v)) v = 0;
+    v = std::clamp(v, 0.0, 1.0);
+    if (srgb) v = srgbEncode(v);
+    return std::floor(std::clamp(v, 0.0, 1.0) * maxValue + 0.5);
+}
+
+/// Where the 8-bit sRGB code steps: step[k] is the least double v in [0, 1] whose code is at
+/// least k (k = 1 ... 255), found by bisecting the doubles with the formula itself; first[i] is
+/// the code of i / kBins.
+struct SrgbSteps {
+    static constexpr int kBins = 4096;
+    /// A value this close (relative) to a step takes the formula: only there could the rounding
+    /// of pow, ~1e-16, put a value on the other side of the step than the table says
+    static constexpr double kNear = 1e-9;
+    std::array<double, 257> step;  // step[0] = -inf, step[256] = +inf as sentinels
+    std::array<uint8_t, kBins + 1> first;
+
+    static int formula(double v) { return static_cast<int>(quantiseValue(v, 255, true)); }
+
+    /// The code of v: the table's, or the formula's within kNear of a step.
+    int code(double v) const {
+        if (!(v > 0)) return 0;  // and NaN
+        if (!(v < 1)) return v == INFINITY ? 0 : 255;
+        int k = first[static_cast<int>(v * kBins)];
+        while (step[k + 1] <= v) ++k;
+        if ((k > 0 && v - step[k] <= step[k] * kNear) || (k < 255 && step[k + 1] - v <= step[k + 1] * kNear))
+            return formula(v);
+        return k;
+    }
+
+    SrgbSteps() {
+        step[0] = -INFINITY;
+        step[256] = INFINITY;
+        for (int k = 1; k <= 255; ++k) {
+            auto reaches = [k](double v) { return formula(v) >= k; };
+            // Bracket the step around the analytic inverse, widening until it holds (the
+            // formula's code is 0 at 0 and 255 at 1)
+            double guess = srgbDecode((k - 0.5) / 255);
+            double lo = 0, hi = 1;
+            for (double width : {1e-12, 1e-9, 1e-6, 1e-3}) {
+                double a = std::max(0.0, guess * (1 - width)), b = std::min(1.0, guess * (1 + width));
+                if (!reaches(a) && reaches(b)) {
+                    lo = a;
+                    hi = b;
+                    break;
+                }
+            }
+            // Non-negative doubles order as their bit patterns
+            uint64_t loBits, hiBits;
+            std::memcpy(&loBits, &lo, sizeof lo);
+            std::memcpy(&hiBits, &hi, sizeof hi);
+            while (hiBits - loBits > 1) {
+                uint64_t midBits = loBits + (hiBits - loBits) / 2;
+                double mid;
+                std::memcpy(&mid, &midBits, sizeof mid);
+                (reaches(mid) ? hiBits : loBits) = midBits;
+            }
+            std::memcpy(&step[k], &hiBits, sizeof hiBits);
+        }
+        int k = 0;
+        for (int i = 0; i <= kBins; ++i) {
+            double v = double(i) / kBins;
+            while (k < 255 && step[k + 1] <= v) ++k;
+            first[i] = static_cast<uint8_t>(k);
+        }
+    }
+};
+
+const SrgbSteps &srgbSteps() {
+    static const SrgbSteps steps;
+    return steps;
+}
+
 template <typename T>
 std::vector<T> quantise(const Image &img, double maxValue, bool srgb) {
     std::vector<T> out(img.data().size());
-    for (size_t i = 0; i < out.size(); ++i) {
-        double v = img.data()[i];
-        if (!std::isfinite(v)) v = 0;
-        v = std::clamp(v, 0.0, 1.0);
-        if (srgb) v = srgbEncode(v);
-        out[i] = static_cast<T>(std::floor(std::clamp(v, 0.0, 1.0) * maxValue + 0.5));
+    // 8-bit sRGB, every PNG scadray writes by default: by the table (a pow a channel was half
+    // the cost of writing the file)
+    if (srgb && maxValue == 255) {
+        const SrgbSteps &steps = srgbSteps();
+        for (size_t i = 0; i < out.size(); ++i) out[i] = static_cast<T>(steps.code(img.data()[i]));
+        return out;
     }
+    for (size_t i = 0; i < out.size(); ++i)
+        out[i] = static_cast<T>(quantiseValue(img.data()[i], maxValue, srgb));
     return out;
 }
+
+}  // namespace
+
+int srgbByte(double v) { return srgbSteps().code(v); }
+
+namespace {
 
 /// What an image file holds, as OpenImageIO's read_image(FLOAT) gives it: `channels` floats a
 /// pixel (integer samples divided by their maximum).

@@ -25,6 +25,10 @@ struct WriteOptions {
 double srgbEncode(double linear);
 /// Inverse of srgbEncode.
 double srgbDecode(double encoded);
+/// The 8-bit code a PNG stores for a linear value: floor(srgbEncode(clamp(v, 0, 1)) * 255 + 0.5),
+/// 0 for a value that is not finite (POV-Ray's IntEncode), exactly, from a table of where the
+/// code steps (values within 1e-9 of a step take the formula).
+int srgbByte(double linear);
 
 /// Writes by extension (.png through libpng; .exr, also .tif/.ppm as OpenImageIO knows them,
 /// through the OpenImageIO module). Throws std::runtime_error with the reason on failure,

@@ -3,7 +3,11 @@
 // half-written or partial file behind.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <limits>
+#include <random>
 
 #include "core/image/image_io.h"
 
@@ -32,6 +36,52 @@ TEST(Srgb, MatchesTheStandardCurve) {
     EXPECT_NEAR(srgbEncode(0.0031308), 0.0031308 * 12.92, 1e-12);
     EXPECT_NEAR(srgbEncode(0.5), 0.735356983, 1e-8);
     for (double v : {0.001, 0.02, 0.3, 0.9}) EXPECT_NEAR(srgbDecode(srgbEncode(v)), v, 1e-12);
+}
+
+/// The formula srgbByte stands for (POV-Ray's IntEncode of the sRGB value).
+int srgbByteFormula(double v) {
+    if (!std::isfinite(v)) v = 0;
+    v = std::clamp(v, 0.0, 1.0);
+    return static_cast<int>(std::floor(std::clamp(srgbEncode(v), 0.0, 1.0) * 255 + 0.5));
+}
+
+TEST(Srgb, ByteTableEqualsTheFormula) {
+    // Around every step of the code: the formula's own step (found here by a scan of 0.5 ulp
+    // steps from the analytic inverse, independently of the table's bisection) and the 64
+    // doubles on either side of it
+    for (int k = 1; k <= 255; ++k) {
+        double v = srgbDecode((k - 0.5) / 255);
+        while (srgbByteFormula(v) >= k) v = std::nextafter(v, 0.0);
+        while (srgbByteFormula(v) < k) v = std::nextafter(v, 1.0);
+        EXPECT_EQ(srgbByteFormula(v), k);
+        double down = v, up = v;
+        for (int i = 0; i < 64; ++i) {
+            down = std::nextafter(down, 0.0);
+            up = std::nextafter(up, 1.0);
+            ASSERT_EQ(srgbByte(down), srgbByteFormula(down)) << "k " << k << " v " << down;
+            ASSERT_EQ(srgbByte(up), srgbByteFormula(up)) << "k " << k << " v " << up;
+        }
+        ASSERT_EQ(srgbByte(v), k);
+    }
+    // A million values spread over [0, 1] and beyond it, and a million over the dark end (the
+    // linear segment and the start of the power curve)
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> wide(-0.1, 1.1), dark(0, 0.01);
+    for (int i = 0; i < 1000000; ++i) {
+        double a = wide(rng), b = dark(rng);
+        ASSERT_EQ(srgbByte(a), srgbByteFormula(a)) << a;
+        ASSERT_EQ(srgbByte(b), srgbByteFormula(b)) << b;
+    }
+    // Every bin edge of the table, and the special values
+    for (int i = 0; i <= 4096; ++i) {
+        double v = i / 4096.0;
+        for (double w : {std::nextafter(v, 0.0), v, std::nextafter(v, 1.0)})
+            ASSERT_EQ(srgbByte(w), srgbByteFormula(w)) << w;
+    }
+    for (double v : {0.0, -0.0, 1.0, -1.0, 2.0, 0.0031308, 1e-300, 5e-324, 1 - 1e-16,
+                     std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+                     std::numeric_limits<double>::quiet_NaN()})
+        EXPECT_EQ(srgbByte(v), srgbByteFormula(v)) << v;
 }
 
 TEST_F(ImageIo, Png16RoundTripsWithinOneStep) {
