@@ -96,6 +96,11 @@ bool writeRows(png_structp png, png_infop info, png_uint_32 width, png_uint_32 h
     text.key = key;
     text.text = value;
     png_set_text(png, info, &text, 1);
+    // One filter, SUB, for every row instead of libpng's choice per row among all five: on
+    // rendered pictures it halves the time deflate takes with files no larger (default.scad at
+    // 640x480: 158 M -> 85 M instructions, 55.2 kB -> 55.2 kB; glass, csg_part and
+    // openscad_model 2 to 5 % smaller; a noisy Monte Carlo picture 5 % larger)
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
     png_write_info(png, info);
     // Samples are in host order; PNG's are big-endian
     if (bits == 16 && std::endian::native == std::endian::little) png_set_swap(png);
