@@ -121,8 +121,9 @@ template <typename T>
 std::vector<T> quantise(const Image &img, double maxValue, bool srgb) {
     std::vector<T> out(img.data().size());
     // 8-bit sRGB, every PNG scadray writes by default: by the table (a pow a channel was half
-    // the cost of writing the file)
-    if (srgb && maxValue == 255) {
+    // the cost of writing the file), where there are more values than the ~5,000 formula
+    // evaluations that build it
+    if (srgb && maxValue == 255 && out.size() >= 16384) {
         const SrgbSteps &steps = srgbSteps();
         for (size_t i = 0; i < out.size(); ++i) out[i] = static_cast<T>(steps.code(img.data()[i]));
         return out;

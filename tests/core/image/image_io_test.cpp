@@ -84,6 +84,22 @@ TEST(Srgb, ByteTableEqualsTheFormula) {
         EXPECT_EQ(srgbByte(v), srgbByteFormula(v)) << v;
 }
 
+TEST_F(ImageIo, EightBitPngOfAPictureHoldsTheFormulasCodes) {
+    // 128 x 128 x 3 values: enough for writeImage to take the table
+    Image img(128, 128);
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(-0.05, 1.05);
+    for (int y = 0; y < 128; ++y)
+        for (int x = 0; x < 128; ++x) img.set(x, y, Rgb(u(rng), u(rng) * u(rng), u(rng) * 0.01));
+    writeImage(img, (dir / "p.png").string());
+    Image back = readImage((dir / "p.png").string(), true);
+    for (int y = 0; y < 128; ++y)
+        for (int x = 0; x < 128; ++x)
+            for (int c = 0; c < 3; ++c)
+                ASSERT_EQ(std::lround(back.at(x, y)[c] * 255), srgbByteFormula(img.at(x, y)[c]))
+                    << x << " " << y << " " << c;
+}
+
 TEST_F(ImageIo, Png16RoundTripsWithinOneStep) {
     Image img = gradient();
     std::string path = (dir / "g.png").string();
