@@ -5,9 +5,9 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -92,16 +92,12 @@ struct SrgbSteps {
                 }
             }
             // Non-negative doubles order as their bit patterns
-            uint64_t loBits, hiBits;
-            std::memcpy(&loBits, &lo, sizeof lo);
-            std::memcpy(&hiBits, &hi, sizeof hi);
+            uint64_t loBits = std::bit_cast<uint64_t>(lo), hiBits = std::bit_cast<uint64_t>(hi);
             while (hiBits - loBits > 1) {
                 uint64_t midBits = loBits + (hiBits - loBits) / 2;
-                double mid;
-                std::memcpy(&mid, &midBits, sizeof mid);
-                (reaches(mid) ? hiBits : loBits) = midBits;
+                (reaches(std::bit_cast<double>(midBits)) ? hiBits : loBits) = midBits;
             }
-            std::memcpy(&step[k], &hiBits, sizeof hiBits);
+            step[k] = std::bit_cast<double>(hiBits);
         }
         int k = 0;
         for (int i = 0; i <= kBins; ++i) {
