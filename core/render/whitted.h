@@ -63,6 +63,11 @@ class WhittedIntegrator {
     Rgb surfaceColour(const ir::Material &m, const SurfaceInteraction &si) const;
     /// Spotlight cone and fade of light `index` seen in direction L at shadow distance dist.
     double lightAttenuation(size_t index, const Vec3 &L, double dist) const;
+    /// shade() with the material, shading normal and colour at the hit resolved (a glTF
+    /// material's at its texel).
+    Rgb shadeWith(const Ray &ray, const SurfaceInteraction &si, const ir::Material &m, const Vec3 &ns,
+                  const Rgb &c, int level, double weight, const InteriorStack &stack, bool blurred,
+                  TraceContext &ctx) const;
     /// Filtered light reaching si from the direction L over distance dist (1 = unoccluded),
     /// POV-Ray section 1.4. `stack` is the interior list of the ray that hit si.
     Rgb shadowFilter(const SurfaceInteraction &si, const Vec3 &L, double dist,
