@@ -3,7 +3,6 @@
 #include "core/render/whitted.h"
 
 #include <cmath>
-#include <optional>
 
 #include "core/lights/area_light.h"
 #include "core/materials/classic_shading.h"
