@@ -136,6 +136,10 @@ double meanSamplesPerPixel(const RenderResult &r);
 /// samples), "16.00 per pixel" for a uniform one.
 std::string describeSampling(const RenderResult &r);
 
+/// The 1/255 step of a display value d in [0, 1] as adaptive antialiasing compares them: d * 255
+/// rounded half away from zero (as std::lround), 0 for NaN.
+uint8_t displayStep(double d);
+
 /// Columns and rows of the stratification grid of n samples: rows is the largest divisor of n
 /// not above its square root.
 void strataGrid(int n, int &columns, int &rows);

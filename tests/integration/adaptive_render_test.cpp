@@ -204,6 +204,30 @@ material(color="green") translate([2, -1, 0]) cube([1, 2, 1]);
     EXPECT_GT(w * h - seams.pixelsBySamples[0], 0);
 }
 
+// The decisions compare display values in 1/255 steps; the inline rounding must be std::lround's
+// at every step's halfway point and its neighbours, and everywhere else
+TEST(AdaptiveRender, DisplayStepRoundsAsLround) {
+    auto expectLround = [](double d) {
+        ASSERT_EQ(int(displayStep(d)), int(std::lround(d * 255))) << "display value " << d;
+    };
+    for (int k = 0; k <= 255; ++k)
+        for (double base : {double(k) / 255, (k + 0.5) / 255}) {
+            double d = base;
+            for (int i = 0; i < 64 && d <= 1; ++i, d = std::nextafter(d, 2.0)) expectLround(d);
+            d = base;
+            for (int i = 0; i < 64 && d >= 0; ++i, d = std::nextafter(d, -1.0))
+                if (d <= 1) expectLround(d);
+        }
+    uint64_t state = 12345;
+    for (int i = 0; i < 1000000; ++i) {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        expectLround(double(state >> 11) * 0x1.0p-53);
+    }
+    EXPECT_EQ(displayStep(std::nan("")), 0);
+    EXPECT_EQ(displayStep(0.5 / 255), 1);
+    EXPECT_EQ(displayStep(1), 255);
+}
+
 // The adaptive pass tells primitives apart by their index in the compiled scene, which every
 // process (every tile) gives them alike, where a hash of their addresses could differ between
 // processes and could collide: every leaf has its own index, from 1.
