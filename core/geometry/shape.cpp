@@ -45,19 +45,54 @@ bool Shape::firstCrossing(const Ray &ray, double tMin, double tMax, Crossing *c,
     return true;
 }
 
+namespace {
+
+/// Whether the upper-left 3x3 block is exactly the identity (a zero of either sign).
+bool identityBlock(const Mat4 &m) {
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            if (m.m[i][j] != (i == j ? 1.0 : 0.0)) return false;
+    return true;
+}
+
+Placement::Kind placementKind(const Transform &t) {
+    if (t.isIdentity()) return Placement::Kind::Identity;
+    if (identityBlock(t.matrix()) && identityBlock(t.inverseMatrix()))
+        return Placement::Kind::Translation;
+    return Placement::Kind::General;
+}
+
+Vec3 lastColumn(const Mat4 &m) { return Vec3(m.m[0][3], m.m[1][3], m.m[2][3]); }
+
+}  // namespace
+
 Placement::Placement(const Transform &worldFromObject)
     : worldFromObject_(worldFromObject),
-      identity_(worldFromObject.isIdentity()),
+      kind_(placementKind(worldFromObject)),
+      toWorldShift_(lastColumn(worldFromObject.matrix())),
+      toObjectShift_(lastColumn(worldFromObject.inverseMatrix())),
       conditioning_(transformConditioning(worldFromObject)) {}
 
 void Placement::surfaceToWorld(const ObjectSurface &os, SurfaceInteraction &si) const {
-    if (identity_) {
-        si.p = os.p;
-        si.pError = os.pError;
-    } else {
-        Vec3 err;
-        si.p = worldFromObject_.point(os.p, os.pError, &err);
-        si.pError = err * conditioning_;
+    switch (kind_) {
+        case Kind::Identity:
+            si.p = os.p;
+            si.pError = os.pError;
+            break;
+        case Kind::Translation:
+            // Transform::point's bound with its products by 0 left out (they add +0)
+            si.p = os.p + toWorldShift_;
+            for (int i = 0; i < 3; ++i)
+                si.pError[i] = (gamma(3) * (std::abs(os.p[i]) + std::abs(toWorldShift_[i])) +
+                                (gamma(3) + 1) * os.pError[i]) *
+                               conditioning_;
+            break;
+        case Kind::General: {
+            Vec3 err;
+            si.p = worldFromObject_.point(os.p, os.pError, &err);
+            si.pError = err * conditioning_;
+            break;
+        }
     }
     si.n = normalToWorld(os.normal);
 }

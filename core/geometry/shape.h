@@ -105,31 +105,52 @@ class LeafShape : public Shape {
 
 /// Where a leaf sits in the world, and what its instances need of that: rays and points into
 /// object space, surfaces back out with their error bounds grown by the transform's
-/// conditioning. The identity passes everything through untouched.
+/// conditioning. The identity passes everything through untouched; a pure translation (the
+/// 3x3 block of the matrix and of its inverse exactly the identity: most `translate()`d parts)
+/// adds its offset instead of multiplying by the matrix.
+///
+/// The translation's results are the matrix's: its products by 1 are exact and its products
+/// by 0 are zeros, which change no sum whose other terms are not all zero; the error bounds
+/// are the same bit for bit. The one difference is the sign of a zero coordinate where the
+/// offset on that axis is zero too: the matrix's sum of signed zeros may give +0 where the
+/// offset gives -0 (or the other way), which no comparison, product or picture tells apart.
 class Placement {
   public:
     explicit Placement(const Transform &worldFromObject);
 
-    Ray toObject(const Ray &r) const { return identity_ ? r : worldFromObject_.inverseRay(r); }
+    Ray toObject(const Ray &r) const {
+        if (kind_ == Kind::Identity) return r;
+        if (kind_ == Kind::Translation) return Ray(r.o + toObjectShift_, r.d);
+        return worldFromObject_.inverseRay(r);
+    }
     Vec3 pointToObject(const Vec3 &p) const {
-        return identity_ ? p : worldFromObject_.inversePoint(p);
+        if (kind_ == Kind::Identity) return p;
+        if (kind_ == Kind::Translation) return p + toObjectShift_;
+        return worldFromObject_.inversePoint(p);
     }
     Bounds3 worldBounds(const Bounds3 &objectBounds) const {
         return worldFromObject_.bounds(objectBounds);
     }
     /// Unit world normal of an object-space normal.
     Vec3 normalToWorld(const Vec3 &n) const {
-        return normalize(identity_ ? n : worldFromObject_.normal(n));
+        return normalize(kind_ == Kind::General ? worldFromObject_.normal(n) : n);
     }
     /// World direction of an object-space tangent vector (not normalised).
-    Vec3 vectorToWorld(const Vec3 &v) const { return identity_ ? v : worldFromObject_.vector(v); }
+    Vec3 vectorToWorld(const Vec3 &v) const {
+        return kind_ == Kind::General ? worldFromObject_.vector(v) : v;
+    }
     /// Sets the world hit point, its error bound and the unit geometric normal of `si` from
     /// an object-space surface point.
     void surfaceToWorld(const ObjectSurface &os, SurfaceInteraction &si) const;
 
+    enum class Kind : uint8_t { Identity, Translation, General };
+    Kind kind() const { return kind_; }
+
   private:
     Transform worldFromObject_;
-    bool identity_;
+    Kind kind_;
+    /// Translation: the offset of the matrix and of its inverse (their last columns).
+    Vec3 toWorldShift_, toObjectShift_;
     /// Error growth of a round trip through the transform (condition number estimate, >= 1).
     double conditioning_;
 };
