@@ -111,9 +111,10 @@ class LeafShape : public Shape {
 ///
 /// The translation's results are the matrix's: its products by 1 are exact and its products
 /// by 0 are zeros, which change no sum whose other terms are not all zero; the error bounds
-/// are the same bit for bit. The one difference is the sign of a zero coordinate where the
-/// offset on that axis is zero too: the matrix's sum of signed zeros may give +0 where the
-/// offset gives -0 (or the other way), which no comparison, product or picture tells apart.
+/// are the same bit for bit. The one difference is the sign of a zero coordinate (of a
+/// direction or normal, or of a point on an axis whose offset is zero): the matrix's sum of
+/// signed zeros may give +0 where this path keeps -0. The two compare equal, and every test
+/// picture is byte-identical either way (tests/core/geometry/placement_test.cpp, README).
 class Placement {
   public:
     explicit Placement(const Transform &worldFromObject);
