@@ -62,15 +62,13 @@ Placement::Kind placementKind(const Transform &t) {
     return Placement::Kind::General;
 }
 
-Vec3 lastColumn(const Mat4 &m) { return Vec3(m.m[0][3], m.m[1][3], m.m[2][3]); }
-
 }  // namespace
 
 Placement::Placement(const Transform &worldFromObject)
     : worldFromObject_(worldFromObject),
       kind_(placementKind(worldFromObject)),
-      toWorldShift_(lastColumn(worldFromObject.matrix())),
-      toObjectShift_(lastColumn(worldFromObject.inverseMatrix())),
+      toWorldShift_(worldFromObject.matrix().translation()),
+      toObjectShift_(worldFromObject.inverseMatrix().translation()),
       conditioning_(transformConditioning(worldFromObject)) {}
 
 void Placement::surfaceToWorld(const ObjectSurface &os, SurfaceInteraction &si) const {

@@ -168,7 +168,7 @@ std::optional<Mat4> Mat4::affineInverse() const {
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) r.m[i][j] = ui[i][j] / rowNorm[j];
     // Translation: -A^-1 t
-    Vec3 t{m[0][3], m[1][3], m[2][3]};
+    Vec3 t = translation();
     for (int i = 0; i < 3; ++i)
         r.m[i][3] = -(r.m[i][0] * t.x + r.m[i][1] * t.y + r.m[i][2] * t.z);
     for (int i = 0; i < 4; ++i)

@@ -38,6 +38,8 @@ struct Mat4 {
                 m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
                 m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
     }
+    /// The last column's upper three entries: an affine map's translation.
+    Vec3 translation() const { return {m[0][3], m[1][3], m[2][3]}; }
     Mat4 transposed() const;
     /// Determinant of the upper-left 3x3 block (orientation and volume scale of an affine map).
     double det3() const;

@@ -40,7 +40,7 @@ Bounds3 Transform::bounds(const Bounds3 &b) const {
     if (b.isEmpty()) return b;
     // Arvo's method: each output axis gathers min/max of the products per input axis.
     const auto &m = m_.m;
-    Vec3 lo{m[0][3], m[1][3], m[2][3]}, hi = lo;
+    Vec3 lo = m_.translation(), hi = lo;
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
             double a = m[i][j] * b.min[j], c = m[i][j] * b.max[j];

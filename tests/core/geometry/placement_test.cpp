@@ -49,9 +49,7 @@ TEST(Placement, TranslationGivesTheMatrixResultsBitForBit) {
             }
             ASSERT_EQ(placement.kind(), Placement::Kind::Translation);
             ++translations;
-            Vec3 toWorld(t.matrix().m[0][3], t.matrix().m[1][3], t.matrix().m[2][3]);
-            Vec3 toObject(t.inverseMatrix().m[0][3], t.inverseMatrix().m[1][3],
-                          t.inverseMatrix().m[2][3]);
+            Vec3 toWorld = t.matrix().translation(), toObject = t.inverseMatrix().translation();
             double conditioning = transformConditioning(t);
             for (int j = 0; j < 20; ++j) {
                 Vec3 p(coordinate(scale), coordinate(scale), coordinate(scale));
