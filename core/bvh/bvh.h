@@ -7,9 +7,18 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 #include "core/math/bounds3.h"
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#define SCADRAY_LANE_SLABS 1
+#define SCADRAY_LANES_TARGET __attribute__((target("avx2")))
+#else
+#define SCADRAY_LANE_SLABS 0
+#endif
 
 namespace rt {
 
@@ -38,7 +47,13 @@ class Bvh {
     /// visit(itemIndex, tMax) tests one item; it may lower *tMax (closest hit) and returns true to
     /// stop the traversal (any hit).
     template <typename Visit>
-    void traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit) const;
+    void traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit) const {
+        traverseWith<RaySlabs>(ray, tMin, tMax, visit);
+    }
+    /// traverse() with the node test of `Slabs`: RaySlabs (one plane at a time) or LaneSlabs
+    /// (the three axes side by side), which visit the same items in the same order.
+    template <typename Slabs, typename Visit>
+    void traverseWith(const Ray &ray, double tMin, double *tMax, Visit &&visit) const;
 
     /// The leaves, in the order traverse() meets them for rays of `octant` (bit a set where the
     /// direction's component on axis a is negative, as its reciprocal is), of the subtrees
@@ -56,15 +71,13 @@ class Bvh {
     /// same order with the same tMax.
     template <typename Visit>
     void traverseLeaves(const uint32_t *leaves, size_t count, const Ray &ray, double tMin,
-                        double *tMax, Visit &&visit) const;
+                        double *tMax, Visit &&visit) const {
+        traverseLeavesWith<RaySlabs>(leaves, count, ray, tMin, tMax, visit);
+    }
+    template <typename Slabs, typename Visit>
+    void traverseLeavesWith(const uint32_t *leaves, size_t count, const Ray &ray, double tMin,
+                            double *tMax, Visit &&visit) const;
 
-  private:
-    struct BuildItem {
-        Bounds3 bounds;
-        Vec3 centroid;
-        uint32_t index;
-    };
-    int build(std::vector<BuildItem> &items, size_t begin, size_t end, int depth);
     /// What the slab test needs of a ray, computed once per traversal: besides the origin and
     /// the reciprocal direction, where in a box each axis' near and far planes lie (in doubles
     /// from min.x), so a node test loads them without a branch on the direction's sign.
@@ -77,15 +90,36 @@ class Bvh {
               neg{invDir.x < 0, invDir.y < 0, invDir.z < 0},
               nearAt{neg[0] ? 3 : 0, neg[1] ? 4 : 1, neg[2] ? 5 : 2},
               farAt{neg[0] ? 0 : 3, neg[1] ? 1 : 4, neg[2] ? 2 : 5} {}
+        bool hit(const Node &node, double tMin, double tMax) const;
     };
-    static bool hitNode(const Bounds3 &b, const RaySlabs &r, double tMin, double tMax);
+#if SCADRAY_LANE_SLABS
+    /// The same test with the three axes in the lanes of one AVX register, for walks compiled
+    /// for AVX2 (RenderScene::closestHit where the machine has it). Each lane computes what
+    /// RaySlabs computes for its axis, with the same operations and roundings; the fourth lane
+    /// is NaN, which the NaN-safe selections leave out, as they leave out a NaN slab.
+    struct LaneSlabs {
+        __m256d o, invDir, negLanes;
+        bool neg[3];
+        SCADRAY_LANES_TARGET explicit LaneSlabs(const Ray &ray);
+        SCADRAY_LANES_TARGET bool hit(const Node &node, double tMin, double tMax) const;
+    };
+#endif
 
+  private:
+    struct BuildItem {
+        Bounds3 bounds;
+        Vec3 centroid;
+        uint32_t index;
+    };
+    int build(std::vector<BuildItem> &items, size_t begin, size_t end, int depth);
     std::vector<Node> nodes_;
     std::vector<uint32_t> order_;
     int depth_ = 0;
 };
 
-inline bool Bvh::hitNode(const Bounds3 &b, const RaySlabs &r, double tMin, double tMax) {
+inline bool Bvh::RaySlabs::hit(const Node &node, double tMin, double tMax) const {
+    const RaySlabs &r = *this;
+    const Bounds3 &b = node.bounds;
     static_assert(sizeof(Bounds3) == 6 * sizeof(double) && offsetof(Bounds3, max) == 3 * sizeof(double),
                   "RaySlabs indexes a box's six planes");
     // The planes are read as the box's bytes (memcpy of a double: one load)
@@ -123,16 +157,52 @@ inline bool Bvh::hitNode(const Bounds3 &b, const RaySlabs &r, double tMin, doubl
     return t0 <= t1;
 }
 
-template <typename Visit>
-void Bvh::traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit) const {
+#if SCADRAY_LANE_SLABS
+SCADRAY_LANES_TARGET inline Bvh::LaneSlabs::LaneSlabs(const Ray &ray) {
+    double ix = 1 / ray.d.x, iy = 1 / ray.d.y, iz = 1 / ray.d.z;
+    o = _mm256_setr_pd(ray.o.x, ray.o.y, ray.o.z, 0);
+    invDir = _mm256_setr_pd(ix, iy, iz, std::numeric_limits<double>::quiet_NaN());
+    negLanes = _mm256_cmp_pd(invDir, _mm256_setzero_pd(), _CMP_LT_OQ);  // the NaN lane: false
+    neg[0] = ix < 0, neg[1] = iy < 0, neg[2] = iz < 0;
+}
+
+SCADRAY_LANES_TARGET inline bool Bvh::LaneSlabs::hit(const Node &node, double tMin, double tMax) const {
+    static_assert(offsetof(Node, bounds) == 0 && sizeof(Node) >= 7 * sizeof(double),
+                  "LaneSlabs reads 7 doubles from a node: its box, then a word of the node");
+    // min.xyz and max.x; max.xyz and the node's offset and count, whose lane takes max.x
+    // instead (as a double it is subnormal, which costs an arithmetic operation a microcode
+    // assist); the NaN lane of invDir turns both into NaN
+    const double *planes = &node.bounds.min.x;
+    __m256d lo = _mm256_loadu_pd(planes);
+    __m256d hi = _mm256_blend_pd(_mm256_loadu_pd(planes + 3), lo, 0b1000);
+    __m256d tLo = _mm256_mul_pd(_mm256_sub_pd(lo, o), invDir);
+    __m256d tHi = _mm256_mul_pd(_mm256_sub_pd(hi, o), invDir);
+    __m256d nearV = _mm256_blendv_pd(tLo, tHi, negLanes), farV = _mm256_blendv_pd(tHi, tLo, negLanes);
+    // RaySlabs::hit's selections lane by lane (max and min give their second operand where
+    // the first is NaN), then across the lanes: the same largest near distance and smallest
+    // far one, up to the sign of a zero, which t0 <= t1 does not see
+    __m256d t0V = _mm256_max_pd(nearV, _mm256_set1_pd(tMin));
+    __m256d farL = _mm256_min_pd(farV, _mm256_set1_pd(kInfinity));
+    __m128d t0xy = _mm256_castpd256_pd128(t0V), farxy = _mm256_castpd256_pd128(farL);
+    __m128d t0m = _mm_max_sd(_mm_max_sd(t0xy, _mm_unpackhi_pd(t0xy, t0xy)), _mm256_extractf128_pd(t0V, 1));
+    __m128d farm = _mm_min_sd(_mm_min_sd(farxy, _mm_unpackhi_pd(farxy, farxy)), _mm256_extractf128_pd(farL, 1));
+    double t0 = _mm_cvtsd_f64(t0m), far = _mm_cvtsd_f64(farm);
+    far += 2 * gamma(3) * std::abs(far);
+    double t1 = far < tMax ? far : tMax;
+    return t0 <= t1;
+}
+#endif
+
+template <typename Slabs, typename Visit>
+void Bvh::traverseWith(const Ray &ray, double tMin, double *tMax, Visit &&visit) const {
     if (nodes_.empty()) return;
-    const RaySlabs slabs(ray);
+    const Slabs slabs(ray);
     uint32_t stack[128];
     int top = 0;
     uint32_t current = 0;
     while (true) {
         const Node &node = nodes_[current];
-        if (hitNode(node.bounds, slabs, tMin, *tMax)) {
+        if (slabs.hit(node, tMin, *tMax)) {
             if (node.count > 0) {
                 for (uint32_t i = 0; i < node.count; ++i)
                     if (visit(order_[node.offset + i], tMax)) return;
@@ -171,13 +241,13 @@ void Bvh::collectLeaves(int octant, Keep &&keep, std::vector<uint32_t> &leaves) 
     collect(collect, 0);
 }
 
-template <typename Visit>
-void Bvh::traverseLeaves(const uint32_t *leaves, size_t count, const Ray &ray, double tMin,
-                         double *tMax, Visit &&visit) const {
-    const RaySlabs slabs(ray);
+template <typename Slabs, typename Visit>
+void Bvh::traverseLeavesWith(const uint32_t *leaves, size_t count, const Ray &ray, double tMin,
+                             double *tMax, Visit &&visit) const {
+    const Slabs slabs(ray);
     for (size_t l = 0; l < count; ++l) {
         const Node &node = nodes_[leaves[l]];
-        if (!hitNode(node.bounds, slabs, tMin, *tMax)) continue;
+        if (!slabs.hit(node, tMin, *tMax)) continue;
         for (uint32_t i = 0; i < node.count; ++i)
             if (visit(order_[node.offset + i], tMax)) return;
     }

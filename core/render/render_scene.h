@@ -32,6 +32,10 @@ struct CompileOptions {
     /// does not beat (5 objects: 1 to 3 % slower; 49 to 227: 1 to 3 % faster; 2,000: 5 %).
     /// SIZE_MAX: never (tests and measurements).
     size_t vistaFromObjects = 16;
+    /// Where the machine has AVX2, the scene tree's node tests take the three axes side by side
+    /// in one register (Bvh::LaneSlabs); the same visits, so the same picture, either way.
+    /// Off: one plane at a time (tests and measurements).
+    bool laneSlabs = true;
 };
 
 struct CompileStats {
@@ -75,6 +79,9 @@ class RenderScene {
     /// Leaf lists for the rays that leave a perspective camera (null for an orthographic one
     /// and for scenes of fewer than CompileOptions::vistaFromObjects objects).
     const VistaLists *vista() const { return vista_.get(); }
+    /// Whether closestHit() tests nodes in AVX lanes (CompileOptions::laneSlabs on a machine
+    /// with AVX2).
+    bool laneSlabs() const { return lanes_; }
     /// The surface at a hit closestHit() found along the same ray.
     SurfaceInteraction surfaceAt(const Ray &ray, const Hit &hit) const;
 
@@ -100,6 +107,14 @@ class RenderScene {
 
   private:
     RenderScene() = default;
+    /// closestHit() with the node test of `Slabs` (Bvh::RaySlabs or Bvh::LaneSlabs).
+    template <typename Slabs>
+    bool closestHitWith(const Ray &ray, double tMin, double tMax, Hit *hit, SpanScratch &scratch,
+                        const VistaLists *vista) const;
+    /// closestHitWith<Bvh::LaneSlabs>, compiled for AVX2.
+    bool closestHitLanes(const Ray &ray, double tMin, double tMax, Hit *hit, SpanScratch &scratch,
+                         const VistaLists *vista) const;
+    bool lanes_ = false;
 
     std::vector<std::unique_ptr<Shape>> objects_;
     Bvh bvh_;

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include "core/bvh/bvh.h"
 #include "core/geometry/shape.h"
@@ -120,6 +122,114 @@ TEST(Bvh, VisitsEveryBoxTheRayMeets) {
         }
     }
 }
+
+#if SCADRAY_LANE_SLABS
+// The node test in AVX lanes decides every node as the one-plane-at-a-time test does: on boxes
+// around points of the ray and random ones, flat and infinite boxes, origins exactly on a box's
+// planes with zero and negative-zero direction components (where a slab distance is 0 * inf,
+// NaN), subnormal components (whose reciprocals are infinite), and tMin and tMax from -inf to
+// inf, at scales 1e-6 to 1e6. The node's offset and count, which the lanes load with the box,
+// are set to words that read as NaN, infinity and subnormals.
+TEST(Bvh, LaneSlabsDecideEveryNodeAsRaySlabs) {
+    if (!__builtin_cpu_supports("avx2")) GTEST_SKIP() << "this machine has no AVX2: the lanes are not used";
+    Rng rng(41);
+    const uint32_t words[][2] = {{0, 0}, {1, 0}, {0, 0x7ff00000}, {1, 0x7ff80000}, {0, 0x80000001}, {7, 3}};
+    auto pick = [&](std::initializer_list<double> values) {
+        return *(values.begin() + static_cast<size_t>(rng.uniform() * values.size()));
+    };
+    long long tested = 0, hits = 0;
+    for (double scale : {1e-6, 1.0, 1e6}) {
+        for (int i = 0; i < 4000; ++i) {
+            Vec3 o = Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) * (20 * scale);
+            Vec3 d(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5);
+            for (int a = 0; a < 3; ++a) {
+                double u = rng.uniform();
+                if (u < 0.15) d[a] = 0.0;
+                else if (u < 0.3) d[a] = -0.0;
+                else if (u < 0.35) d[a] = (u < 0.325 ? 1 : -1) * 1e-310;
+            }
+            Ray ray(o, d);
+            Bvh::RaySlabs one(ray);
+            Bvh::LaneSlabs lanes(ray);
+            for (int k = 0; k < 16; ++k) {
+                Bvh::Node node;
+                Vec3 lo, hi;
+                for (int a = 0; a < 3; ++a) {
+                    double u = rng.uniform();
+                    if (u < 0.3) {
+                        // a plane through the origin, the box on either side or flat
+                        lo[a] = hi[a] = o[a];
+                        if (rng.uniform() < 0.5) lo[a] -= rng.uniform() * scale;
+                        if (rng.uniform() < 0.5) hi[a] += rng.uniform() * scale;
+                    } else if (u < 0.4) {
+                        lo[a] = -kInfinity;
+                        hi[a] = pick({-kInfinity, o[a], kInfinity});
+                    } else {
+                        double c = (rng.uniform() - 0.5) * 30 * scale, w = rng.uniform() * 10 * scale;
+                        lo[a] = c;
+                        hi[a] = c + w;
+                    }
+                }
+                node.bounds = Bounds3();
+                node.bounds.min = lo;
+                node.bounds.max = hi;
+                const uint32_t *w = words[k % 6];
+                node.offset = w[0];
+                node.count = w[1];
+                double tMin = pick({-kInfinity, 0.0, -0.0, rng.uniform() * scale});
+                double tMax = pick({kInfinity, rng.uniform() * 40 * scale, 0.0, -kInfinity});
+                bool expected = one.hit(node, tMin, tMax);
+                ASSERT_EQ(lanes.hit(node, tMin, tMax), expected)
+                    << "box " << lo.toString() << " " << hi.toString() << " ray " << o.toString() << " "
+                    << d.toString() << " tMin " << tMin << " tMax " << tMax;
+                ++tested;
+                hits += expected;
+            }
+            for (int a = 0; a < 3; ++a) ASSERT_EQ(lanes.neg[a], one.neg[a]);
+        }
+    }
+    // Both answers occur often
+    EXPECT_GT(hits, tested / 10);
+    EXPECT_LT(hits, tested - tested / 10);
+}
+
+// And a whole walk with the lanes makes the same visits, in the same order, with the same tMax.
+TEST(Bvh, LaneSlabsWalkVisitsAsTheOnePlaneWalk) {
+    if (!__builtin_cpu_supports("avx2")) GTEST_SKIP() << "this machine has no AVX2: the lanes are not used";
+    Rng rng(43);
+    for (int scene = 0; scene < 40; ++scene) {
+        std::vector<Bounds3> boxes;
+        for (int k = 0; k < 200; ++k) {
+            Vec3 c(rng.uniform() * 20 - 10, rng.uniform() * 20 - 10, rng.uniform() * 2 - 1);
+            Vec3 size(rng.uniform() * 3, rng.uniform() * 3, k % 5 == 0 ? 0 : rng.uniform());
+            boxes.push_back(Bounds3(c, c + size));
+        }
+        Bvh bvh(boxes);
+        for (int i = 0; i < 200; ++i) {
+            Vec3 o(rng.uniform() * 30 - 15, rng.uniform() * 30 - 15, rng.uniform() * 10 - 5);
+            Vec3 d = normalize(Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5));
+            if (i % 7 == 0) d.z = i % 2 ? 0.0 : -0.0;
+            Ray ray(o, d);
+            // The visitor shortens the ray at some items, as a closest-hit search does
+            auto walk = [&](auto traverse) {
+                std::vector<std::pair<uint32_t, double>> visits;
+                double tMax = kInfinity;
+                traverse(ray, &tMax, [&](uint32_t k, double *far) {
+                    visits.emplace_back(k, *far);
+                    if (k % 3 == 0) *far = std::min(*far, 5.0 + k % 11);
+                    return false;
+                });
+                return visits;
+            };
+            auto one = walk([&](const Ray &r, double *tMax, auto &&v) { bvh.traverse(r, -kInfinity, tMax, v); });
+            auto lanes = walk([&](const Ray &r, double *tMax, auto &&v) {
+                bvh.traverseWith<Bvh::LaneSlabs>(r, -kInfinity, tMax, v);
+            });
+            ASSERT_EQ(lanes, one) << "scene " << scene << " ray " << i;
+        }
+    }
+}
+#endif
 
 TEST(Bvh, HandlesCoincidentCentroidsAndEmptyInput) {
     std::vector<Bounds3> same(40, Bounds3(Vec3(-1), Vec3(1)));
