@@ -151,6 +151,16 @@ Rgb clampSample(Rgb c, const RenderOptions &opts) {
     return c;
 }
 
+/// Camera rays made ahead of their traces, a few at a time: each waits on a square root and
+/// three divisions (normalising its direction), which the processor overlaps when the rays are
+/// made side by side, not each just before its trace (whose work depends on it). With each,
+/// its sample's stream as the jitter left it, for the distributed rays of its path.
+struct CameraRays {
+    static constexpr int kSize = 16;
+    Ray ray[kSize];
+    Rng rng[kSize];
+};
+
 void renderUniform(const Camera &camera, const WhittedIntegrator &integrator,
                    const RenderOptions &opts, int threads, RenderResult &result) {
     Tiles tiles(opts);
@@ -161,6 +171,7 @@ void renderUniform(const Camera &camera, const WhittedIntegrator &integrator,
     int y0 = opts.rowBegin, bandRows = endRow(opts) - y0;
     if (opts.batches > 1) result.variance = Image(opts.width, bandRows);
     runJobs(threads, tiles.count, opts, 0, 1, result.stats, [&](int tile, TraceContext &ctx) {
+        CameraRays prepared;
         tiles.forPixels(opts, tile, [&](int x, int y) {
             uint64_t pixel = uint64_t(y) * opts.width + x;
             // Welford's running mean and sum of squares over batch means
@@ -168,19 +179,28 @@ void renderUniform(const Camera &camera, const WhittedIntegrator &integrator,
             int tiedSamples = 0;
             for (int b = 0; b < opts.batches; ++b) {
                 Rgb sum(0);
-                for (int s = 0; s < opts.samplesPerPixel; ++s) {
-                    // The sample's stream jitters its stratum of the pixel, then drives
-                    // every distributed ray of its path
-                    ctx.rng = Rng::forSample(pixel, uint64_t(b) * opts.samplesPerPixel + s, opts.seed);
-                    double fx = 0.5, fy = 0.5;
-                    if (jitter) {
-                        fx = ((s % columns) + ctx.rng.uniform()) / columns;
-                        fy = ((s / columns) + ctx.rng.uniform()) / rows;
+                for (int s0 = 0; s0 < opts.samplesPerPixel; s0 += CameraRays::kSize) {
+                    int n = std::min(CameraRays::kSize, opts.samplesPerPixel - s0);
+                    for (int k = 0; k < n; ++k) {
+                        int s = s0 + k;
+                        // The sample's stream jitters its stratum of the pixel, then drives
+                        // every distributed ray of its path
+                        Rng rng = Rng::forSample(pixel, uint64_t(b) * opts.samplesPerPixel + s, opts.seed);
+                        double fx = 0.5, fy = 0.5;
+                        if (jitter) {
+                            fx = ((s % columns) + rng.uniform()) / columns;
+                            fy = ((s / columns) + rng.uniform()) / rows;
+                        }
+                        prepared.rng[k] = rng;
+                        prepared.ray[k] = camera.generateRay(x + fx, y + fy);
                     }
-                    ctx.tie = false;
-                    Rgb c = integrator.li(camera.generateRay(x + fx, y + fy), ctx);
-                    tiedSamples += ctx.tie;
-                    sum += clampSample(c, opts);
+                    for (int k = 0; k < n; ++k) {
+                        ctx.rng = prepared.rng[k];
+                        ctx.tie = false;
+                        Rgb c = integrator.li(prepared.ray[k], ctx);
+                        tiedSamples += ctx.tie;
+                        sum += clampSample(c, opts);
+                    }
                 }
                 Rgb batchMean = sum * invSamples;
                 Rgb delta = batchMean - mean;
