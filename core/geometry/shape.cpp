@@ -6,12 +6,7 @@
 
 namespace rt {
 
-SpanList &SpanScratch::acquire() {
-    if (used_ == pool_.size()) pool_.push_back(std::make_unique<SpanList>());
-    SpanList &l = *pool_[used_++];
-    l.clear();
-    return l;
-}
+void SpanScratch::grow() { pool_.push_back(std::make_unique<SpanList>()); }
 
 std::vector<int> &SpanScratch::acquireIndices() {
     if (indicesUsed_ == indexPool_.size()) indexPool_.push_back(std::make_unique<std::vector<int>>());

@@ -15,7 +15,13 @@ namespace rt {
 /// Per-thread scratch for CSG span evaluation, with the work counters the render summary prints.
 class SpanScratch {
   public:
-    SpanList &acquire();
+    SpanList &acquire() {
+        // Inline: a CSG node takes two lists, a leaf's parent one, per ray
+        if (used_ == pool_.size()) grow();
+        SpanList &l = *pool_[used_++];
+        l.clear();
+        return l;
+    }
     void release() { --used_; }
     /// A list of operand indices, for a CSG node with many operands (nodes nest, so a pool).
     std::vector<int> &acquireIndices();
@@ -26,6 +32,7 @@ class SpanScratch {
     double cancelledTie = kInfinity;
 
   private:
+    void grow();
     std::vector<std::unique_ptr<SpanList>> pool_;
     size_t used_ = 0;
     std::vector<std::unique_ptr<std::vector<int>>> indexPool_;
