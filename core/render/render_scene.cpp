@@ -432,12 +432,9 @@ SurfaceInteraction RenderScene::surfaceAt(const Ray &ray, const Hit &hit) const 
 // Both bodies are flattened: the walk, the node test and the visitor inlined into one loop
 // (GCC 12 left the visitor out of line when two walks call it, 6 % slower), and the lanes'
 // AVX2 node test can only be inlined into a function compiled for AVX2.
-__attribute__((flatten)) bool RenderScene::closestHit(const Ray &ray, double tMin, double tMax,
-                                                      Hit *hit, SpanScratch &scratch,
-                                                      const VistaLists *vista) const {
-#if SCADRAY_LANE_SLABS
-    if (lanes_) return closestHitLanes(ray, tMin, tMax, hit, scratch, vista);
-#endif
+__attribute__((flatten)) bool RenderScene::closestHitPlanes(const Ray &ray, double tMin, double tMax,
+                                                            Hit *hit, SpanScratch &scratch,
+                                                            const VistaLists *vista) const {
     return closestHitWith<Bvh::RaySlabs>(ray, tMin, tMax, hit, scratch, vista);
 }
 

@@ -75,7 +75,12 @@ class RenderScene {
         bool tie = false;
     };
     bool closestHit(const Ray &ray, double tMin, double tMax, Hit *hit, SpanScratch &scratch,
-                    const VistaLists *vista = nullptr) const;
+                    const VistaLists *vista = nullptr) const {
+#if SCADRAY_LANE_SLABS
+        if (lanes_) return closestHitLanes(ray, tMin, tMax, hit, scratch, vista);
+#endif
+        return closestHitPlanes(ray, tMin, tMax, hit, scratch, vista);
+    }
     /// Leaf lists for the rays that leave a perspective camera (null for an orthographic one
     /// and for scenes of fewer than CompileOptions::vistaFromObjects objects).
     const VistaLists *vista() const { return vista_.get(); }
@@ -111,7 +116,9 @@ class RenderScene {
     template <typename Slabs>
     bool closestHitWith(const Ray &ray, double tMin, double tMax, Hit *hit, SpanScratch &scratch,
                         const VistaLists *vista) const;
-    /// closestHitWith<Bvh::LaneSlabs>, compiled for AVX2.
+    /// closestHitWith<Bvh::RaySlabs>, and closestHitWith<Bvh::LaneSlabs> compiled for AVX2.
+    bool closestHitPlanes(const Ray &ray, double tMin, double tMax, Hit *hit, SpanScratch &scratch,
+                          const VistaLists *vista) const;
     bool closestHitLanes(const Ray &ray, double tMin, double tMax, Hit *hit, SpanScratch &scratch,
                          const VistaLists *vista) const;
     bool lanes_ = false;
