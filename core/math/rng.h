@@ -24,8 +24,14 @@ class Rng {
 
     /// Seeds from a pixel, a sample index and a user seed.
     static Rng forSample(uint64_t pixelIndex, uint64_t sampleIndex, uint64_t userSeed) {
-        return Rng(mixBits(pixelIndex ^ mixBits(userSeed + 0x9e3779b97f4a7c15ULL)),
-                   mixBits(sampleIndex + 1));
+        return forPixelSample(pixelSeed(pixelIndex, userSeed), sampleIndex);
+    }
+    /// forSample() in two steps, the first shared by a pixel's samples.
+    static uint64_t pixelSeed(uint64_t pixelIndex, uint64_t userSeed) {
+        return mixBits(pixelIndex ^ mixBits(userSeed + 0x9e3779b97f4a7c15ULL));
+    }
+    static Rng forPixelSample(uint64_t pixelSeed, uint64_t sampleIndex) {
+        return Rng(pixelSeed, mixBits(sampleIndex + 1));
     }
 
     void setSequence(uint64_t seed, uint64_t stream) {

@@ -145,7 +145,7 @@ struct Tiles {
     }
 };
 
-Rgb clampSample(Rgb c, const RenderOptions &opts) {
+inline Rgb clampSample(Rgb c, const RenderOptions &opts) {
     if (opts.sampleClamp > 0)
         for (int ch = 0; ch < 3; ++ch) c[ch] = std::clamp(c[ch], 0.0, opts.sampleClamp);
     return c;
@@ -173,7 +173,7 @@ void renderUniform(const Camera &camera, const WhittedIntegrator &integrator,
     runJobs(threads, tiles.count, opts, 0, 1, result.stats, [&](int tile, TraceContext &ctx) {
         CameraRays prepared;
         tiles.forPixels(opts, tile, [&](int x, int y) {
-            uint64_t pixel = uint64_t(y) * opts.width + x;
+            uint64_t pixelSeed = Rng::pixelSeed(uint64_t(y) * opts.width + x, opts.seed);
             // Welford's running mean and sum of squares over batch means
             Rgb mean(0), m2(0);
             int tiedSamples = 0;
@@ -185,7 +185,7 @@ void renderUniform(const Camera &camera, const WhittedIntegrator &integrator,
                         int s = s0 + k;
                         // The sample's stream jitters its stratum of the pixel, then drives
                         // every distributed ray of its path
-                        Rng rng = Rng::forSample(pixel, uint64_t(b) * opts.samplesPerPixel + s, opts.seed);
+                        Rng rng = Rng::forPixelSample(pixelSeed, uint64_t(b) * opts.samplesPerPixel + s);
                         double fx = 0.5, fy = 0.5;
                         if (jitter) {
                             fx = ((s % columns) + rng.uniform()) / columns;
@@ -405,6 +405,7 @@ void renderAdaptive(const Camera &camera, const WhittedIntegrator &integrator, c
             size_t own = size_t(pixel) - size_t(y0) * opts.width;
             size_t firstOwn = size_t(pixel) - size_t(first.firstRow) * opts.width;
             uint64_t key = mixBits(uint64_t(pixel) ^ mixBits(opts.seed ^ 0x5ca1ab1e0ddba11ULL));
+            uint64_t pixelSeed = Rng::pixelSeed(uint64_t(pixel), opts.seed);
             int tied = 0;
             // Sample j of the pixel: the cell's sample exactly as uniform sampling at
             // adaptiveMax draws it
@@ -412,7 +413,7 @@ void renderAdaptive(const Camera &camera, const WhittedIntegrator &integrator, c
                 int column, row;
                 adaptiveCell(j, levels, key, column, row);
                 int cell = row * side + column;
-                ctx.rng = Rng::forSample(uint64_t(pixel), uint64_t(cell), opts.seed);
+                ctx.rng = Rng::forPixelSample(pixelSeed, uint64_t(cell));
                 double fx = (column + ctx.rng.uniform()) / side;
                 double fy = (row + ctx.rng.uniform()) / side;
                 ctx.tie = false;
