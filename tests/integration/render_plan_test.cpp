@@ -76,6 +76,17 @@ double maxDifference(const Image &a, const Image &b) {
     return d;
 }
 
+/// The same picture, ties and ray counts, bit for bit.
+void expectSameRender(const RenderResult &a, const RenderResult &b) {
+    EXPECT_EQ(maxDifference(a.image, b.image), 0);
+    EXPECT_EQ(maxDifference(a.ties, b.ties), 0);
+    EXPECT_EQ(a.stats.camera, b.stats.camera);
+    EXPECT_EQ(a.stats.shadow, b.stats.shadow);
+    EXPECT_EQ(a.stats.reflection, b.stats.reflection);
+    EXPECT_EQ(a.stats.refraction, b.stats.refraction);
+    EXPECT_EQ(a.stats.spanOps, b.stats.spanOps);
+}
+
 TEST(RenderPlan, OnlyTheRaysTheMaterialsNeed) {
     // No transparent material: no refraction, transmission or internal reflection rays; no
     // reflective one: no reflection rays; nothing glossy, frosted or jittered: no distributed
@@ -199,14 +210,7 @@ TEST(RenderPlan, VistaListsNeverChangeThePicture) {
             Compiled with = compileScene(load(e.path().string()), true, true);
             Compiled without = compileScene(load(e.path().string()), true, false);
             EXPECT_EQ(without.rs->vista(), nullptr);
-            RenderResult a = render(*with.rs, 4, 64, 48), b = render(*without.rs, 4, 64, 48);
-            EXPECT_EQ(maxDifference(a.image, b.image), 0);
-            EXPECT_EQ(maxDifference(a.ties, b.ties), 0);
-            EXPECT_EQ(a.stats.camera, b.stats.camera);
-            EXPECT_EQ(a.stats.shadow, b.stats.shadow);
-            EXPECT_EQ(a.stats.reflection, b.stats.reflection);
-            EXPECT_EQ(a.stats.refraction, b.stats.refraction);
-            EXPECT_EQ(a.stats.spanOps, b.stats.spanOps);
+            expectSameRender(render(*with.rs, 4, 64, 48), render(*without.rs, 4, 64, 48));
             listing += with.rs->vista() && with.rs->vista()->cellsListing() > 0;
             ++scenes;
         }
@@ -230,14 +234,7 @@ TEST(RenderPlan, LaneSlabsNeverChangeThePicture) {
             Compiled planes = compileScene(load(e.path().string()), true, vista, false);
             ASSERT_TRUE(lanes.rs->laneSlabs());
             ASSERT_FALSE(planes.rs->laneSlabs());
-            RenderResult a = render(*lanes.rs, 4, 64, 48), b = render(*planes.rs, 4, 64, 48);
-            EXPECT_EQ(maxDifference(a.image, b.image), 0);
-            EXPECT_EQ(maxDifference(a.ties, b.ties), 0);
-            EXPECT_EQ(a.stats.camera, b.stats.camera);
-            EXPECT_EQ(a.stats.shadow, b.stats.shadow);
-            EXPECT_EQ(a.stats.reflection, b.stats.reflection);
-            EXPECT_EQ(a.stats.refraction, b.stats.refraction);
-            EXPECT_EQ(a.stats.spanOps, b.stats.spanOps);
+            expectSameRender(render(*lanes.rs, 4, 64, 48), render(*planes.rs, 4, 64, 48));
             ++scenes;
         }
     }
