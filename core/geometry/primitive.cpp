@@ -10,6 +10,7 @@
 #include "core/geometry/triangle_mesh.h"
 #include "core/ir/prism.h"
 #include "core/math/float_util.h"
+#include "core/math/fma_clone.h"
 #include "core/math/quadratic.h"
 
 namespace rt {
@@ -131,7 +132,10 @@ Bounds3 Cone::objectBounds() const {
     return Bounds3(Vec3(-r, -r, z0_), Vec3(r, r, z1_));
 }
 
-bool Cone::intersect(const Ray &r, PrimitiveSpan *span) const {
+bool Cone::intersect(const Ray &r, PrimitiveSpan *span) const { return lineSpan(r, span); }
+
+SCADRAY_FMA_CLONES
+bool Cone::lineSpan(const Ray &r, PrimitiveSpan *span) const {
     // Clip the line to the slab z0 <= z <= z1
     double ta = -kInfinity, tb = kInfinity;
     int fa = 0, fb = 0;  // side unless a cap bounds the interval

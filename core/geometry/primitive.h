@@ -84,6 +84,9 @@ class Cone final : public Primitive {
 
   private:
     double radiusAt(double z) const { return r1_ + slope_ * (z - z0_); }
+    /// intersect()'s work, in a function GCC may copy for CPUs with FMA (it does not copy a
+    /// virtual one): its std::fma calls are then one instruction each, not calls into libm.
+    bool lineSpan(const Ray &r, PrimitiveSpan *span) const;
 
     double z0_, z1_, r1_, r2_;
     double slope_;  ///< dr/dz
