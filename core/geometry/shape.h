@@ -16,7 +16,7 @@ namespace rt {
 class SpanScratch {
   public:
     SpanList &acquire() {
-        // Inline: a CSG node takes two lists, a leaf's parent one, per ray
+        // Inline: every CSG node a ray evaluates takes two lists
         if (used_ == pool_.size()) grow();
         SpanList &l = *pool_[used_++];
         l.clear();
