@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "core/math/bounds3.h"
@@ -78,6 +79,23 @@ class Bvh {
     void traverseLeavesWith(const uint32_t *leaves, size_t count, const Ray &ray, double tMin,
                             double *tMax, Visit &&visit) const;
 
+#if SCADRAY_LANE_SLABS
+    /// traverseWith<LaneSlabs> for a visitor that only ever lowers *tMax (a closest-hit
+    /// search), testing an interior node's two children side by side (LaneSlabs::hitPair)
+    /// instead of one when the walk enters it and the other when it comes back. A child left
+    /// for later keeps its near distance t0, and is entered then if t0 <= *tMax: the test it
+    /// would have had then gives the same answer, since its far distance does not depend on
+    /// *tMax and passed with a *tMax no smaller. So the same nodes pass, the same items are
+    /// visited in the same order with the same *tMax, and the two tests' latencies overlap.
+    template <typename Visit>
+    void traversePairs(const Ray &ray, double tMin, double *tMax, Visit &&visit) const;
+    /// traverseLeavesWith<LaneSlabs> for such a visitor, testing two leaves side by side; the
+    /// second is visited if it passed and its t0 <= *tMax after the first's visits.
+    template <typename Visit>
+    void traverseLeavesPairs(const uint32_t *leaves, size_t count, const Ray &ray, double tMin,
+                             double *tMax, Visit &&visit) const;
+#endif
+
     /// What the slab test needs of a ray, computed once per traversal: besides the origin and
     /// the reciprocal direction, where in a box each axis' near and far planes lie (in doubles
     /// from min.x), so a node test loads them without a branch on the direction's sign.
@@ -102,6 +120,10 @@ class Bvh {
         bool neg[3];
         SCADRAY_LANES_TARGET explicit LaneSlabs(const Ray &ray);
         SCADRAY_LANES_TARGET bool hit(const Node &node, double tMin, double tMax) const;
+        /// hit() for two nodes at once: bit 0 of the result for `a`, bit 1 for `b`, and each
+        /// box's near distance t0 (the largest of tMin and its near planes' distances).
+        SCADRAY_LANES_TARGET int hitPair(const Node &a, const Node &b, double tMin, double tMax,
+                                         double t0[2]) const;
     };
 #endif
 
@@ -191,6 +213,37 @@ SCADRAY_LANES_TARGET inline bool Bvh::LaneSlabs::hit(const Node &node, double tM
     double t1 = far < tMax ? far : tMax;
     return t0 <= t1;
 }
+
+SCADRAY_LANES_TARGET inline int Bvh::LaneSlabs::hitPair(const Node &a, const Node &b, double tMin,
+                                                        double tMax, double t0[2]) const {
+    // hit()'s lane operations for each box; the selections across the lanes are made for both
+    // boxes at once, in another order, which gives the same largest and smallest values: after
+    // the lane-by-lane selections against tMin and infinity no lane is NaN (where tMin is not)
+    const __m256d tMinV = _mm256_set1_pd(tMin), inf = _mm256_set1_pd(kInfinity);
+    auto lanes = [&](const Node &node, __m256d *nearOut, __m256d *farOut) SCADRAY_LANES_TARGET {
+        const double *planes = &node.bounds.min.x;
+        __m256d lo = _mm256_loadu_pd(planes);
+        __m256d hi = _mm256_blend_pd(_mm256_loadu_pd(planes + 3), lo, 0b1000);
+        __m256d tLo = _mm256_mul_pd(_mm256_sub_pd(lo, o), invDir);
+        __m256d tHi = _mm256_mul_pd(_mm256_sub_pd(hi, o), invDir);
+        *nearOut = _mm256_max_pd(_mm256_blendv_pd(tLo, tHi, negLanes), tMinV);
+        *farOut = _mm256_min_pd(_mm256_blendv_pd(tHi, tLo, negLanes), inf);
+    };
+    __m256d nearA, farA, nearB, farB;
+    lanes(a, &nearA, &farA);
+    lanes(b, &nearB, &farB);
+    // [a0 b0 a2 b2] against [a1 b1 a3 b3], then the halves: [a's, b's]
+    __m256d nearM = _mm256_max_pd(_mm256_unpacklo_pd(nearA, nearB), _mm256_unpackhi_pd(nearA, nearB));
+    __m256d farM = _mm256_min_pd(_mm256_unpacklo_pd(farA, farB), _mm256_unpackhi_pd(farA, farB));
+    __m128d near = _mm_max_pd(_mm256_castpd256_pd128(nearM), _mm256_extractf128_pd(nearM, 1));
+    __m128d far = _mm_min_pd(_mm256_castpd256_pd128(farM), _mm256_extractf128_pd(farM, 1));
+    // far += 2 gamma(3) |far|; then t1 = far < tMax ? far : tMax (minpd's rule)
+    __m128d absFar = _mm_andnot_pd(_mm_set1_pd(-0.0), far);
+    far = _mm_add_pd(far, _mm_mul_pd(_mm_set1_pd(2 * gamma(3)), absFar));
+    __m128d t1 = _mm_min_pd(far, _mm_set1_pd(tMax));
+    _mm_storeu_pd(t0, near);
+    return _mm_movemask_pd(_mm_cmp_pd(near, t1, _CMP_LE_OQ));
+}
 #endif
 
 template <typename Slabs, typename Visit>
@@ -252,5 +305,71 @@ void Bvh::traverseLeavesWith(const uint32_t *leaves, size_t count, const Ray &ra
             if (visit(order_[node.offset + i], tMax)) return;
     }
 }
+
+#if SCADRAY_LANE_SLABS
+template <typename Visit>
+void Bvh::traversePairs(const Ray &ray, double tMin, double *tMax, Visit &&visit) const {
+    if (nodes_.empty()) return;
+    const LaneSlabs slabs(ray);
+    if (!slabs.hit(nodes_[0], tMin, *tMax)) return;
+    uint32_t stack[128];
+    double stackT0[128];  // the near distance of each node left for later
+    int top = 0;
+    uint32_t current = 0;  // a node whose box passed
+    while (true) {
+        const Node &node = nodes_[current];
+        if (node.count > 0) {
+            for (uint32_t i = 0; i < node.count; ++i)
+                if (visit(order_[node.offset + i], tMax)) return;
+        } else {
+            uint32_t first = current + 1, second = node.offset;
+            if (slabs.neg[node.axis]) std::swap(first, second);
+            double t0[2];
+            int pass = slabs.hitPair(nodes_[first], nodes_[second], tMin, *tMax, t0);
+            if (pass & 1) {
+                if (pass & 2) {
+                    stack[top] = second;
+                    stackT0[top++] = t0[1];
+                }
+                current = first;
+                continue;
+            }
+            if (pass & 2) {
+                current = second;
+                continue;
+            }
+        }
+        // The nearest node left for later that still passes
+        do {
+            if (top == 0) return;
+            --top;
+        } while (!(stackT0[top] <= *tMax));
+        current = stack[top];
+    }
+}
+
+template <typename Visit>
+void Bvh::traverseLeavesPairs(const uint32_t *leaves, size_t count, const Ray &ray, double tMin,
+                              double *tMax, Visit &&visit) const {
+    const LaneSlabs slabs(ray);
+    size_t l = 0;
+    for (; l + 1 < count; l += 2) {
+        double t0[2];
+        int pass = slabs.hitPair(nodes_[leaves[l]], nodes_[leaves[l + 1]], tMin, *tMax, t0);
+        for (int k = 0; k < 2; ++k) {
+            if (!(pass >> k & 1) || !(t0[k] <= *tMax)) continue;
+            const Node &node = nodes_[leaves[l + k]];
+            for (uint32_t i = 0; i < node.count; ++i)
+                if (visit(order_[node.offset + i], tMax)) return;
+        }
+    }
+    if (l < count) {
+        const Node &node = nodes_[leaves[l]];
+        if (!slabs.hit(node, tMin, *tMax)) return;
+        for (uint32_t i = 0; i < node.count; ++i)
+            if (visit(order_[node.offset + i], tMax)) return;
+    }
+}
+#endif
 
 }  // namespace rt

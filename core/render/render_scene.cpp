@@ -475,10 +475,24 @@ bool RenderScene::closestHitWith(const Ray &ray, double tMin, double tMax, Hit *
         return false;
     };
     const VistaLists::Cell *cell = vista ? vista->find(ray, tMin, tMax) : nullptr;
-    if (cell)
+    // The visitor only lowers `closest`, so the lanes' walks may test two boxes side by side
+#if SCADRAY_LANE_SLABS
+    constexpr bool paired = std::is_same_v<Slabs, Bvh::LaneSlabs>;
+#else
+    constexpr bool paired = false;
+#endif
+    if constexpr (paired) {
+#if SCADRAY_LANE_SLABS
+        if (cell)
+            bvh_.traverseLeavesPairs(cell->leaves, cell->count, ray, tMin, &closest, visit);
+        else
+            bvh_.traversePairs(ray, tMin, &closest, visit);
+#endif
+    } else if (cell) {
         bvh_.traverseLeavesWith<Slabs>(cell->leaves, cell->count, ray, tMin, &closest, visit);
-    else
+    } else {
         bvh_.traverseWith<Slabs>(ray, tMin, &closest, visit);
+    }
     if (!bestObject || best.t >= tMax) {
         hit->tie = cancelled < tMax;  // a miss can still pass coincident faces
         return false;

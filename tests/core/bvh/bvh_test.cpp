@@ -137,7 +137,7 @@ TEST(Bvh, LaneSlabsDecideEveryNodeAsRaySlabs) {
     auto pick = [&](std::initializer_list<double> values) {
         return *(values.begin() + static_cast<size_t>(rng.uniform() * values.size()));
     };
-    long long tested = 0, hits = 0;
+    long long tested = 0, hits = 0, laterTested = 0;
     for (double scale : {1e-6, 1.0, 1e6}) {
         for (int i = 0; i < 4000; ++i) {
             Vec3 o = Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) * (20 * scale);
@@ -151,6 +151,8 @@ TEST(Bvh, LaneSlabsDecideEveryNodeAsRaySlabs) {
             Ray ray(o, d);
             Bvh::RaySlabs one(ray);
             Bvh::LaneSlabs lanes(ray);
+            Bvh::Node previous;
+            previous.bounds = Bounds3(o - Vec3(scale), o + Vec3(scale));
             for (int k = 0; k < 16; ++k) {
                 Bvh::Node node;
                 Vec3 lo, hi;
@@ -184,6 +186,25 @@ TEST(Bvh, LaneSlabsDecideEveryNodeAsRaySlabs) {
                     << d.toString() << " tMin " << tMin << " tMax " << tMax;
                 ++tested;
                 hits += expected;
+                // Two nodes side by side: the same answers, and a passing node's t0 gives the
+                // answer of its test with any smaller tMax (the paired walks' later entry)
+                double t0[2];
+                int pair = lanes.hitPair(previous, node, tMin, tMax, t0);
+                ASSERT_EQ(pair, int(one.hit(previous, tMin, tMax)) | int(expected) << 1)
+                    << "box " << lo.toString() << " " << hi.toString() << " tMin " << tMin << " tMax " << tMax;
+                const Bvh::Node *pairNodes[2] = {&previous, &node};
+                for (int p = 0; p < 2; ++p) {
+                    if (!(pair >> p & 1)) continue;
+                    for (double later : {tMax, t0[p], std::nextafter(t0[p], -kInfinity),
+                                         std::nextafter(t0[p], kInfinity), tMin,
+                                         t0[p] + (tMax - t0[p]) * rng.uniform()}) {
+                        if (!(later <= tMax)) continue;
+                        ASSERT_EQ(t0[p] <= later, one.hit(*pairNodes[p], tMin, later))
+                            << "tMin " << tMin << " tMax " << tMax << " later " << later;
+                        ++laterTested;
+                    }
+                }
+                previous = node;
             }
             for (int a = 0; a < 3; ++a) ASSERT_EQ(lanes.neg[a], one.neg[a]);
         }
@@ -191,9 +212,11 @@ TEST(Bvh, LaneSlabsDecideEveryNodeAsRaySlabs) {
     // Both answers occur often
     EXPECT_GT(hits, tested / 10);
     EXPECT_LT(hits, tested - tested / 10);
+    EXPECT_GT(laterTested, tested);
 }
 
-// And a whole walk with the lanes makes the same visits, in the same order, with the same tMax.
+// And a whole walk with the lanes makes the same visits, in the same order, with the same tMax;
+// so does the walk that tests two children at once (for visitors that only lower tMax).
 TEST(Bvh, LaneSlabsWalkVisitsAsTheOnePlaneWalk) {
     if (!__builtin_cpu_supports("avx2")) GTEST_SKIP() << "this machine has no AVX2: the lanes are not used";
     Rng rng(43);
@@ -226,6 +249,11 @@ TEST(Bvh, LaneSlabsWalkVisitsAsTheOnePlaneWalk) {
                 bvh.traverseWith<Bvh::LaneSlabs>(r, -kInfinity, tMax, v);
             });
             ASSERT_EQ(lanes, one) << "scene " << scene << " ray " << i;
+            // The walk that tests two children side by side
+            auto pairs = walk([&](const Ray &r, double *tMax, auto &&v) {
+                bvh.traversePairs(r, -kInfinity, tMax, v);
+            });
+            ASSERT_EQ(pairs, one) << "scene " << scene << " ray " << i;
         }
     }
 }

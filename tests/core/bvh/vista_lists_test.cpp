@@ -103,6 +103,16 @@ TEST(VistaLists, SameVisitsAsTheWholeTree) {
                 bvh.traverseLeaves(cell->leaves, cell->count, ray, 0, &tListed, listed);
                 ASSERT_EQ(whole.visits, listed.visits) << "direction " << d.x << " " << d.y << " " << d.z;
                 ASSERT_EQ(tWhole, tListed);
+#if SCADRAY_LANE_SLABS
+                // Two listed leaves tested side by side (RenderScene::closestHit with AVX2)
+                if (__builtin_cpu_supports("avx2")) {
+                    Recorder paired{boxes, ray, 0, {}};
+                    double tPaired = kInfinity;
+                    bvh.traverseLeavesPairs(cell->leaves, cell->count, ray, 0, &tPaired, paired);
+                    ASSERT_EQ(whole.visits, paired.visits) << "direction " << d.x << " " << d.y << " " << d.z;
+                    ASSERT_EQ(tWhole, tPaired);
+                }
+#endif
             }
         }
     }
