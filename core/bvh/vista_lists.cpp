@@ -15,10 +15,19 @@ namespace {
 /// widening of 1e-9 of a face keeps the exact direction inside the cell's cone.
 constexpr double kAngularMargin = 1e-9;
 
+std::atomic<uint64_t> nextId{1};
+
+/// The cell this thread found last, and whose lists it is (VistaLists::id_)
+struct Recent {
+    uint64_t owner = 0;
+    const VistaLists::Cell *cell = nullptr;
+};
+thread_local Recent recent;
+
 }  // namespace
 
 VistaLists::VistaLists(const Bvh &bvh, const Vec3 &apex, int resolution)
-    : bvh_(bvh), apex_(apex), n_(resolution) {
+    : bvh_(bvh), id_(nextId.fetch_add(1, std::memory_order_relaxed)), apex_(apex), n_(resolution) {
     if (bvh.empty() || n_ < 2 || n_ % 2 != 0 || !apex.isFinite()) return;
     // Every box must be finite and not empty: an empty or unbounded one gives NaN slab
     // distances, where the slab test is not monotonic and a leaf's box could pass where its
@@ -80,6 +89,14 @@ const VistaLists::Cell *VistaLists::build(int face, int i, int j) const {
 
     auto cell = std::make_unique<Cell>();
     cell->octant = static_cast<uint8_t>(octant);
+    cell->k = static_cast<uint8_t>(k);
+    cell->a = static_cast<uint8_t>(a);
+    cell->b = static_cast<uint8_t>(b);
+    cell->s = s;
+    cell->a0 = -1 + step * i;
+    cell->a1 = -1 + step * (i + 1);
+    cell->b0 = -1 + step * j;
+    cell->b1 = -1 + step * (j + 1);
     if (leaves.size() > static_cast<size_t>(kMaxLeaves)) {
         cell->whole = true;
     } else {
@@ -104,6 +121,25 @@ const VistaLists::Cell *VistaLists::find(const Ray &ray, double tMin, double tMa
     if (!(m.x > kTiny && m.y > kTiny && m.z > kTiny && m.x < kInfinity && m.y < kInfinity &&
           m.z < kInfinity))
         return nullptr;
+    // The thread's last cell, where its cone holds the direction: any cell whose cone holds it
+    // lists every leaf the ray can meet
+    const Cell *cell;
+    if (recent.owner == id_ && recent.cell->holds(d)) {
+        cell = recent.cell;
+    } else {
+        cell = place(d);
+        recent = {id_, cell};
+    }
+    // A direction rounding put into a cell of the next octant walks the tree (finite nonzero
+    // components have their reciprocals' signs, which order traverse()'s children; their sign
+    // bits are the comparisons d < 0)
+    int octant = std::signbit(d.x) | std::signbit(d.y) << 1 | std::signbit(d.z) << 2;
+    if (cell->whole || cell->octant != octant) return nullptr;
+    return cell;
+}
+
+const VistaLists::Cell *VistaLists::place(const Vec3 &d) const {
+    Vec3 m = abs(d);
     // The face: the axis where the direction is largest, and its sign; then the cell by the
     // face coordinates d[a] / |d[k]|
     int k;
@@ -120,12 +156,7 @@ const VistaLists::Cell *VistaLists::find(const Ray &ray, double tMin, double tMa
     int i = std::clamp(static_cast<int>(da * scale + half), 0, n_ - 1);
     int j = std::clamp(static_cast<int>(db * scale + half), 0, n_ - 1);
     const Cell *cell = cells_[(static_cast<size_t>(face) * n_ + i) * n_ + j].load(std::memory_order_acquire);
-    if (!cell) cell = build(face, i, j);
-    // A direction rounding put into a cell of the next octant walks the tree (finite nonzero
-    // components have their reciprocals' signs, which order traverse()'s children)
-    int octant = (d.x < 0) | (d.y < 0) << 1 | (d.z < 0) << 2;
-    if (cell->whole || cell->octant != octant) return nullptr;
-    return cell;
+    return cell ? cell : build(face, i, j);
 }
 
 size_t VistaLists::cellsListing() const {

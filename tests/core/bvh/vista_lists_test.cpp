@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <thread>
 #include <vector>
 
@@ -150,6 +151,68 @@ TEST(VistaLists, TinyBoxesOnTheBordersOfCells) {
             ASSERT_EQ(whole.visits, listed.visits) << "direction " << d.x << " " << d.y << " " << d.z;
         }
         EXPECT_GT(served, 200);
+    }
+}
+
+// A thread tries the cell it found last first. Rays swept in small steps across many cells'
+// borders, on four faces, there and back, are mostly served by the cell of the ray before;
+// asked of two lists in turn (other apexes, other trees, the same directions), each serves
+// only its own cells. Every served ray makes the whole tree's visits.
+TEST(VistaLists, LastCellServesOnlyRaysItHolds) {
+    Rng rng(11);
+    for (double scale : {1e-6, 1.0, 1e6}) {
+        SCOPED_TRACE("scale " + std::to_string(scale));
+        struct Lists {
+            Vec3 apex;
+            std::vector<Bounds3> boxes;
+            std::unique_ptr<Bvh> bvh;
+            std::unique_ptr<VistaLists> vista;
+        };
+        Lists lists[2];
+        for (int l = 0; l < 2; ++l) {
+            Lists &L = lists[l];
+            L.apex = Vec3(l ? 1.5 : -0.5, l ? -2 : 0.25, l ? 0.75 : 1) * scale;
+            L.boxes = randomBoxes(rng, 20, scale, L.apex);
+            // Tiny boxes on the sweep's path, which a neighbouring cell would not list
+            for (int i = 0; i < 300; ++i) {
+                double t = rng.uniform() * 2 * kPi;
+                Vec3 d(std::cos(t), 0.8 * std::sin(t), 0.3 + 0.9 * std::sin(3 * t));
+                Vec3 c = L.apex + normalize(d) * (rng.uniform() * 8 + 2) * scale;
+                double h = (l ? 1e-4 : 3e-3) * scale;
+                L.boxes.push_back(Bounds3(c - Vec3(h), c + Vec3(h)));
+            }
+            L.bvh = std::make_unique<Bvh>(L.boxes);
+            L.vista = std::make_unique<VistaLists>(*L.bvh, L.apex, 64);
+            ASSERT_TRUE(L.vista->enabled());
+        }
+        size_t served = 0, rays = 0, sameCell = 0;
+        const VistaLists::Cell *before[2] = {nullptr, nullptr};
+        // Once round and back, so the sweep leaves cells across each of their four sides; the
+        // lists take turns every 100 steps
+        for (int run = 0; run < 400; ++run) {
+            for (int l = 0; l < 2; ++l) {
+                const Lists &L = lists[l];
+                for (int step = run * 100; step < run * 100 + 100; ++step) {
+                    double t = (step < 20000 ? step : 40000 - step) * (2 * kPi / 20000);
+                    Ray ray(L.apex, normalize(Vec3(std::cos(t), 0.8 * std::sin(t), 0.3 + 0.9 * std::sin(3 * t))));
+                    ++rays;
+                    Recorder whole{L.boxes, ray, 0, {}}, listed{L.boxes, ray, 0, {}};
+                    double tWhole = kInfinity, tListed = kInfinity;
+                    L.bvh->traverse(ray, 0, &tWhole, whole);
+                    const VistaLists::Cell *cell = L.vista->find(ray, 0, kInfinity);
+                    if (!cell) continue;
+                    ++served;
+                    sameCell += cell == before[l];
+                    before[l] = cell;
+                    ASSERT_TRUE(cell->holds(ray.d));
+                    L.bvh->traverseLeaves(cell->leaves, cell->count, ray, 0, &tListed, listed);
+                    ASSERT_EQ(whole.visits, listed.visits) << "list " << l << " step " << step;
+                    ASSERT_EQ(tWhole, tListed);
+                }
+            }
+        }
+        EXPECT_GT(served, rays / 2);
+        EXPECT_GT(sameCell, served * 9 / 10);  // the sweep stays in a cell for many steps
     }
 }
 
