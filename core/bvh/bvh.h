@@ -124,6 +124,12 @@ class Bvh {
         /// box's near distance t0 (the largest of tMin and its near planes' distances).
         SCADRAY_LANES_TARGET int hitPair(const Node &a, const Node &b, double tMin, double tMax,
                                          double t0[2]) const;
+
+      private:
+        /// A box's near and far distances lane by lane, each near one no less than tMin and each
+        /// far one no more than infinity (the fourth lane: tMin and infinity).
+        SCADRAY_LANES_TARGET void distances(const Node &node, double tMin, __m256d *nearOut,
+                                            __m256d *farOut) const;
     };
 #endif
 
@@ -188,7 +194,8 @@ SCADRAY_LANES_TARGET inline Bvh::LaneSlabs::LaneSlabs(const Ray &ray) {
     neg[0] = ix < 0, neg[1] = iy < 0, neg[2] = iz < 0;
 }
 
-SCADRAY_LANES_TARGET inline bool Bvh::LaneSlabs::hit(const Node &node, double tMin, double tMax) const {
+SCADRAY_LANES_TARGET inline void Bvh::LaneSlabs::distances(const Node &node, double tMin,
+                                                           __m256d *nearOut, __m256d *farOut) const {
     static_assert(offsetof(Node, bounds) == 0 && sizeof(Node) >= 7 * sizeof(double),
                   "LaneSlabs reads 7 doubles from a node: its box, then a word of the node");
     // min.xyz and max.x; max.xyz and the node's offset and count, whose lane takes max.x
@@ -201,10 +208,16 @@ SCADRAY_LANES_TARGET inline bool Bvh::LaneSlabs::hit(const Node &node, double tM
     __m256d tHi = _mm256_mul_pd(_mm256_sub_pd(hi, o), invDir);
     __m256d nearV = _mm256_blendv_pd(tLo, tHi, negLanes), farV = _mm256_blendv_pd(tHi, tLo, negLanes);
     // RaySlabs::hit's selections lane by lane (max and min give their second operand where
-    // the first is NaN), then across the lanes: the same largest near distance and smallest
-    // far one, up to the sign of a zero, which t0 <= t1 does not see
-    __m256d t0V = _mm256_max_pd(nearV, _mm256_set1_pd(tMin));
-    __m256d farL = _mm256_min_pd(farV, _mm256_set1_pd(kInfinity));
+    // the first is NaN)
+    *nearOut = _mm256_max_pd(nearV, _mm256_set1_pd(tMin));
+    *farOut = _mm256_min_pd(farV, _mm256_set1_pd(kInfinity));
+}
+
+SCADRAY_LANES_TARGET inline bool Bvh::LaneSlabs::hit(const Node &node, double tMin, double tMax) const {
+    __m256d t0V, farL;
+    distances(node, tMin, &t0V, &farL);
+    // Then across the lanes: the same largest near distance and smallest far one as
+    // RaySlabs::hit, up to the sign of a zero, which t0 <= t1 does not see
     __m128d t0xy = _mm256_castpd256_pd128(t0V), farxy = _mm256_castpd256_pd128(farL);
     __m128d t0m = _mm_max_sd(_mm_max_sd(t0xy, _mm_unpackhi_pd(t0xy, t0xy)), _mm256_extractf128_pd(t0V, 1));
     __m128d farm = _mm_min_sd(_mm_min_sd(farxy, _mm_unpackhi_pd(farxy, farxy)), _mm256_extractf128_pd(farL, 1));
@@ -219,19 +232,9 @@ SCADRAY_LANES_TARGET inline int Bvh::LaneSlabs::hitPair(const Node &a, const Nod
     // hit()'s lane operations for each box; the selections across the lanes are made for both
     // boxes at once, in another order, which gives the same largest and smallest values: after
     // the lane-by-lane selections against tMin and infinity no lane is NaN (where tMin is not)
-    const __m256d tMinV = _mm256_set1_pd(tMin), inf = _mm256_set1_pd(kInfinity);
-    auto lanes = [&](const Node &node, __m256d *nearOut, __m256d *farOut) SCADRAY_LANES_TARGET {
-        const double *planes = &node.bounds.min.x;
-        __m256d lo = _mm256_loadu_pd(planes);
-        __m256d hi = _mm256_blend_pd(_mm256_loadu_pd(planes + 3), lo, 0b1000);
-        __m256d tLo = _mm256_mul_pd(_mm256_sub_pd(lo, o), invDir);
-        __m256d tHi = _mm256_mul_pd(_mm256_sub_pd(hi, o), invDir);
-        *nearOut = _mm256_max_pd(_mm256_blendv_pd(tLo, tHi, negLanes), tMinV);
-        *farOut = _mm256_min_pd(_mm256_blendv_pd(tHi, tLo, negLanes), inf);
-    };
     __m256d nearA, farA, nearB, farB;
-    lanes(a, &nearA, &farA);
-    lanes(b, &nearB, &farB);
+    distances(a, tMin, &nearA, &farA);
+    distances(b, tMin, &nearB, &farB);
     // [a0 b0 a2 b2] against [a1 b1 a3 b3], then the halves: [a's, b's]
     __m256d nearM = _mm256_max_pd(_mm256_unpacklo_pd(nearA, nearB), _mm256_unpackhi_pd(nearA, nearB));
     __m256d farM = _mm256_min_pd(_mm256_unpacklo_pd(farA, farB), _mm256_unpackhi_pd(farA, farB));
