@@ -244,17 +244,32 @@ Rgb WhittedIntegrator::localColour(const Ray &ray, const SurfaceInteraction &si,
             if (!(dist > 0)) continue;
             L = toLight / dist;
         }
-        // A light behind the surface, as seen from the viewer, does nothing, and a shadowless
-        // one needs no shadow ray: the plan casts none. Without it (--no-plan, to measure
-        // what the plan saves) a shadow ray goes to every light, as in a naive ray tracer,
-        // and its answer is thrown away.
+        // A light behind the surface, as seen from the viewer, does nothing. Nor does one
+        // whose highlight POV-Ray's test leaves out on a surface with no diffuse or specular
+        // term (clear glass with a phong highlight): the phong cosine is known before the
+        // shadow ray. Neither gets a shadow ray from the plan, nor does a shadowless light;
+        // but a shadow ray that would draw from the pixel's random numbers (a jittered area
+        // light, or a blurred split's one-ray shadow) is cast, so that they stay the same.
+        // Without the plan (--no-plan, to measure what it saves) a shadow ray goes to every
+        // light, as in a naive ray tracer, and its answer is thrown away.
         double cosNL = dot(N, L);
-        if (!scene_.options().plan && (cosNL < kPovEpsilon || light.shadowless) && dist > 0) {
+        bool shows = cosNL >= kPovEpsilon;
+        bool phongLit = false;
+        double phongK = 0;
+        if (shows && f.phong > 0) {
+            Vec3 r = ray.d - N * (2 * dot(ray.d, N));
+            phongK = dot(r, L);
+            // POV-Ray skips tiny phong terms of tight highlights
+            phongLit = phongK > 0 && !(f.phongSize >= 60 && phongK <= 0.0008);
+        }
+        if (shows && f.diffuse == 0 && f.specular == 0 && !phongLit)
+            shows = drawsRandomNumbers(li, blurred);
+        if (!scene_.options().plan && (!shows || light.shadowless) && dist > 0) {
             bool tie = ctx.tie;  // nor may it mark the pixel
             (void)shadowFilter(si, L, dist, stack, ctx);
             ctx.tie = tie;
         }
-        if (cosNL < kPovEpsilon) continue;
+        if (!shows) continue;
         Rgb lc = light.color * lightAttenuation(li, L, dist);
         if (!light.shadowless && dist > 0)
             lc = light.area ? areaShadow(si, li, lc, stack, blurred, ctx)
@@ -268,13 +283,7 @@ Rgb WhittedIntegrator::localColour(const Ray &ray, const SurfaceInteraction &si,
         }
         if (light.shadowless) continue;  // fill lights give no highlights
         Rgb hc = highlightColour(f, lc, c, cosNL);
-        if (f.phong > 0) {
-            Vec3 r = ray.d - N * (2 * dot(ray.d, N));
-            double k = dot(r, L);
-            // POV-Ray skips tiny phong terms of tight highlights
-            if (k > 0 && !(f.phongSize >= 60 && k <= 0.0008))
-                colour += hc * (f.phong * std::pow(k, f.phongSize));
-        }
+        if (phongLit) colour += hc * (f.phong * std::pow(phongK, f.phongSize));
         if (f.specular > 0) {
             Vec3 h = (L - ray.d) * 0.5;
             double hl = length(h);
@@ -298,6 +307,11 @@ double WhittedIntegrator::lightAttenuation(size_t index, const Vec3 &L, double d
         if (k.cosRadius > 0 && cosTheta < k.cosRadius) att *= cubicSpline(k.cosFalloff, k.cosRadius, cosTheta);
     }
     return att * lightFade(light, dist);
+}
+
+bool WhittedIntegrator::drawsRandomNumbers(size_t index, bool blurred) const {
+    const ir::Light &light = scene_.lights()[index];
+    return light.area && (light.areaLight.jitter || (blurred && areaWeights_[index].fixed()));
 }
 
 Rgb WhittedIntegrator::areaShadow(const SurfaceInteraction &si, size_t index, const Rgb &lc,

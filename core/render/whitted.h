@@ -78,6 +78,9 @@ class WhittedIntegrator {
     /// point drawn by weight instead: the same expectation for a fraction of the rays.
     Rgb areaShadow(const SurfaceInteraction &si, size_t index, const Rgb &lc,
                    const InteriorStack &stack, bool blurred, TraceContext &ctx) const;
+    /// Whether light `index`'s shadow rays at a hit take random numbers from the pixel's
+    /// stream (a jittered area light, or one-ray area shadows below a blurred split).
+    bool drawsRandomNumbers(size_t index, bool blurred) const;
     /// n_transmitted / n_incident at a surface of `object`, as POV-Ray's ComputeRelativeIOR.
     double relativeIor(const Shape *object, const InteriorStack &stack) const;
     const ir::Interior &interiorOf(const Shape *object) const {

@@ -125,6 +125,40 @@ TEST(RenderPlan, ShadowlessAndBackFacingLightsCastNoShadowRays) {
     EXPECT_GT(render(*lit.rs).stats.shadow, 0);
 }
 
+TEST(RenderPlan, ClearGlassCastsShadowRaysOnlyWhereItsHighlightShows) {
+    // A surface with no diffuse or specular term shows a light only through its phong
+    // highlight, so where POV-Ray's test leaves the highlight out the plan casts no shadow ray
+    // towards it. The same scene with diffuse 1e-300 (a term that rounds away in every
+    // colour, but makes every shadow ray count) casts them all: the picture is the same within
+    // that term, so nothing the skipped rays found was needed. The jittered area light's
+    // shadow rays draw from the pixel's random numbers and must still be cast, or every later
+    // sample of the pixel would move.
+    auto glass = [](const std::string &diffuse, const std::string &light) {
+        return compileScene(
+            loadText("camera(location=[0, -9, 4], look_at=[0, 0, 1]);\n" + light +
+                     "material(color=\"white\") translate([-6, -6, -1]) cube([12, 12, 1]);\n"
+                     "material(color=[1, 1, 1], transmit=0.95, ior=1.5, ambient=0, diffuse=" +
+                     diffuse +
+                     ", phong=0.8, phong_size=200) translate([0, 0, 1.5]) sphere(1.5);\n"),
+            true);
+    };
+    const std::string point = "point_light([-4, -6, 8]);\n";
+    const std::string jittered =
+        "area_light([3, -5, 7], axis1=[1, 0, 0], axis2=[0, 1, 0], samples=[3, 3], jitter=true);\n";
+    for (const std::string &light : {point, jittered}) {
+        SCOPED_TRACE(light);
+        Compiled skipping = glass("0", light), casting = glass("1e-300", light);
+        RenderResult a = render(*skipping.rs, 4, 64, 48), b = render(*casting.rs, 4, 64, 48);
+        EXPECT_LT(maxDifference(a.image, b.image), 1e-200);
+        EXPECT_EQ(a.stats.camera, b.stats.camera);
+        EXPECT_EQ(a.stats.refraction, b.stats.refraction);
+        if (light == point)
+            EXPECT_LT(a.stats.shadow, b.stats.shadow);
+        else
+            EXPECT_EQ(a.stats.shadow, b.stats.shadow);
+    }
+}
+
 TEST(RenderPlan, SharpSceneIsTheSameAtOneAndSixteenSamplesAwayFromEdges) {
     Compiled c = compileScene(load(scene("csg_part.scad")), true);
     RenderPlan plan = makePlan(*c.rs);
