@@ -91,8 +91,8 @@ void CsgShape::spans(const Ray &ray, double tMin, double tMax, SpanList &out,
 // state at t depends only on its operands' states at t. So a subtree whose bounds the ray misses
 // within the window contributes nothing, and an intersection or difference can narrow the window
 // of later operands to the extent of its result so far.
-void CsgShape::evaluate(int index, const Ray &ray, const Vec3 &invDir, double w0, double w1,
-                        SpanList &out, SpanScratch &scratch) const {
+inline void CsgShape::evaluate(int index, const Ray &ray, const Vec3 &invDir, double w0,
+                               double w1, SpanList &out, SpanScratch &scratch) const {
     const Node &node = nodes_[index];
     out.clear();
     if (prune_ && !node.bounds.intersectP(ray, invDir, w0, w1)) {
@@ -103,6 +103,11 @@ void CsgShape::evaluate(int index, const Ray &ray, const Vec3 &invDir, double w0
         node.leaf->lineSpans(ray, out);
         return;
     }
+    evaluateOperation(node, ray, invDir, w0, w1, out, scratch);
+}
+
+void CsgShape::evaluateOperation(const Node &node, const Ray &ray, const Vec3 &invDir, double w0,
+                                 double w1, SpanList &out, SpanScratch &scratch) const {
     ScratchList operand(scratch), merged(scratch);
     bool first = true;
     // Merges one operand into `out`; false when the result is settled (pruned)

@@ -61,6 +61,10 @@ class CsgShape final : public Shape {
     /// `invDir`: the reciprocal of ray.d, computed once per ray for every bounds test.
     void evaluate(int node, const Ray &ray, const Vec3 &invDir, double w0, double w1,
                   SpanList &out, SpanScratch &scratch) const;
+    /// evaluate() for a boolean node whose bounds the ray meets within [w0, w1]: its operands
+    /// merged. Out of line, so a leaf's evaluation (most calls) does not set up its frame.
+    void evaluateOperation(const Node &node, const Ray &ray, const Vec3 &invDir, double w0,
+                           double w1, SpanList &out, SpanScratch &scratch) const;
     bool insideNode(int node, const Vec3 &p) const;
     /// Whether p is inside any operand in the BVH of `node` (only those whose bounds hold p
     /// are tested).
