@@ -34,6 +34,15 @@ int CsgShape::addOp(Op op, std::vector<int> children) {
         case Op::Leaf: break;
     }
     n.children = std::move(children);
+    if (op != Op::Leaf && n.children.size() == 2) {
+        auto convexLeaf = [&](int c) -> const PrimitiveInstance * {
+            const auto *p = dynamic_cast<const PrimitiveInstance *>(nodes_[c].leaf);
+            return p && p->convex() ? p : nullptr;
+        };
+        n.convexA = convexLeaf(n.children[0]);
+        n.convexB = convexLeaf(n.children[1]);
+        if (!n.convexA || !n.convexB) n.convexA = n.convexB = nullptr;
+    }
     n.bvhFirst = op == Op::Difference ? 1 : 0;
     if ((op == Op::Union || op == Op::Difference) &&
         n.children.size() >= n.bvhFirst + kCsgBvhMinOperands) {
@@ -103,7 +112,57 @@ inline void CsgShape::evaluate(int index, const Ray &ray, const Vec3 &invDir, do
         node.leaf->lineSpans(ray, out);
         return;
     }
+    if (node.convexA && prune_) {
+        evaluateConvexPair(node, ray, invDir, w0, w1, out, scratch);
+        return;
+    }
     evaluateOperation(node, ray, invDir, w0, w1, out, scratch);
+}
+
+// evaluateOperation's steps for two operands with one span each at most, written out: the first
+// operand over the window, the window narrowed to it (not for a union), the second operand over
+// that, then their merge, with the same bounds tests, pruning rules and counters
+void CsgShape::evaluateConvexPair(const Node &node, const Ray &ray, const Vec3 &invDir, double w0,
+                                  double w1, SpanList &out, SpanScratch &scratch) const {
+    const Node &a = nodes_[node.children[0]], &b = nodes_[node.children[1]];
+    Span sa, sb;
+    bool hasA = false, hasB = false;
+    if (!a.bounds.intersectP(ray, invDir, w0, w1))
+        ++scratch.prunedSubtrees;
+    else
+        hasA = node.convexA->lineSpan(ray, &sa);
+    if (node.op != Op::Union) {
+        if (!hasA) {
+            // Pruning rule: nothing left of the minuend or the intersection so far
+            ++scratch.prunedSubtrees;
+            return;
+        }
+        w0 = std::max(w0, sa.in.t - tieEpsilon(ray.o, sa.in.t));
+        w1 = std::min(w1, sa.out.t + tieEpsilon(ray.o, sa.out.t));
+    }
+    if (!b.bounds.intersectP(ray, invDir, w0, w1))
+        ++scratch.prunedSubtrees;
+    else
+        hasB = node.convexB->lineSpan(ray, &sb);
+    if (!hasB) {
+        // An intersection with nothing is empty; a union or difference with nothing is unchanged
+        if (hasA && node.op != Op::Intersection) out.push_back(sa);
+        return;
+    }
+    if (!hasA) {  // only a union gets here
+        out.push_back(sb);
+        return;
+    }
+    SpanOp op = node.op == Op::Union          ? SpanOp::Union
+                : node.op == Op::Intersection ? SpanOp::Intersection
+                                              : SpanOp::Difference;
+    ++scratch.spanOps;
+    double tieEps = tieEpsilon(ray.o, sa.in.t);
+    if (combineSeparateSpans(sa, sb, op, out, tieEps)) return;
+    ScratchList listA(scratch), listB(scratch);
+    listA->push_back(sa);
+    listB->push_back(sb);
+    combineSpansBySweep(*listA, *listB, op, out, tieEps, &scratch.cancelledTie);
 }
 
 void CsgShape::evaluateOperation(const Node &node, const Ray &ray, const Vec3 &invDir, double w0,

@@ -56,6 +56,9 @@ class CsgShape final : public Shape {
         /// only those it reaches instead of testing every operand's bounds.
         std::unique_ptr<WideBvh> bvh;
         size_t bvhFirst = 0;
+        /// A boolean node of exactly two operands, each a convex primitive (a chamfer, a
+        /// boss, a hole through a plate): their one span each, merged without span lists.
+        const PrimitiveInstance *convexA = nullptr, *convexB = nullptr;
     };
 
     /// `invDir`: the reciprocal of ray.d, computed once per ray for every bounds test.
@@ -65,6 +68,10 @@ class CsgShape final : public Shape {
     /// merged. Out of line, so a leaf's evaluation (most calls) does not set up its frame.
     void evaluateOperation(const Node &node, const Ray &ray, const Vec3 &invDir, double w0,
                            double w1, SpanList &out, SpanScratch &scratch) const;
+    /// evaluateOperation() for a node with convexA and convexB, with pruning on: the same
+    /// steps, bounds tests, counters and result, from the operands' single spans.
+    void evaluateConvexPair(const Node &node, const Ray &ray, const Vec3 &invDir, double w0,
+                            double w1, SpanList &out, SpanScratch &scratch) const;
     bool insideNode(int node, const Vec3 &p) const;
     /// Whether p is inside any operand in the BVH of `node` (only those whose bounds hold p
     /// are tested).

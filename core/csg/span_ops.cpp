@@ -53,11 +53,12 @@ int rankOf(const Crossing &c) { return c.leaf ? c.leaf->tieRank : 0; }
 /// where their distance is NaN (infinite ends of both).
 bool near(double s, double t, double tieEps) { return !(std::abs(s - t) > tieEps); }
 
-/// The sweep's result for one span on each side whose four crossings are all more than tieEps
-/// apart across the two (what almost every merge of a ray's spans meets): no crossing is
-/// simultaneous with another or near one of the other operand, so no tie is flagged, nothing
-/// cancels, and each boundary of the result is the crossing that alone changes the state
-/// there. False, with `out` untouched, where the sweep must decide.
+}  // namespace
+
+// The sweep's result for one span on each side whose four crossings are all more than tieEps
+// apart across the two (what almost every merge of a ray's spans meets): no crossing is
+// simultaneous with another or near one of the other operand, so no tie is flagged, nothing
+// cancels, and each boundary of the result is the crossing that alone changes the state there.
 bool combineSeparateSpans(const Span &a, const Span &b, SpanOp op, SpanList &out, double tieEps) {
     if (near(a.in.t, b.in.t, tieEps) || near(a.in.t, b.out.t, tieEps) ||
         near(a.out.t, b.in.t, tieEps) || near(a.out.t, b.out.t, tieEps))
@@ -89,8 +90,6 @@ bool combineSeparateSpans(const Span &a, const Span &b, SpanOp op, SpanList &out
     }
     return true;
 }
-
-}  // namespace
 
 void combineSpans(const SpanList &a, const SpanList &b, SpanOp op, SpanList &out,
                   double tieEps, double *cancelledTie) {

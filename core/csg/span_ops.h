@@ -26,6 +26,11 @@ enum class SpanOp { Union, Intersection, Difference };
 void combineSpans(const SpanList &a, const SpanList &b, SpanOp op, SpanList &out,
                   double tieEps = 0, double *cancelledTie = nullptr);
 
+/// combineSpans for one span a side, where its crossings are all more than tieEps apart across
+/// the two (no tie, nothing cancels): the result in `out` (cleared first). False, with `out`
+/// untouched, where the sweep must decide.
+bool combineSeparateSpans(const Span &a, const Span &b, SpanOp op, SpanList &out, double tieEps);
+
 /// The merge sweep itself, which combineSpans runs except for one span a side whose crossings
 /// are all more than tieEps apart across the two (there it gives the same result directly).
 /// For tests that check the two agree.

@@ -179,6 +179,8 @@ class PrimitiveInstance final : public LeafShape {
     /// The span of the whole world line inside this primitive; for one that is not convex,
     /// from its first entry to its last exit.
     bool lineSpan(const Ray &worldRay, Span *span) const;
+    /// Whether the primitive is convex: its lineSpans() are lineSpan()'s one span, or none.
+    bool convex() const { return convex_; }
 
   private:
     /// The primitive's spans of the world line, in a per-thread buffer (no allocation per ray

@@ -438,3 +438,100 @@ TEST(CsgShape, ManyOperandsInsideTestsOnTheirBoundsFaces) {
 
 }  // namespace
 }  // namespace rt
+
+namespace rt {
+namespace {
+
+/// A boolean node of two convex primitives takes a shortcut (CsgShape::evaluateConvexPair). The
+/// same node with its second operand behind a one-operand union takes the general merge: the
+/// spans (distances, leaves, faces, tie flags), the cancelled ties, the counters and the first
+/// crossings must be the same, bit for bit, over windows that prune. Boxes on a half-unit grid
+/// share and touch faces, so the merge sweep's coincident cases are met as well as the
+/// well-separated ones.
+TEST(CsgShape, TwoConvexOperandsGiveTheGeneralMergesResult) {
+    Rng rng(23);
+    SpanScratch scratch;
+    auto grid = [&](double lo, double hi) { return lo + std::floor(rng.uniform() * ((hi - lo) * 2 + 1)) / 2; };
+    auto convex = [&](int kind, int material) -> std::unique_ptr<PrimitiveInstance> {
+        Vec3 lo(grid(-1, 1), grid(-1, 1), grid(-1, 1));
+        Vec3 hi = lo + Vec3(grid(0.5, 2), grid(0.5, 2), grid(0.5, 2));
+        switch (kind) {
+            case 0: return std::make_unique<PrimitiveInstance>(std::make_unique<Box>(lo, hi), Transform(), material);
+            case 1:
+                return std::make_unique<PrimitiveInstance>(
+                    std::make_unique<Box>(lo, hi),
+                    *Transform::fromMatrix(Mat4::rotateAxis(45, Vec3(0, 0, 1))), material);
+            case 2: return sphereAt(lo, grid(0.5, 1.5), material);
+            default:
+                return std::make_unique<PrimitiveInstance>(std::make_unique<Cone>(lo.z, hi.z, 1, grid(0, 1)),
+                                                           *Transform::fromMatrix(Mat4::translate(Vec3(lo.x, lo.y, 0))),
+                                                           material);
+        }
+    };
+    int separate = 0, coincident = 0, pruned = 0;
+    for (int trial = 0; trial < 1000; ++trial) {
+        auto op = static_cast<CsgShape::Op>(1 + trial % 3);
+        int kindA = static_cast<int>(rng.uniform() * 4), kindB = static_cast<int>(rng.uniform() * 4);
+        uint64_t seed = rng.uniformU32();
+        // The same two primitives in both trees
+        auto build = [&](CsgShape &s, bool wrap) {
+            Rng local(seed);
+            std::swap(rng, local);
+            int a = s.addLeaf(convex(kindA, 1));
+            int b = s.addLeaf(convex(kindB, 2));
+            std::swap(rng, local);
+            if (wrap) b = s.addOp(CsgShape::Op::Union, {b});
+            s.addOp(op, {a, b});
+        };
+        CsgShape shortcut, general;
+        build(shortcut, false);
+        build(general, true);
+        for (int i = 0; i < 120; ++i) {
+            Vec3 o(rng.uniform() * 10 - 5, rng.uniform() * 10 - 5, rng.uniform() * 10 - 5);
+            Vec3 target(grid(-1, 2), grid(-1, 2), rng.uniform() * 3 - 1);
+            // Half the rays along a grid axis, through shared faces end-on
+            Vec3 d = i % 2 ? normalize(target - o) : Vec3(0, 0, o.z < 0 ? 1 : -1);
+            if (i % 2 == 0) o = Vec3(target.x, target.y, o.z);
+            Ray r(o, d);
+            double w0 = i % 3 ? -kInfinity : rng.uniform() * 8, w1 = i % 5 ? kInfinity : w0 + rng.uniform() * 4;
+            SpanList a, b;
+            SpanScratch sa, sb;
+            sa.cancelledTie = sb.cancelledTie = kInfinity;
+            shortcut.spans(r, w0, w1, a, sa);
+            general.spans(r, w0, w1, b, sb);
+            ASSERT_EQ(a.size(), b.size()) << "trial " << trial << " ray " << i;
+            for (size_t k = 0; k < a.size(); ++k)
+                for (auto [x, y] : {std::pair{a[k].in, b[k].in}, std::pair{a[k].out, b[k].out}}) {
+                    EXPECT_EQ(x.t, y.t);
+                    EXPECT_EQ(x.leaf->material(), y.leaf->material());  // which operand
+                    EXPECT_EQ(x.face, y.face);
+                    EXPECT_EQ(x.tie, y.tie);
+                }
+            EXPECT_EQ(sa.cancelledTie, sb.cancelledTie);
+            EXPECT_EQ(sa.spanOps, sb.spanOps);
+            EXPECT_EQ(sa.prunedSubtrees, sb.prunedSubtrees);
+            bool tied = sa.cancelledTie < kInfinity;
+            for (const Span &s : a) tied = tied || s.in.tie || s.out.tie;
+            coincident += tied;
+            separate += sa.spanOps > 0 && !tied;
+            pruned += sa.prunedSubtrees > 0;
+            Crossing ca, cb;
+            double tMin = rng.uniform() * 6;
+            bool ha = shortcut.firstCrossing(r, tMin, kInfinity, &ca, scratch);
+            bool hb = general.firstCrossing(r, tMin, kInfinity, &cb, scratch);
+            ASSERT_EQ(ha, hb);
+            if (ha) {
+                EXPECT_EQ(ca.t, cb.t);
+                EXPECT_EQ(ca.leaf->material(), cb.leaf->material());
+                EXPECT_EQ(ca.tie, cb.tie);
+            }
+        }
+    }
+    // Every path was met many times
+    EXPECT_GT(separate, 2000);
+    EXPECT_GT(coincident, 400);
+    EXPECT_GT(pruned, 1000);
+}
+
+}  // namespace
+}  // namespace rt
