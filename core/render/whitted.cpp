@@ -119,7 +119,9 @@ Rgb WhittedIntegrator::shadeWith(const Ray &ray, const SurfaceInteraction &si, c
         for (int i = 0; i < 3; ++i) filCol[i] *= std::min(1.0, 1 - refl.value[i]);
     double trans = std::min(1.0, std::abs(povGreyscale(filCol)));
 
-    Vec3 reflectDir = normalize(ray.d + N * (2 * cosI));
+    // The mirror direction only where a ray takes it (its square root and divisions would
+    // hold up every opaque, non-reflecting hit's return)
+    auto reflectDirection = [&] { return normalize(ray.d + N * (2 * cosI)); };
     bool tir = false;
     if (trans > settings.adcBailout) {
         double w = weight * std::max({std::abs(filCol.r), std::abs(filCol.g), std::abs(filCol.b)});
@@ -153,7 +155,7 @@ Rgb WhittedIntegrator::shadeWith(const Ray &ray, const SurfaceInteraction &si, c
             Vec3 dir = ray.d * eta + N * (eta * n - std::sqrt(std::max(t, 0.0)));
             tir = t < 0;
             const InteriorStack &beyond = tir ? stack : next;
-            Vec3 centre = tir ? reflectDir : dir, side = tir ? N : -N;
+            Vec3 centre = tir ? reflectDirection() : dir, side = tir ? N : -N;
             auto traceOne = [&](const Vec3 &d) {
                 return trace(spawnRay(si, d), level, w, beyond, false, true, ctx);
             };
@@ -176,6 +178,7 @@ Rgb WhittedIntegrator::shadeWith(const Ray &ray, const SurfaceInteraction &si, c
             return f.reflectionExponent != 1 ? powRgb(r, 1 / f.reflectionExponent) : r;
         };
         Rgb r;
+        Vec3 reflectDir = reflectDirection();
         if (f.glossy > 0) {
             r = distribute(f, f.glossy, reflectDir, N, blurred, ctx, traceOne);
         } else {
