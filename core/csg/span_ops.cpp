@@ -25,7 +25,7 @@ bool evaluate(SpanOp op, bool inA, bool inB) {
 /// times a step, and a vector's size() of 48-byte spans costs a division.
 class CrossingCursor {
   public:
-    explicit CrossingCursor(const SpanList &l) : spans_(l.data()), end_(2 * l.size()) { load(); }
+    explicit CrossingCursor(std::span<const Span> l) : spans_(l.data()), end_(2 * l.size()) { load(); }
     bool done() const { return index_ >= end_; }
     double t() const { return t_; }
     const Crossing &current() const {
@@ -53,12 +53,11 @@ int rankOf(const Crossing &c) { return c.leaf ? c.leaf->tieRank : 0; }
 /// where their distance is NaN (infinite ends of both).
 bool near(double s, double t, double tieEps) { return !(std::abs(s - t) > tieEps); }
 
-}  // namespace
-
-// The sweep's result for one span on each side whose four crossings are all more than tieEps
-// apart across the two (what almost every merge of a ray's spans meets): no crossing is
-// simultaneous with another or near one of the other operand, so no tie is flagged, nothing
-// cancels, and each boundary of the result is the crossing that alone changes the state there.
+/// The sweep's result for one span on each side whose four crossings are all more than tieEps
+/// apart across the two (what almost every merge of a ray's spans meets): no crossing is
+/// simultaneous with another or near one of the other operand, so no tie is flagged, nothing
+/// cancels, and each boundary of the result is the crossing that alone changes the state
+/// there. False, with `out` untouched, where the sweep must decide.
 bool combineSeparateSpans(const Span &a, const Span &b, SpanOp op, SpanList &out, double tieEps) {
     if (near(a.in.t, b.in.t, tieEps) || near(a.in.t, b.out.t, tieEps) ||
         near(a.out.t, b.in.t, tieEps) || near(a.out.t, b.out.t, tieEps))
@@ -91,7 +90,9 @@ bool combineSeparateSpans(const Span &a, const Span &b, SpanOp op, SpanList &out
     return true;
 }
 
-void combineSpans(const SpanList &a, const SpanList &b, SpanOp op, SpanList &out,
+}  // namespace
+
+void combineSpans(std::span<const Span> a, std::span<const Span> b, SpanOp op, SpanList &out,
                   double tieEps, double *cancelledTie) {
     // One span a side, well apart: the sweep's result without its loop, whose branches on the
     // order of the crossings the processor cannot predict (15 % of default.scad's
@@ -100,7 +101,7 @@ void combineSpans(const SpanList &a, const SpanList &b, SpanOp op, SpanList &out
     combineSpansBySweep(a, b, op, out, tieEps, cancelledTie);
 }
 
-void combineSpansBySweep(const SpanList &a, const SpanList &b, SpanOp op, SpanList &out,
+void combineSpansBySweep(std::span<const Span> a, std::span<const Span> b, SpanOp op, SpanList &out,
                          double tieEps, double *cancelledTie) {
     out.clear();
     // No result has more spans than its operands together: push_back never reallocates

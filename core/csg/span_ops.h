@@ -2,6 +2,8 @@
 // Boolean operations on span lists: union, intersection and difference by one merge sweep.
 #pragma once
 
+#include <span>
+
 #include "core/csg/span.h"
 
 namespace rt {
@@ -23,18 +25,15 @@ enum class SpanOp { Union, Intersection, Difference };
 /// `tieEps` that leave no boundary in the result (a subtrahend face flush with the minuend's,
 /// two solids meeting in a plane) lower `*cancelledTie` to their t when given: rounded
 /// differently, they would have left a surface there.
-void combineSpans(const SpanList &a, const SpanList &b, SpanOp op, SpanList &out,
+/// The operands are any contiguous spans (a SpanList, or single spans held elsewhere); `out`
+/// must be neither of them.
+void combineSpans(std::span<const Span> a, std::span<const Span> b, SpanOp op, SpanList &out,
                   double tieEps = 0, double *cancelledTie = nullptr);
-
-/// combineSpans for one span a side, where its crossings are all more than tieEps apart across
-/// the two (no tie, nothing cancels): the result in `out` (cleared first). False, with `out`
-/// untouched, where the sweep must decide.
-bool combineSeparateSpans(const Span &a, const Span &b, SpanOp op, SpanList &out, double tieEps);
 
 /// The merge sweep itself, which combineSpans runs except for one span a side whose crossings
 /// are all more than tieEps apart across the two (there it gives the same result directly).
 /// For tests that check the two agree.
-void combineSpansBySweep(const SpanList &a, const SpanList &b, SpanOp op, SpanList &out,
+void combineSpansBySweep(std::span<const Span> a, std::span<const Span> b, SpanOp op, SpanList &out,
                          double tieEps = 0, double *cancelledTie = nullptr);
 
 }  // namespace rt
