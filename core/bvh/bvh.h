@@ -36,6 +36,10 @@ class Bvh {
     static constexpr int kMaxLeafItems = 4;
 
     Bvh() = default;
+    struct RaySlabs;
+#if SCADRAY_LANE_SLABS
+    struct LaneSlabs;
+#endif
     explicit Bvh(const std::vector<Bounds3> &itemBounds);
 
     const std::vector<Node> &nodes() const { return nodes_; }
@@ -49,12 +53,13 @@ class Bvh {
     /// stop the traversal (any hit).
     template <typename Visit>
     void traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit) const {
-        traverseWith<RaySlabs>(ray, tMin, tMax, visit);
+        traverseWith(RaySlabs(ray), tMin, tMax, visit);
     }
     /// traverse() with the node test of `Slabs`: RaySlabs (one plane at a time) or LaneSlabs
-    /// (the three axes side by side), which visit the same items in the same order.
+    /// (the three axes side by side), which visit the same items in the same order. The
+    /// caller builds them, so it can share the ray's reciprocal direction with its visitor.
     template <typename Slabs, typename Visit>
-    void traverseWith(const Ray &ray, double tMin, double *tMax, Visit &&visit) const;
+    void traverseWith(const Slabs &slabs, double tMin, double *tMax, Visit &&visit) const;
 
     /// The leaves, in the order traverse() meets them for rays of `octant` (bit a set where the
     /// direction's component on axis a is negative, as its reciprocal is), of the subtrees
@@ -73,10 +78,10 @@ class Bvh {
     template <typename Visit>
     void traverseLeaves(const uint32_t *leaves, size_t count, const Ray &ray, double tMin,
                         double *tMax, Visit &&visit) const {
-        traverseLeavesWith<RaySlabs>(leaves, count, ray, tMin, tMax, visit);
+        traverseLeavesWith(leaves, count, RaySlabs(ray), tMin, tMax, visit);
     }
     template <typename Slabs, typename Visit>
-    void traverseLeavesWith(const uint32_t *leaves, size_t count, const Ray &ray, double tMin,
+    void traverseLeavesWith(const uint32_t *leaves, size_t count, const Slabs &slabs, double tMin,
                             double *tMax, Visit &&visit) const;
 
 #if SCADRAY_LANE_SLABS
@@ -88,12 +93,12 @@ class Bvh {
     /// *tMax and passed with a *tMax no smaller. So the same nodes pass, the same items are
     /// visited in the same order with the same *tMax, and the two tests' latencies overlap.
     template <typename Visit>
-    void traversePairs(const Ray &ray, double tMin, double *tMax, Visit &&visit) const;
+    void traversePairs(const LaneSlabs &slabs, double tMin, double *tMax, Visit &&visit) const;
     /// traverseLeavesWith<LaneSlabs> for such a visitor, testing two leaves side by side; the
     /// second is visited if it passed and its t0 <= *tMax after the first's visits.
     template <typename Visit>
-    void traverseLeavesPairs(const uint32_t *leaves, size_t count, const Ray &ray, double tMin,
-                             double *tMax, Visit &&visit) const;
+    void traverseLeavesPairs(const uint32_t *leaves, size_t count, const LaneSlabs &slabs,
+                             double tMin, double *tMax, Visit &&visit) const;
 #endif
 
     /// What the slab test needs of a ray, computed once per traversal: besides the origin and
@@ -103,8 +108,10 @@ class Bvh {
         Vec3 o, invDir;
         bool neg[3];
         int nearAt[3], farAt[3];
-        explicit RaySlabs(const Ray &ray)
-            : o(ray.o), invDir(1 / ray.d.x, 1 / ray.d.y, 1 / ray.d.z),
+        explicit RaySlabs(const Ray &ray) : RaySlabs(ray, Vec3(1 / ray.d.x, 1 / ray.d.y, 1 / ray.d.z)) {}
+        /// `invDir`: 1 / ray.d, component by component
+        RaySlabs(const Ray &ray, const Vec3 &inverseDir)
+            : o(ray.o), invDir(inverseDir),
               neg{invDir.x < 0, invDir.y < 0, invDir.z < 0},
               nearAt{neg[0] ? 3 : 0, neg[1] ? 4 : 1, neg[2] ? 5 : 2},
               farAt{neg[0] ? 0 : 3, neg[1] ? 1 : 4, neg[2] ? 2 : 5} {}
@@ -118,7 +125,9 @@ class Bvh {
     struct LaneSlabs {
         __m256d o, invDir, negLanes;
         bool neg[3];
-        SCADRAY_LANES_TARGET explicit LaneSlabs(const Ray &ray);
+        SCADRAY_LANES_TARGET explicit LaneSlabs(const Ray &ray)
+            : LaneSlabs(ray, Vec3(1 / ray.d.x, 1 / ray.d.y, 1 / ray.d.z)) {}
+        SCADRAY_LANES_TARGET LaneSlabs(const Ray &ray, const Vec3 &inverseDir);
         SCADRAY_LANES_TARGET bool hit(const Node &node, double tMin, double tMax) const;
         /// hit() for two nodes at once: bit 0 of the result for `a`, bit 1 for `b`, and each
         /// box's near distance t0 (the largest of tMin and its near planes' distances).
@@ -186,8 +195,8 @@ inline bool Bvh::RaySlabs::hit(const Node &node, double tMin, double tMax) const
 }
 
 #if SCADRAY_LANE_SLABS
-SCADRAY_LANES_TARGET inline Bvh::LaneSlabs::LaneSlabs(const Ray &ray) {
-    double ix = 1 / ray.d.x, iy = 1 / ray.d.y, iz = 1 / ray.d.z;
+SCADRAY_LANES_TARGET inline Bvh::LaneSlabs::LaneSlabs(const Ray &ray, const Vec3 &inverseDir) {
+    double ix = inverseDir.x, iy = inverseDir.y, iz = inverseDir.z;
     o = _mm256_setr_pd(ray.o.x, ray.o.y, ray.o.z, 0);
     invDir = _mm256_setr_pd(ix, iy, iz, std::numeric_limits<double>::quiet_NaN());
     negLanes = _mm256_cmp_pd(invDir, _mm256_setzero_pd(), _CMP_LT_OQ);  // the NaN lane: false
@@ -250,9 +259,8 @@ SCADRAY_LANES_TARGET inline int Bvh::LaneSlabs::hitPair(const Node &a, const Nod
 #endif
 
 template <typename Slabs, typename Visit>
-void Bvh::traverseWith(const Ray &ray, double tMin, double *tMax, Visit &&visit) const {
+void Bvh::traverseWith(const Slabs &slabs, double tMin, double *tMax, Visit &&visit) const {
     if (nodes_.empty()) return;
-    const Slabs slabs(ray);
     uint32_t stack[128];
     int top = 0;
     uint32_t current = 0;
@@ -298,9 +306,8 @@ void Bvh::collectLeaves(int octant, Keep &&keep, std::vector<uint32_t> &leaves) 
 }
 
 template <typename Slabs, typename Visit>
-void Bvh::traverseLeavesWith(const uint32_t *leaves, size_t count, const Ray &ray, double tMin,
+void Bvh::traverseLeavesWith(const uint32_t *leaves, size_t count, const Slabs &slabs, double tMin,
                              double *tMax, Visit &&visit) const {
-    const Slabs slabs(ray);
     for (size_t l = 0; l < count; ++l) {
         const Node &node = nodes_[leaves[l]];
         if (!slabs.hit(node, tMin, *tMax)) continue;
@@ -311,9 +318,8 @@ void Bvh::traverseLeavesWith(const uint32_t *leaves, size_t count, const Ray &ra
 
 #if SCADRAY_LANE_SLABS
 template <typename Visit>
-void Bvh::traversePairs(const Ray &ray, double tMin, double *tMax, Visit &&visit) const {
+void Bvh::traversePairs(const LaneSlabs &slabs, double tMin, double *tMax, Visit &&visit) const {
     if (nodes_.empty()) return;
-    const LaneSlabs slabs(ray);
     if (!slabs.hit(nodes_[0], tMin, *tMax)) return;
     uint32_t stack[128];
     double stackT0[128];  // the near distance of each node left for later
@@ -352,9 +358,8 @@ void Bvh::traversePairs(const Ray &ray, double tMin, double *tMax, Visit &&visit
 }
 
 template <typename Visit>
-void Bvh::traverseLeavesPairs(const uint32_t *leaves, size_t count, const Ray &ray, double tMin,
-                              double *tMax, Visit &&visit) const {
-    const LaneSlabs slabs(ray);
+void Bvh::traverseLeavesPairs(const uint32_t *leaves, size_t count, const LaneSlabs &slabs,
+                              double tMin, double *tMax, Visit &&visit) const {
     size_t l = 0;
     for (; l + 1 < count; l += 2) {
         double t0[2];

@@ -73,52 +73,9 @@ ObjectSurface Sphere::surface(const Vec3 &p, int) const {
 // ---------------------------------------------------------------------------------------------
 // Box
 
-bool Box::intersect(const Ray &r, PrimitiveSpan *span) const {
-    double t0 = -kInfinity, t1 = kInfinity;
-    int face0 = -1, face1 = -1;
-    for (int i = 0; i < 3; ++i) {
-        if (r.d[i] == 0) {
-            // Parallel to this slab: inside it everywhere or nowhere
-            if (r.o[i] < min_[i] || r.o[i] > max_[i]) return false;
-            continue;
-        }
-        double inv = 1 / r.d[i];
-        double tNear = (min_[i] - r.o[i]) * inv, tFar = (max_[i] - r.o[i]) * inv;
-        int fNear = 2 * i, fFar = 2 * i + 1;
-        if (tNear > tFar) {
-            std::swap(tNear, tFar);
-            std::swap(fNear, fFar);
-        }
-        if (tNear > t0) {
-            t0 = tNear;
-            face0 = fNear;
-        }
-        if (tFar < t1) {
-            t1 = tFar;
-            face1 = fFar;
-        }
-    }
-    if (face0 < 0 || face1 < 0 || !(t0 < t1)) return false;
-    *span = {t0, t1, face0, face1};
-    return true;
-}
-
 bool Box::inside(const Vec3 &p) const {
     return p.x >= min_.x && p.x <= max_.x && p.y >= min_.y && p.y <= max_.y && p.z >= min_.z &&
            p.z <= max_.z;
-}
-
-ObjectSurface Box::surface(const Vec3 &p, int face) const {
-    int axis = face / 2;
-    bool maxSide = face % 2;
-    Vec3 refined = max(min_, rt::min(p, max_));
-    refined[axis] = maxSide ? max_[axis] : min_[axis];
-    // The face coordinate is exact; the others carry the error of o + t d.
-    Vec3 err = abs(refined) * gamma(3);
-    err[axis] = 0;
-    Vec3 n(0);
-    n[axis] = maxSide ? 1 : -1;
-    return {refined, err, n};
 }
 
 // ---------------------------------------------------------------------------------------------

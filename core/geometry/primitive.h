@@ -9,6 +9,7 @@
 #include "core/ir/facets.h"
 #include "core/ir/node.h"
 #include "core/math/bounds3.h"
+#include "core/math/float_util.h"
 #include "core/math/ray.h"
 
 namespace rt {
@@ -64,9 +65,58 @@ class Box final : public Primitive {
   public:
     Box(const Vec3 &min, const Vec3 &max) : min_(min), max_(max) {}
     Bounds3 objectBounds() const override { return Bounds3(min_, max_); }
-    bool intersect(const Ray &r, PrimitiveSpan *span) const override;
+    bool intersect(const Ray &r, PrimitiveSpan *span) const override {
+        return slabSpan(min_, max_, r.o, r.d, Vec3(1 / r.d.x, 1 / r.d.y, 1 / r.d.z), span);
+    }
+    /// intersect() for the box [min, max] and the line o + t d, given d's reciprocals
+    /// (`invDir`: a ray's, computed once for every box it meets). Faces 2a and 2a + 1: the
+    /// min and max planes of axis a.
+    static bool slabSpan(const Vec3 &min, const Vec3 &max, const Vec3 &o, const Vec3 &d,
+                         const Vec3 &invDir, PrimitiveSpan *span) {
+        double t0 = -kInfinity, t1 = kInfinity;
+        int face0 = -1, face1 = -1;
+        for (int i = 0; i < 3; ++i) {
+            if (d[i] == 0) {
+                // Parallel to this slab: inside it everywhere or nowhere
+                if (o[i] < min[i] || o[i] > max[i]) return false;
+                continue;
+            }
+            double tNear = (min[i] - o[i]) * invDir[i], tFar = (max[i] - o[i]) * invDir[i];
+            int fNear = 2 * i, fFar = 2 * i + 1;
+            if (tNear > tFar) {
+                std::swap(tNear, tFar);
+                std::swap(fNear, fFar);
+            }
+            if (tNear > t0) {
+                t0 = tNear;
+                face0 = fNear;
+            }
+            if (tFar < t1) {
+                t1 = tFar;
+                face1 = fFar;
+            }
+        }
+        if (face0 < 0 || face1 < 0 || !(t0 < t1)) return false;
+        *span = {t0, t1, face0, face1};
+        return true;
+    }
+    const Vec3 &min() const { return min_; }
+    const Vec3 &max() const { return max_; }
     bool inside(const Vec3 &p) const override;
-    ObjectSurface surface(const Vec3 &p, int face) const override;
+    ObjectSurface surface(const Vec3 &p, int face) const override { return surfaceOf(min_, max_, p, face); }
+    /// surface() of the box [min, max]. Its normal is a unit vector along an axis.
+    static ObjectSurface surfaceOf(const Vec3 &min, const Vec3 &max, const Vec3 &p, int face) {
+        int axis = face / 2;
+        bool maxSide = face % 2;
+        Vec3 refined = rt::max(min, rt::min(p, max));
+        refined[axis] = maxSide ? max[axis] : min[axis];
+        // The face coordinate is exact; the others carry the error of o + t d.
+        Vec3 err = abs(refined) * gamma(3);
+        err[axis] = 0;
+        Vec3 n(0);
+        n[axis] = maxSide ? 1 : -1;
+        return {refined, err, n};
+    }
 
   private:
     Vec3 min_, max_;

@@ -66,28 +66,10 @@ Placement::Placement(const Transform &worldFromObject)
       toObjectShift_(worldFromObject.inverseMatrix().translation()),
       conditioning_(transformConditioning(worldFromObject)) {}
 
-void Placement::surfaceToWorld(const ObjectSurface &os, SurfaceInteraction &si) const {
-    switch (kind_) {
-        case Kind::Identity:
-            si.p = os.p;
-            si.pError = os.pError;
-            break;
-        case Kind::Translation:
-            // Transform::point's bound with its products by 0 left out (they add +0)
-            si.p = os.p + toWorldShift_;
-            for (int i = 0; i < 3; ++i)
-                si.pError[i] = (gamma(3) * (std::abs(os.p[i]) + std::abs(toWorldShift_[i])) +
-                                (gamma(3) + 1) * os.pError[i]) *
-                               conditioning_;
-            break;
-        case Kind::General: {
-            Vec3 err;
-            si.p = worldFromObject_.point(os.p, os.pError, &err);
-            si.pError = err * conditioning_;
-            break;
-        }
-    }
-    si.n = normalToWorld(os.normal);
+void Placement::generalPointToWorld(const ObjectSurface &os, SurfaceInteraction &si) const {
+    Vec3 err;
+    si.p = worldFromObject_.point(os.p, os.pError, &err);
+    si.pError = err * conditioning_;
 }
 
 PrimitiveInstance::PrimitiveInstance(std::unique_ptr<Primitive> prim,

@@ -2,12 +2,14 @@
 // World-space solids the tracer sees: the Shape interface, and a primitive placed by a transform.
 #pragma once
 
+#include <cmath>
 #include <memory>
 
 #include "core/csg/span.h"
 #include "core/geometry/hit.h"
 #include "core/geometry/primitive.h"
 #include "core/ir/source_loc.h"
+#include "core/math/float_util.h"
 #include "core/math/transform.h"
 
 namespace rt {
@@ -149,12 +151,39 @@ class Placement {
     }
     /// Sets the world hit point, its error bound and the unit geometric normal of `si` from
     /// an object-space surface point.
-    void surfaceToWorld(const ObjectSurface &os, SurfaceInteraction &si) const;
+    void surfaceToWorld(const ObjectSurface &os, SurfaceInteraction &si) const {
+        pointToWorld(os, si);
+        si.n = normalToWorld(os.normal);
+    }
+    /// surfaceToWorld() without the normal: the world hit point and its error bound.
+    void pointToWorld(const ObjectSurface &os, SurfaceInteraction &si) const {
+        switch (kind_) {
+            case Kind::Identity:
+                si.p = os.p;
+                si.pError = os.pError;
+                break;
+            case Kind::Translation:
+                // Transform::point's bound with its products by 0 left out (they add +0)
+                si.p = os.p + toWorldShift_;
+                for (int i = 0; i < 3; ++i)
+                    si.pError[i] = (gamma(3) * (std::abs(os.p[i]) + std::abs(toWorldShift_[i])) +
+                                    (gamma(3) + 1) * os.pError[i]) *
+                                   conditioning_;
+                break;
+            case Kind::General:
+                generalPointToWorld(os, si);
+                break;
+        }
+    }
 
     enum class Kind : uint8_t { Identity, Translation, General };
     Kind kind() const { return kind_; }
+    /// What toObject() adds to a point for a Translation.
+    const Vec3 &toObjectShift() const { return toObjectShift_; }
 
   private:
+    void generalPointToWorld(const ObjectSurface &os, SurfaceInteraction &si) const;
+
     Transform worldFromObject_;
     Kind kind_;
     /// Translation: the offset of the matrix and of its inverse (their last columns).
@@ -181,6 +210,8 @@ class PrimitiveInstance final : public LeafShape {
     bool lineSpan(const Ray &worldRay, Span *span) const;
     /// Whether the primitive is convex: its lineSpans() are lineSpan()'s one span, or none.
     bool convex() const { return convex_; }
+    const Primitive &primitive() const { return *prim_; }
+    const Placement &placement() const { return placement_; }
 
   private:
     /// The primitive's spans of the world line, in a per-thread buffer (no allocation per ray

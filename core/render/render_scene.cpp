@@ -398,6 +398,8 @@ std::unique_ptr<RenderScene> RenderScene::compile(const ir::Scene &scene, Diagno
         });
     }
     rs->bvh_ = Bvh(bounds);
+    rs->axisBoxes_.reserve(rs->objects_.size());
+    for (const auto &o : rs->objects_) rs->axisBoxes_.push_back(AxisBox::of(*o));
 #if SCADRAY_LANE_SLABS
     rs->lanes_ = options.laneSlabs && __builtin_cpu_supports("avx2");
 #endif
@@ -423,7 +425,10 @@ bool RenderScene::intersect(const Ray &ray, double tMin, double tMax, SurfaceInt
 }
 
 SurfaceInteraction RenderScene::surfaceAt(const Ray &ray, const Hit &hit) const {
-    SurfaceInteraction si = hit.crossing.leaf->surfaceAt(ray, hit.crossing);
+    const AxisBox &box = axisBoxes_[hit.objectIndex];
+    SurfaceInteraction si = box.leaf() && box.leaf() == hit.crossing.leaf
+                                ? box.surfaceAt(ray, hit.crossing)
+                                : hit.crossing.leaf->surfaceAt(ray, hit.crossing);
     si.object = hit.object;
     si.tie = hit.tie;
     return si;
@@ -449,56 +454,64 @@ template <typename Slabs>
 bool RenderScene::closestHitWith(const Ray &ray, double tMin, double tMax, Hit *hit, SpanScratch &scratch,
                                  const VistaLists *vista) const {
     Crossing best;
-    const Shape *bestObject = nullptr;
+    constexpr uint32_t kNone = UINT32_MAX;
+    uint32_t bestObject = kNone;  // index of the object of `best`
     bool tie = false;
     double closest = tMax;
     double cancelled = kInfinity;  // nearest coincident faces that cancelled in any object
     // Objects whose first crossing lies just beyond the closest one are still visited, so a
     // coincident face of another object is noticed as a tie
     // Inlined into both walks below (GCC 12 would otherwise call it: 6 % slower)
+    const VistaLists::Cell *cell = vista ? vista->find(ray, tMin, tMax) : nullptr;
+    const Vec3 invDir(1 / ray.d.x, 1 / ray.d.y, 1 / ray.d.z);  // for the walk and the boxes
     auto visit = [&](uint32_t index, double *tFar) __attribute__((always_inline)) {
         Crossing c;
-        const Shape *obj = objects_[index].get();
-        scratch.cancelledTie = kInfinity;
-        bool found = obj->firstCrossing(ray, tMin, *tFar, &c, scratch);
-        if (scratch.cancelledTie > tMin) cancelled = std::min(cancelled, scratch.cancelledTie);
-        if (!found) return false;
+        const AxisBox &box = axisBoxes_[index];
+        if (box.leaf()) {
+            if (!box.firstCrossing(ray, invDir, tMin, *tFar, &c)) return false;
+        } else {
+            scratch.cancelledTie = kInfinity;
+            bool found = objects_[index]->firstCrossing(ray, tMin, *tFar, &c, scratch);
+            if (scratch.cancelledTie > tMin) cancelled = std::min(cancelled, scratch.cancelledTie);
+            if (!found) return false;
+        }
         double eps = tieEpsilon(ray.o, c.t);
-        if (!bestObject || c.t < best.t) {
-            tie = bestObject && best.t - c.t <= eps;
+        if (bestObject == kNone || c.t < best.t) {
+            tie = bestObject != kNone && best.t - c.t <= eps;
             best = c;
-            bestObject = obj;
+            bestObject = index;
             *tFar = std::min(tMax, c.t + eps);
         } else {
             tie = tie || c.t - best.t <= eps;
         }
         return false;
     };
-    const VistaLists::Cell *cell = vista ? vista->find(ray, tMin, tMax) : nullptr;
     // The visitor only lowers `closest`, so the lanes' walks may test two boxes side by side
 #if SCADRAY_LANE_SLABS
     constexpr bool paired = std::is_same_v<Slabs, Bvh::LaneSlabs>;
 #else
     constexpr bool paired = false;
 #endif
+    const Slabs slabs(ray, invDir);
     if constexpr (paired) {
 #if SCADRAY_LANE_SLABS
         if (cell)
-            bvh_.traverseLeavesPairs(cell->leaves, cell->count, ray, tMin, &closest, visit);
+            bvh_.traverseLeavesPairs(cell->leaves, cell->count, slabs, tMin, &closest, visit);
         else
-            bvh_.traversePairs(ray, tMin, &closest, visit);
+            bvh_.traversePairs(slabs, tMin, &closest, visit);
 #endif
     } else if (cell) {
-        bvh_.traverseLeavesWith<Slabs>(cell->leaves, cell->count, ray, tMin, &closest, visit);
+        bvh_.traverseLeavesWith(cell->leaves, cell->count, slabs, tMin, &closest, visit);
     } else {
-        bvh_.traverseWith<Slabs>(ray, tMin, &closest, visit);
+        bvh_.traverseWith(slabs, tMin, &closest, visit);
     }
-    if (!bestObject || best.t >= tMax) {
+    if (bestObject == kNone || best.t >= tMax) {
         hit->tie = cancelled < tMax;  // a miss can still pass coincident faces
         return false;
     }
     hit->crossing = best;
-    hit->object = bestObject;
+    hit->object = objects_[bestObject].get();
+    hit->objectIndex = bestObject;
     // Coincident faces that cancelled in front of the hit (a face of zero thickness that another
     // renderer may show) make it a tie as well
     tie = tie || cancelled <= best.t + tieEpsilon(ray.o, best.t);

@@ -10,6 +10,7 @@
 
 #include "core/bvh/bvh.h"
 #include "core/bvh/vista_lists.h"
+#include "core/geometry/axis_box.h"
 #include "core/geometry/shape.h"
 #include "core/ir/diagnostics.h"
 #include "core/ir/scene_ir.h"
@@ -72,6 +73,7 @@ class RenderScene {
     struct Hit {
         Crossing crossing;
         const Shape *object = nullptr;
+        uint32_t objectIndex = 0;  ///< object's position in objects()
         bool tie = false;
     };
     bool closestHit(const Ray &ray, double tMin, double tMax, Hit *hit, SpanScratch &scratch,
@@ -122,6 +124,11 @@ class RenderScene {
     bool closestHitLanes(const Ray &ray, double tMin, double tMax, Hit *hit, SpanScratch &scratch,
                          const VistaLists *vista) const;
     bool lanes_ = false;
+
+    /// By object: the objects that are boxes placed by the identity or a translation (the
+    /// floor tiles and `translate()`d cubes of most scenes), whose crossings and surfaces
+    /// closestHit() and surfaceAt() find inline (AxisBox); the others are empty.
+    std::vector<AxisBox> axisBoxes_;
 
     std::vector<std::unique_ptr<Shape>> objects_;
     Bvh bvh_;

@@ -246,12 +246,12 @@ TEST(Bvh, LaneSlabsWalkVisitsAsTheOnePlaneWalk) {
             };
             auto one = walk([&](const Ray &r, double *tMax, auto &&v) { bvh.traverse(r, -kInfinity, tMax, v); });
             auto lanes = walk([&](const Ray &r, double *tMax, auto &&v) {
-                bvh.traverseWith<Bvh::LaneSlabs>(r, -kInfinity, tMax, v);
+                bvh.traverseWith(Bvh::LaneSlabs(r), -kInfinity, tMax, v);
             });
             ASSERT_EQ(lanes, one) << "scene " << scene << " ray " << i;
             // The walk that tests two children side by side
             auto pairs = walk([&](const Ray &r, double *tMax, auto &&v) {
-                bvh.traversePairs(r, -kInfinity, tMax, v);
+                bvh.traversePairs(Bvh::LaneSlabs(r), -kInfinity, tMax, v);
             });
             ASSERT_EQ(pairs, one) << "scene " << scene << " ray " << i;
         }

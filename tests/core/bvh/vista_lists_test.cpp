@@ -109,7 +109,7 @@ TEST(VistaLists, SameVisitsAsTheWholeTree) {
                 if (__builtin_cpu_supports("avx2")) {
                     Recorder paired{boxes, ray, 0, {}};
                     double tPaired = kInfinity;
-                    bvh.traverseLeavesPairs(cell->leaves, cell->count, ray, 0, &tPaired, paired);
+                    bvh.traverseLeavesPairs(cell->leaves, cell->count, Bvh::LaneSlabs(ray), 0, &tPaired, paired);
                     ASSERT_EQ(whole.visits, paired.visits) << "direction " << d.x << " " << d.y << " " << d.z;
                     ASSERT_EQ(tWhole, tPaired);
                 }
