@@ -9,6 +9,16 @@
 
 namespace rt {
 
+namespace {
+
+/// The volume of a box (0 for an empty or flat one).
+double boxVolume(const Bounds3 &b) {
+    Vec3 d = b.diagonal();
+    return d.x > 0 && d.y > 0 && d.z > 0 ? d.x * d.y * d.z : 0;
+}
+
+}  // namespace
+
 Bvh::Bvh(const std::vector<Bounds3> &itemBounds) {
     std::vector<BuildItem> items;
     items.reserve(itemBounds.size());
@@ -70,19 +80,27 @@ int Bvh::build(std::vector<BuildItem> &items, size_t begin, size_t end, int dept
     // Evaluate the surface area heuristic at kBins-1 planes on each axis
     int bestAxis = -1, bestSplit = -1;
     double bestCost = kInfinity;
+    // A child's chance of a visit: its shares of the parent's area and volume (kVolumeWeight),
+    // or of its area alone where the parent is flat or unbounded
+    double area = bounds.surfaceArea(), volume = boxVolume(bounds);
+    bool byVolume = volume > 0 && volume < kInfinity && area > 0 && area < kInfinity;
+    auto chance = [&](const Bounds3 &b) {
+        return byVolume ? (1 - kVolumeWeight) * b.surfaceArea() / area + kVolumeWeight * boxVolume(b) / volume
+                        : b.surfaceArea();
+    };
     for (int axis = 0; axis < 3; ++axis) {
         if (binScale[axis] == 0) continue;
         sweepBins<kBins>(binBounds[axis].data(), counts[axis].data(), kBins,
-                         [](const Bounds3 &a, const Bounds3 &b) { return unionBounds(a, b); },
-                         [](const Bounds3 &b) { return b.surfaceArea(); }, &bestCost, [&](int b) {
+                         [](const Bounds3 &a, const Bounds3 &b) { return unionBounds(a, b); }, chance,
+                         &bestCost, [&](int b) {
                              bestAxis = axis;
                              bestSplit = b;
                          });
     }
     // Relative cost: one traversal step (1/8 of an item test) plus the expected item tests
-    double area = bounds.surfaceArea();
+    double parentChance = byVolume ? 1.0 : area;
     double leafCost = static_cast<double>(n);
-    double splitCost = area > 0 ? 0.125 + bestCost / area : kInfinity;
+    double splitCost = parentChance > 0 ? 0.125 + bestCost / parentChance : kInfinity;
     if (n <= static_cast<size_t>(kMaxLeafItems) && (bestAxis < 0 || splitCost >= leafCost))
         return makeLeaf();
     size_t mid;

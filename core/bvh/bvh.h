@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Bounding volume hierarchy over world bounds: binned SAH build (Wald 2007; pbrt-v3 section
-// 4.3.2), flattened depth-first nodes, front-to-back traversal with a caller-supplied visitor.
+// Bounding volume hierarchy over world bounds: binned build (Wald 2007; pbrt-v3 section 4.3.2)
+// by surface area and volume (kVolumeWeight), flattened depth-first nodes, front-to-back
+// traversal with a caller-supplied visitor.
 #pragma once
 
 #include <cmath>
@@ -34,6 +35,16 @@ class Bvh {
 
     static constexpr int kBins = 16;
     static constexpr int kMaxLeafItems = 4;
+    /// The build weighs a child's chance of being visited by its share of its parent's surface
+    /// area (the SAH: rays from outside, uniformly spread) and, as much, by its share of the
+    /// parent's volume: most rays of a ray tracer (shadow rays, reflected and refracted ones)
+    /// start on a surface inside the scene, and a box that holds the origin is always visited.
+    /// SAH alone splits a floor of tiles with the objects on it into strips, each with its
+    /// objects, so every shadow ray from a tile walks the strip; with the volume term the
+    /// floor and the objects are split apart, and a shadow ray from the floor leaves the
+    /// floor's flat box at once (glass.scad and default.scad: 6.5 % fewer instructions,
+    /// mirrors.scad 5.7 %; README). A flat or unbounded node is weighed by its area alone.
+    static constexpr double kVolumeWeight = 0.5;
 
     Bvh() = default;
     struct RaySlabs;

@@ -259,6 +259,42 @@ TEST(Bvh, LaneSlabsWalkVisitsAsTheOnePlaneWalk) {
 }
 #endif
 
+/// A floor of tiles with a few objects standing on it (glass.scad, default.scad): surface area
+/// alone splits it into strips, each with its objects, so a shadow ray leaving a tile walks
+/// its strip; weighed by volume as well, the build puts the floor and the objects in the
+/// root's two subtrees, and upward rays from the floor leave the floor's subtree at once.
+TEST(Bvh, SplitsAFloorFromTheObjectsOnIt) {
+    std::vector<Bounds3> bounds;
+    for (int i = -7; i < 7; ++i)
+        for (int j = -5; j < 6; ++j)
+            bounds.push_back(Bounds3(Vec3(2 * i, 2 * j, -0.5), Vec3(2 * i + 2, 2 * j + 2, 0)));
+    size_t tiles = bounds.size();
+    bounds.push_back(Bounds3(Vec3(-7.5, -2.5, 0), Vec3(-2.5, 2.5, 5)));
+    bounds.push_back(Bounds3(Vec3(1, -1, 0), Vec3(5, 3, 4)));
+    bounds.push_back(Bounds3(Vec3(6, 1, 0), Vec3(8, 6, 4)));
+    Bvh bvh(bounds);
+    const auto &nodes = bvh.nodes();
+    ASSERT_EQ(nodes[0].count, 0u);
+    const Bvh::Node &a = nodes[1], &b = nodes[nodes[0].offset];
+    const Bvh::Node &floor = a.bounds.max.z <= 0 ? a : b, &objects = a.bounds.max.z <= 0 ? b : a;
+    EXPECT_EQ(floor.bounds.max.z, 0);
+    EXPECT_EQ(objects.bounds.min.z, 0);
+    EXPECT_EQ(objects.bounds.max.z, 5);
+    // Every item under the floor's node is a tile
+    std::vector<uint32_t> under;
+    auto collect = [&](auto &self, const Bvh::Node &n) -> void {
+        if (n.count > 0) {
+            for (uint32_t i = 0; i < n.count; ++i) under.push_back(bvh.itemOrder()[n.offset + i]);
+            return;
+        }
+        self(self, nodes[&n - nodes.data() + 1]);
+        self(self, nodes[n.offset]);
+    };
+    collect(collect, floor);
+    EXPECT_EQ(under.size(), tiles);
+    for (uint32_t item : under) EXPECT_LT(item, tiles);
+}
+
 TEST(Bvh, HandlesCoincidentCentroidsAndEmptyInput) {
     std::vector<Bounds3> same(40, Bounds3(Vec3(-1), Vec3(1)));
     Bvh bvh(same);
