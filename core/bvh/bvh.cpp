@@ -77,7 +77,7 @@ int Bvh::build(std::vector<BuildItem> &items, size_t begin, size_t end, int dept
             ++counts[axis][b];
             binBounds[axis][b] = unionBounds(binBounds[axis][b], items[i].bounds);
         }
-    // Evaluate the surface area heuristic at kBins-1 planes on each axis
+    // Evaluate the cost (the items times each side's chance of a visit) at kBins-1 planes on each axis
     int bestAxis = -1, bestSplit = -1;
     double bestCost = kInfinity;
     // A child's chance of a visit: its shares of the parent's area and volume (kVolumeWeight),
