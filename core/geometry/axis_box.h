@@ -34,17 +34,8 @@ class AxisBox {
     /// PrimitiveInstance::firstCrossing; `invDir`: 1 / ray.d, component by component.
     bool firstCrossing(const Ray &ray, const Vec3 &invDir, double tMin, double tMax, Crossing *c) const {
         PrimitiveSpan s;
-        if (!Box::slabSpan(min_, max_, objectOrigin(ray), ray.d, invDir, &s)) return false;
-        if (s.t0 > tMin) {
-            if (s.t0 >= tMax) return false;
-            *c = {s.t0, leaf_, s.face0};
-            return true;
-        }
-        if (s.t1 > tMin && s.t1 < tMax) {
-            *c = {s.t1, leaf_, s.face1};
-            return true;
-        }
-        return false;
+        return Box::slabSpan(min_, max_, objectOrigin(ray), ray.d, invDir, &s) &&
+               PrimitiveInstance::firstCrossingOf(s, leaf_, tMin, tMax, c);
     }
     /// PrimitiveInstance::surfaceAt. The box's normal, along an axis, is a unit vector already,
     /// which normalising would leave as it is, bit for bit.

@@ -125,18 +125,8 @@ bool PrimitiveInstance::firstCrossing(const Ray &ray, double tMin, double tMax, 
         }
         return false;
     }
-    Span s;
-    if (!lineSpan(ray, &s)) return false;
-    if (s.in.t > tMin) {
-        if (s.in.t >= tMax) return false;
-        *c = s.in;
-        return true;
-    }
-    if (s.out.t > tMin && s.out.t < tMax) {
-        *c = s.out;
-        return true;
-    }
-    return false;
+    PrimitiveSpan s;
+    return prim_->intersect(placement_.toObject(ray), &s) && firstCrossingOf(s, this, tMin, tMax, c);
 }
 
 bool PrimitiveInstance::inside(const Vec3 &p) const {

@@ -210,6 +210,22 @@ class PrimitiveInstance final : public LeafShape {
     bool lineSpan(const Ray &worldRay, Span *span) const;
     /// Whether the primitive is convex: its lineSpans() are lineSpan()'s one span, or none.
     bool convex() const { return convex_; }
+    /// The crossing firstCrossing() takes from the one span `s` of the line inside a convex
+    /// primitive (`leaf`): its entry where that lies within (tMin, tMax), else its exit where
+    /// that does.
+    static bool firstCrossingOf(const PrimitiveSpan &s, const LeafShape *leaf, double tMin, double tMax,
+                                Crossing *c) {
+        if (s.t0 > tMin) {
+            if (s.t0 >= tMax) return false;
+            *c = {s.t0, leaf, s.face0};
+            return true;
+        }
+        if (s.t1 > tMin && s.t1 < tMax) {
+            *c = {s.t1, leaf, s.face1};
+            return true;
+        }
+        return false;
+    }
     const Primitive &primitive() const { return *prim_; }
     const Placement &placement() const { return placement_; }
 
