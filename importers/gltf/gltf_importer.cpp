@@ -206,6 +206,47 @@ std::vector<unsigned char> readMainFile(const std::string &path, const SourceLoc
     return bytes;
 }
 
+/// Checks a .glb's header and chunk lengths before tinygltf reads them. tinygltf 2.7 bounds the
+/// BIN chunk's data by the header's length without counting the chunk's own 8-byte header, so a
+/// BIN chunk declaring up to 8 bytes more than follow it makes a buffer copy from past the end
+/// of the file; a length past the file's end is refused here as well, with what it declares.
+void checkGlbLayout(const std::vector<unsigned char> &bytes, const SourceLoc &loc) {
+    auto word = [&](size_t at) {
+        uint32_t v = 0;
+        std::memcpy(&v, bytes.data() + at, 4);
+        return static_cast<uint64_t>(v);
+    };
+    auto fail = [&](const std::string &what) {
+        throw ParseError(loc, "invalid binary glTF (.glb): " + what);
+    };
+    const uint64_t size = bytes.size();
+    if (size < 20)
+        fail("the file is " + std::to_string(size) +
+             " bytes, shorter than the 12-byte header and a chunk header");
+    if (word(4) != 2)
+        fail("container version " + std::to_string(word(4)) + " (at byte 4); only version 2 is read");
+    const uint64_t length = word(8);
+    if (length > size)
+        fail("the header's length (at byte 8) is " + std::to_string(length) +
+             " bytes, but the file has " + std::to_string(size) + " (truncated?)");
+    const uint64_t json = word(12);
+    if (word(16) != 0x4E4F534Au) fail("the first chunk (at byte 12) is not the JSON chunk");
+    if (json == 0) fail("the JSON chunk (at byte 12) is empty");
+    if (20 + json > length)
+        fail("the JSON chunk (at byte 12) declares " + std::to_string(json) + " bytes, but " +
+             std::to_string(length - 20) + " follow its header");
+    const uint64_t rest = length - 20 - json;
+    if (rest == 0) return;  // no BIN chunk
+    if (rest < 8)
+        fail(std::to_string(rest) + " bytes after the JSON chunk (at byte " +
+             std::to_string(20 + json) + "), too few for a chunk header");
+    const uint64_t bin = word(20 + json);
+    if (8 + bin > rest)
+        fail("the chunk at byte " + std::to_string(20 + json) + " declares " +
+             std::to_string(bin) + " bytes, but " + std::to_string(rest - 8) +
+             " follow its header");
+}
+
 /// The JSON text: the whole .gltf, or a .glb's first chunk (empty when its header is broken,
 /// which tinygltf reports).
 std::string_view jsonText(const std::vector<unsigned char> &bytes, bool binary) {
@@ -269,6 +310,7 @@ std::unique_ptr<LoadedFile> loadFile(const std::string &path, const SourceLoc &l
                                      DiagnosticSink &diag, bool keepImages) {
     std::vector<unsigned char> bytes = readMainFile(path, loc);
     bool binary = bytes.size() >= 4 && std::equal(bytes.begin(), bytes.begin() + 4, "glTF");
+    if (binary) checkGlbLayout(bytes, loc);
     std::vector<size_t> fallbacks = detail::patchJsonForTinygltf(bytes, binary);
     std::string baseDir = std::filesystem::path(path).parent_path().string();
 

@@ -127,7 +127,10 @@ TEST(GltfErrors, TruncatedGlb) {
     TempDir tmp;
     std::vector<unsigned char> glb = readBytes(sample("BoxInterleaved.glb"));
     writeBytes(tmp.file("cut.glb"), glb.data(), glb.size() / 2);
-    expectError<ParseError>(tmp.file("cut.glb"), {"cannot load glTF binary (.glb) file"});
+    expectError<ParseError>(tmp.file("cut.glb"),
+                            {"invalid binary glTF (.glb): the header's length (at byte 8) is " +
+                                 std::to_string(glb.size()) + " bytes, but the file has " +
+                                 std::to_string(glb.size() / 2) + " (truncated?)"});
 }
 
 TEST(GltfErrors, IndexOutOfRange) {

@@ -163,6 +163,71 @@ TEST(GltfHostile, GlbBuffersWithoutUriCannotMultiplyTheBinChunk) {
     }
 }
 
+TEST(GltfHostile, GlbChunkLengthsAreCheckedAgainstTheFile) {
+    // tinygltf 2.7 bounds the BIN chunk's data by the header's length without the chunk's own
+    // 8-byte header: a BIN chunk declaring 8 bytes more than follow made a buffer copy from
+    // past the end of the file (found by glb_fuzz; tests/fuzz/regressions/glb)
+    auto u32 = [](std::string &out, uint32_t v) {
+        out.append(reinterpret_cast<const char *>(&v), 4);
+    };
+    std::string json = R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":16}]})";
+    while (json.size() % 4) json += ' ';
+    // version, the header's length (0: the file's), JSON length (0: json's), BIN length, BIN
+    // bytes present
+    auto glb = [&](uint32_t version, uint32_t length, uint32_t jsonLength, uint32_t binLength,
+                   size_t binBytes) {
+        std::string out = "glTF";
+        u32(out, version);
+        size_t size = 20 + json.size() + 8 + binBytes;
+        u32(out, length ? length : static_cast<uint32_t>(size));
+        u32(out, jsonLength ? jsonLength : static_cast<uint32_t>(json.size()));
+        u32(out, 0x4E4F534Au);
+        out += json;
+        u32(out, binLength);
+        u32(out, 0x004E4942u);
+        out += std::string(binBytes, '\0');
+        return out;
+    };
+    const uint32_t j = static_cast<uint32_t>(json.size());
+    struct Case {
+        std::string bytes, expect;
+    };
+    const Case cases[] = {
+        {glb(2, 0, 0, 16, 8), "the chunk at byte " + std::to_string(20 + j) +
+                                  " declares 16 bytes, but 8 follow its header"},
+        {glb(2, 0, 0, 16, 12), "declares 16 bytes, but 12 follow"},
+        {glb(2, 20 + j + 8 + 16 + 4, 0, 16, 16),
+         "length (at byte 8) is " + std::to_string(20 + j + 8 + 20) + " bytes, but the file has " +
+             std::to_string(20 + j + 8 + 16)},
+        {glb(2, 0, j + 32, 16, 16), "the JSON chunk (at byte 12) declares " +
+                                        std::to_string(j + 32) + " bytes, but " +
+                                        std::to_string(j + 24) + " follow its header"},
+        {glb(2, 20 + j + 4, 0, 16, 16), "4 bytes after the JSON chunk"},
+        {glb(1, 0, 0, 16, 16), "container version 1 (at byte 4); only version 2 is read"},
+        {glb(2, 0, 0, 16, 16).substr(0, 19), "the file is 19 bytes"},
+    };
+    TempDir tmp;
+    for (const Case &c : cases) {
+        writeText(tmp.file("bad.glb"), c.bytes);
+        if (auto e = parseError(tmp.file("bad.glb"))) {
+            EXPECT_NE(std::string(e->what()).find("invalid binary glTF (.glb): "),
+                      std::string::npos)
+                << e->what();
+            EXPECT_NE(std::string(e->what()).find(c.expect), std::string::npos) << e->what();
+        }
+    }
+    // The same file with its 16 BIN bytes present imports (a library: no scenes, no error
+    // about its layout)
+    writeText(tmp.file("good.glb"), glb(2, 0, 0, 16, 16));
+    DiagnosticSink diag;
+    try {
+        importGltf(tmp.file("good.glb"), diag);
+    } catch (const std::exception &e) {
+        EXPECT_EQ(std::string(e.what()).find("invalid binary glTF"), std::string::npos)
+            << e.what();
+    }
+}
+
 TEST(GltfHostile, OneFileNamedByManyBuffersIsNotReadAgainAndAgain) {
     // 200 buffers naming one 256 KiB file would keep 50 MiB; reading stops past twice the
     // file's size plus 16 MiB
