@@ -210,7 +210,8 @@ std::vector<unsigned char> readMainFile(const std::string &path, const SourceLoc
 /// BIN chunk's data by the header's length without counting the chunk's own 8-byte header, so a
 /// BIN chunk declaring up to 8 bytes more than follow it makes a buffer copy from past the end
 /// of the file; a length past the file's end is refused here as well, with what it declares.
-void checkGlbLayout(const std::vector<unsigned char> &bytes, const SourceLoc &loc) {
+/// Returns the container's length (bytes after it are not part of it).
+size_t checkGlbLayout(const std::vector<unsigned char> &bytes, const SourceLoc &loc) {
     auto word = [&](size_t at) {
         uint32_t v = 0;
         std::memcpy(&v, bytes.data() + at, 4);
@@ -236,7 +237,7 @@ void checkGlbLayout(const std::vector<unsigned char> &bytes, const SourceLoc &lo
         fail("the JSON chunk (at byte 12) declares " + std::to_string(json) + " bytes, but " +
              std::to_string(length - 20) + " follow its header");
     const uint64_t rest = length - 20 - json;
-    if (rest == 0) return;  // no BIN chunk
+    if (rest == 0) return length;  // no BIN chunk
     if (rest < 8)
         fail(std::to_string(rest) + " bytes after the JSON chunk (at byte " +
              std::to_string(20 + json) + "), too few for a chunk header");
@@ -245,6 +246,7 @@ void checkGlbLayout(const std::vector<unsigned char> &bytes, const SourceLoc &lo
         fail("the chunk at byte " + std::to_string(20 + json) + " declares " +
              std::to_string(bin) + " bytes, but " + std::to_string(rest - 8) +
              " follow its header");
+    return length;
 }
 
 /// The JSON text: the whole .gltf, or a .glb's first chunk (empty when its header is broken,
@@ -310,7 +312,16 @@ std::unique_ptr<LoadedFile> loadFile(const std::string &path, const SourceLoc &l
                                      DiagnosticSink &diag, bool keepImages) {
     std::vector<unsigned char> bytes = readMainFile(path, loc);
     bool binary = bytes.size() >= 4 && std::equal(bytes.begin(), bytes.begin() + 4, "glTF");
-    if (binary) checkGlbLayout(bytes, loc);
+    // Bytes past the container's length are dropped: the JSON rewrite below makes the length
+    // that of the whole vector, and tinygltf would then read them as a chunk
+    if (binary) {
+        size_t length = checkGlbLayout(bytes, loc);
+        if (length < bytes.size())
+            diag.warning(loc, std::to_string(bytes.size() - length) +
+                                  " bytes after the binary glTF's length (" +
+                                  std::to_string(length) + " bytes, at byte 8) are ignored");
+        bytes.resize(length);
+    }
     std::vector<size_t> fallbacks = detail::patchJsonForTinygltf(bytes, binary);
     std::string baseDir = std::filesystem::path(path).parent_path().string();
 

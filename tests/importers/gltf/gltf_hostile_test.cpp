@@ -216,6 +216,35 @@ TEST(GltfHostile, GlbChunkLengthsAreCheckedAgainstTheFile) {
             EXPECT_NE(std::string(e->what()).find(c.expect), std::string::npos) << e->what();
         }
     }
+    // Bytes after the container's length are not a chunk: with no BIN chunk inside the length
+    // and a BIN-like chunk after it, buffers[0] has no data. (The rewrite of a meshopt
+    // fallback buffer used to carry those bytes into the container, where tinygltf read them
+    // as its BIN chunk, 8 bytes past the end.)
+    {
+        std::string fallbackJson = R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":16},)"
+                        R"({"byteLength":8,"extensions":{"EXT_meshopt_compression":)"
+                        R"({"fallback":true}}}]})";
+        while (fallbackJson.size() % 4) fallbackJson += ' ';
+        std::string out = "glTF";
+        u32(out, 2);
+        u32(out, static_cast<uint32_t>(20 + fallbackJson.size()));
+        u32(out, static_cast<uint32_t>(fallbackJson.size()));
+        u32(out, 0x4E4F534Au);
+        out += fallbackJson;
+        u32(out, 16);
+        u32(out, 0x004E4942u);
+        out += std::string(8, '\0');
+        writeText(tmp.file("trailing.glb"), out);
+        DiagnosticSink sink;
+        if (auto e = parseError(tmp.file("trailing.glb"), &sink)) {
+            EXPECT_NE(std::string(e->what()).find("empty BIN chunk"), std::string::npos)
+                << e->what();
+        }
+        EXPECT_EQ(sink.countContaining("16 bytes after the binary glTF's length (" +
+                                       std::to_string(20 + fallbackJson.size()) +
+                                       " bytes, at byte 8) are ignored"),
+                  1);
+    }
     // The same file with its 16 BIN bytes present imports (a library: no scenes, no error
     // about its layout)
     writeText(tmp.file("good.glb"), glb(2, 0, 0, 16, 16));
