@@ -225,7 +225,8 @@ size_t checkGlbLayout(const std::vector<unsigned char> &bytes, const SourceLoc &
         fail("the file is " + std::to_string(size) +
              " bytes, shorter than the 12-byte header and a chunk header");
     if (word(4) != 2)
-        fail("container version " + std::to_string(word(4)) + " (at byte 4); only version 2 is read");
+        fail("container version " + std::to_string(word(4)) +
+             " (at byte 4); only version 2 is read");
     const uint64_t length = word(8);
     if (length > size)
         fail("the header's length (at byte 8) is " + std::to_string(length) +

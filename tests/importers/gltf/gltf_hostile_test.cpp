@@ -137,24 +137,40 @@ TEST(GltfHostile, NonRegularFilesAreRefused) {
     }
 }
 
+/// A .glb built to order: `json` padded with spaces to 4 bytes, then a BIN chunk declaring
+/// `binLength` bytes with `binBytes` zero bytes after its header (none when both are 0).
+/// Zeros in `version`, `length` and `jsonLength` stand for the true values.
+struct Glb {
+    uint32_t version = 2, length = 0, jsonLength = 0, binLength = 0;
+    size_t binBytes = 0;
+    std::string bytes(std::string json) const {
+        auto u32 = [](std::string &out, uint32_t v) {
+            out.append(reinterpret_cast<const char *>(&v), 4);
+        };
+        while (json.size() % 4) json += ' ';
+        bool bin = binLength || binBytes;
+        size_t size = 20 + json.size() + (bin ? 8 + binBytes : 0);
+        std::string out = "glTF";
+        u32(out, version ? version : 2);
+        u32(out, length ? length : static_cast<uint32_t>(size));
+        u32(out, jsonLength ? jsonLength : static_cast<uint32_t>(json.size()));
+        u32(out, 0x4E4F534Au);
+        out += json;
+        if (bin) {
+            u32(out, binLength);
+            u32(out, 0x004E4942u);
+            out += std::string(binBytes, '\0');
+        }
+        return out;
+    }
+};
+
 TEST(GltfHostile, GlbBuffersWithoutUriCannotMultiplyTheBinChunk) {
     // 2000 buffers, each a copy of a 64 KiB BIN chunk, would take 128 MiB; refused before
     std::string json = R"({"asset":{"version":"2.0"},"buffers":[)";
     for (int i = 0; i < 2000; ++i) json += std::string(i ? "," : "") + R"({"byteLength":65536})";
     json += "]}";
-    while (json.size() % 4) json += ' ';
-    auto u32 = [](std::string &out, uint32_t v) {
-        out.append(reinterpret_cast<const char *>(&v), 4);
-    };
-    std::string glb = "glTF";
-    u32(glb, 2);
-    u32(glb, static_cast<uint32_t>(20 + json.size() + 8 + 65536));
-    u32(glb, static_cast<uint32_t>(json.size()));
-    u32(glb, 0x4E4F534Au);
-    glb += json;
-    u32(glb, 65536);
-    u32(glb, 0x004E4942u);
-    glb += std::string(65536, '\0');
+    std::string glb = Glb{.binLength = 65536, .binBytes = 65536}.bytes(json);
     TempDir tmp;
     writeText(tmp.file("many.glb"), glb);
     if (auto e = parseError(tmp.file("many.glb"))) {
@@ -167,87 +183,63 @@ TEST(GltfHostile, GlbChunkLengthsAreCheckedAgainstTheFile) {
     // tinygltf 2.7 bounds the BIN chunk's data by the header's length without the chunk's own
     // 8-byte header: a BIN chunk declaring 8 bytes more than follow made a buffer copy from
     // past the end of the file (found by glb_fuzz; tests/fuzz/regressions/glb)
-    auto u32 = [](std::string &out, uint32_t v) {
-        out.append(reinterpret_cast<const char *>(&v), 4);
-    };
-    std::string json = R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":16}]})";
-    while (json.size() % 4) json += ' ';
-    // version, the header's length (0: the file's), JSON length (0: json's), BIN length, BIN
-    // bytes present
-    auto glb = [&](uint32_t version, uint32_t length, uint32_t jsonLength, uint32_t binLength,
-                   size_t binBytes) {
-        std::string out = "glTF";
-        u32(out, version);
-        size_t size = 20 + json.size() + 8 + binBytes;
-        u32(out, length ? length : static_cast<uint32_t>(size));
-        u32(out, jsonLength ? jsonLength : static_cast<uint32_t>(json.size()));
-        u32(out, 0x4E4F534Au);
-        out += json;
-        u32(out, binLength);
-        u32(out, 0x004E4942u);
-        out += std::string(binBytes, '\0');
-        return out;
-    };
-    const uint32_t j = static_cast<uint32_t>(json.size());
+    const std::string json = R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":16}]})";
+    const uint32_t j = static_cast<uint32_t>(json.size() + 3) / 4 * 4;  // padded
     struct Case {
-        std::string bytes, expect;
+        Glb glb;
+        std::string expect;
     };
     const Case cases[] = {
-        {glb(2, 0, 0, 16, 8), "the chunk at byte " + std::to_string(20 + j) +
-                                  " declares 16 bytes, but 8 follow its header"},
-        {glb(2, 0, 0, 16, 12), "declares 16 bytes, but 12 follow"},
-        {glb(2, 20 + j + 8 + 16 + 4, 0, 16, 16),
+        {{.binLength = 16, .binBytes = 8},
+         "the chunk at byte " + std::to_string(20 + j) +
+             " declares 16 bytes, but 8 follow its header"},
+        {{.binLength = 16, .binBytes = 12}, "declares 16 bytes, but 12 follow"},
+        {{.length = 20 + j + 8 + 20, .binLength = 16, .binBytes = 16},
          "length (at byte 8) is " + std::to_string(20 + j + 8 + 20) + " bytes, but the file has " +
              std::to_string(20 + j + 8 + 16)},
-        {glb(2, 0, j + 32, 16, 16), "the JSON chunk (at byte 12) declares " +
-                                        std::to_string(j + 32) + " bytes, but " +
-                                        std::to_string(j + 24) + " follow its header"},
-        {glb(2, 20 + j + 4, 0, 16, 16), "4 bytes after the JSON chunk"},
-        {glb(1, 0, 0, 16, 16), "container version 1 (at byte 4); only version 2 is read"},
-        {glb(2, 0, 0, 16, 16).substr(0, 19), "the file is 19 bytes"},
+        {{.jsonLength = j + 32, .binLength = 16, .binBytes = 16},
+         "the JSON chunk (at byte 12) declares " + std::to_string(j + 32) + " bytes, but " +
+             std::to_string(j + 24) + " follow its header"},
+        {{.length = 20 + j + 4, .binLength = 16, .binBytes = 16}, "4 bytes after the JSON chunk"},
+        {{.version = 1, .binLength = 16, .binBytes = 16},
+         "container version 1 (at byte 4); only version 2 is read"},
     };
     TempDir tmp;
-    for (const Case &c : cases) {
-        writeText(tmp.file("bad.glb"), c.bytes);
+    auto expectLayoutError = [&](const std::string &bytes, const std::string &expect) {
+        writeText(tmp.file("bad.glb"), bytes);
         if (auto e = parseError(tmp.file("bad.glb"))) {
             EXPECT_NE(std::string(e->what()).find("invalid binary glTF (.glb): "),
                       std::string::npos)
                 << e->what();
-            EXPECT_NE(std::string(e->what()).find(c.expect), std::string::npos) << e->what();
+            EXPECT_NE(std::string(e->what()).find(expect), std::string::npos) << e->what();
         }
-    }
+    };
+    for (const Case &c : cases) expectLayoutError(c.glb.bytes(json), c.expect);
+    expectLayoutError(Glb{.binLength = 16, .binBytes = 16}.bytes(json).substr(0, 19),
+                      "the file is 19 bytes");
     // Bytes after the container's length are not a chunk: with no BIN chunk inside the length
     // and a BIN-like chunk after it, buffers[0] has no data. (The rewrite of a meshopt
     // fallback buffer used to carry those bytes into the container, where tinygltf read them
     // as its BIN chunk, 8 bytes past the end.)
     {
-        std::string fallbackJson = R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":16},)"
-                        R"({"byteLength":8,"extensions":{"EXT_meshopt_compression":)"
-                        R"({"fallback":true}}}]})";
-        while (fallbackJson.size() % 4) fallbackJson += ' ';
-        std::string out = "glTF";
-        u32(out, 2);
-        u32(out, static_cast<uint32_t>(20 + fallbackJson.size()));
-        u32(out, static_cast<uint32_t>(fallbackJson.size()));
-        u32(out, 0x4E4F534Au);
-        out += fallbackJson;
-        u32(out, 16);
-        u32(out, 0x004E4942u);
-        out += std::string(8, '\0');
-        writeText(tmp.file("trailing.glb"), out);
+        const std::string fallbackJson =
+            R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":16},)"
+            R"({"byteLength":8,"extensions":{"EXT_meshopt_compression":{"fallback":true}}}]})";
+        const uint32_t length = static_cast<uint32_t>(20 + (fallbackJson.size() + 3) / 4 * 4);
+        writeText(tmp.file("trailing.glb"),
+                  Glb{.length = length, .binLength = 16, .binBytes = 8}.bytes(fallbackJson));
         DiagnosticSink sink;
         if (auto e = parseError(tmp.file("trailing.glb"), &sink)) {
             EXPECT_NE(std::string(e->what()).find("empty BIN chunk"), std::string::npos)
                 << e->what();
         }
         EXPECT_EQ(sink.countContaining("16 bytes after the binary glTF's length (" +
-                                       std::to_string(20 + fallbackJson.size()) +
-                                       " bytes, at byte 8) are ignored"),
+                                       std::to_string(length) + " bytes, at byte 8) are ignored"),
                   1);
     }
     // The same file with its 16 BIN bytes present imports (a library: no scenes, no error
     // about its layout)
-    writeText(tmp.file("good.glb"), glb(2, 0, 0, 16, 16));
+    writeText(tmp.file("good.glb"), Glb{.binLength = 16, .binBytes = 16}.bytes(json));
     DiagnosticSink diag;
     try {
         importGltf(tmp.file("good.glb"), diag);
