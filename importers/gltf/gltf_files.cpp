@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 
@@ -162,6 +163,29 @@ JsonScan scanJson(std::string_view text) {
                 ref.column = column(start);
                 scan.uris.push_back(std::move(ref));
             }
+            continue;
+        }
+        // A number: a buffer's byteLength below 1?
+        if ((c == '-' || (c >= '0' && c <= '9')) && !scan.emptyBuffer && !stack.empty()) {
+            const Container &top = stack.back();
+            size_t end = i + 1;
+            while (end < text.size() && std::strchr("0123456789+-.eE", text[end]) != nullptr)
+                ++end;
+            if (top.object && !top.expectKey && top.key == "byteLength" && stack.size() == 3 &&
+                stack[0].object && stack[0].key == "buffers" && !stack[1].object) {
+                std::string number(text.substr(i, end - i));
+                char *stop = nullptr;
+                double v = std::strtod(number.c_str(), &stop);
+                if (stop == number.c_str() + number.size() && v < 1) {
+                    NumberRef ref;
+                    ref.path = jsonPath("buffers", stack[1].index) + ".byteLength";
+                    ref.text = number;
+                    ref.line = line;
+                    ref.column = column(i);
+                    scan.emptyBuffer = std::move(ref);
+                }
+            }
+            i = end;
             continue;
         }
         ++i;

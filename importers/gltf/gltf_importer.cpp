@@ -274,6 +274,9 @@ void prescan(std::string_view text, bool binary, const std::string &path, const 
             failAt(binary, path, loc, ref.line, ref.column,
                    ref.path + " '" + ref.uri + "' " + problem + "; not read");
     }
+    if (const auto &empty = scan.emptyBuffer)
+        failAt(binary, path, loc, empty->line, empty->column,
+               empty->path + " is " + empty->text + "; a buffer holds at least 1 byte");
     // Each uri-less buffer of a .glb is a copy of the BIN chunk; only buffers[0] may be one
     if (binary && scan.buffersWithoutUri > 1)
         throw ParseError(loc, std::to_string(scan.buffersWithoutUri) +

@@ -62,16 +62,27 @@ struct UriRef {
     int line = 0, column = 0;
 };
 
+/// A number in the JSON text.
+struct NumberRef {
+    std::string path;  ///< "buffers[2].byteLength"
+    std::string text;  ///< as written
+    int line = 0, column = 0;
+};
+
 /// What scanJson finds before tinygltf parses the text.
 struct JsonScan {
     bool tooDeep = false;
     int deepLine = 0, deepColumn = 0;  ///< the bracket that went past kMaxJsonDepth
     std::vector<UriRef> uris;
     size_t buffersWithoutUri = 0;
+    /// The first buffers[i].byteLength written as a number below 1 (the schema's minimum;
+    /// tinygltf 2.7 throws std::out_of_range on a .glb's 0)
+    std::optional<NumberRef> emptyBuffer;
 };
 
 /// One pass over JSON text (valid or not; nlohmann reports syntax errors afterwards): nesting
-/// depth and the `uri` of every buffers[i] and images[i], with line and column. No recursion,
+/// depth, the `uri` of every buffers[i] and images[i], and a buffer's byteLength below 1, with
+/// line and column. No recursion,
 /// no regular expressions.
 JsonScan scanJson(std::string_view text);
 

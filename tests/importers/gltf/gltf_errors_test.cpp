@@ -105,15 +105,7 @@ TEST(GltfErrors, OverflowingNumberIsLocated) {
     }
     // The same in a .glb's JSON chunk: located within the chunk
     std::string json = "{\"asset\":{\"version\":\"2.0\"},\n\"nodes\":[{\"scale\":[1,1e999,1]}]}";
-    while (json.size() % 4) json += ' ';
-    auto u32 = [](std::string &out, uint32_t v) { out.append(reinterpret_cast<const char *>(&v), 4); };
-    std::string glb = "glTF";
-    u32(glb, 2);
-    u32(glb, static_cast<uint32_t>(20 + json.size()));
-    u32(glb, static_cast<uint32_t>(json.size()));
-    u32(glb, 0x4E4F534Au);
-    glb += json;
-    writeText(tmp.file("inf.glb"), glb);
+    writeText(tmp.file("inf.glb"), Glb{}.bytes(json));
     if (auto e = parseErrorOf(tmp.file("inf.glb"))) {
         EXPECT_NE(std::string(e->what()).find("1e999 is too large for a double (JSON chunk of the "
                                               "binary glTF, its line 2, column 22)"),

@@ -137,34 +137,6 @@ TEST(GltfHostile, NonRegularFilesAreRefused) {
     }
 }
 
-/// A .glb built to order: `json` padded with spaces to 4 bytes, then a BIN chunk declaring
-/// `binLength` bytes with `binBytes` zero bytes after its header (none when both are 0).
-/// Zeros in `version`, `length` and `jsonLength` stand for the true values.
-struct Glb {
-    uint32_t version = 2, length = 0, jsonLength = 0, binLength = 0;
-    size_t binBytes = 0;
-    std::string bytes(std::string json) const {
-        auto u32 = [](std::string &out, uint32_t v) {
-            out.append(reinterpret_cast<const char *>(&v), 4);
-        };
-        while (json.size() % 4) json += ' ';
-        bool bin = binLength || binBytes;
-        size_t size = 20 + json.size() + (bin ? 8 + binBytes : 0);
-        std::string out = "glTF";
-        u32(out, version ? version : 2);
-        u32(out, length ? length : static_cast<uint32_t>(size));
-        u32(out, jsonLength ? jsonLength : static_cast<uint32_t>(json.size()));
-        u32(out, 0x4E4F534Au);
-        out += json;
-        if (bin) {
-            u32(out, binLength);
-            u32(out, 0x004E4942u);
-            out += std::string(binBytes, '\0');
-        }
-        return out;
-    }
-};
-
 TEST(GltfHostile, GlbBuffersWithoutUriCannotMultiplyTheBinChunk) {
     // 2000 buffers, each a copy of a 64 KiB BIN chunk, would take 128 MiB; refused before
     std::string json = R"({"asset":{"version":"2.0"},"buffers":[)";
@@ -245,6 +217,48 @@ TEST(GltfHostile, GlbChunkLengthsAreCheckedAgainstTheFile) {
         importGltf(tmp.file("good.glb"), diag);
     } catch (const std::exception &e) {
         EXPECT_EQ(std::string(e.what()).find("invalid binary glTF"), std::string::npos)
+            << e.what();
+    }
+}
+
+TEST(GltfHostile, EmptyBuffersAreLocatedErrors) {
+    // byteLength 0 made tinygltf 2.7 throw std::out_of_range from a .glb (its message,
+    // "vector::_M_range_check ...", was all the user saw); the schema's minimum is 1
+    TempDir tmp;
+    const std::string json =
+        "{\"asset\":{\"version\":\"2.0\"},\n\"buffers\":[{\"byteLength\":16},{\"byteLength\":0}]}";
+    writeText(tmp.file("empty.glb"), Glb{.binLength = 16, .binBytes = 16}.bytes(json));
+    if (auto e = parseError(tmp.file("empty.glb"))) {
+        EXPECT_NE(std::string(e->what()).find("buffers[1].byteLength is 0; a buffer holds at "
+                                              "least 1 byte (JSON chunk of the binary glTF, "
+                                              "its line 2, column 44)"),
+                  std::string::npos)
+            << e->what();
+    }
+    // In a .gltf at its line and column; a negative or fractional length too
+    for (std::string length : {"0", "-3", "0.5", "0e9"}) {
+        std::string text = "{\"asset\":{\"version\":\"2.0\"},\n \"buffers\":[{\"uri\":\"b.bin\", "
+                           "\"byteLength\":" +
+                           length + "}]}";
+        writeText(tmp.file("empty.gltf"), text);
+        if (auto e = parseError(tmp.file("empty.gltf"))) {
+            EXPECT_NE(std::string(e->what()).find("buffers[0].byteLength is " + length + ";"),
+                      std::string::npos)
+                << e->what();
+            EXPECT_EQ(e->loc().line, 2);
+            EXPECT_EQ(e->loc().col, static_cast<int>(text.find(length, 30) - text.find('\n')));
+        }
+    }
+    // Other numbers named byteLength (a bufferView's, an image's extras) are not a buffer's
+    std::string view = "{\"asset\":{\"version\":\"2.0\"},\"bufferViews\":[{\"buffer\":0,"
+                       "\"byteLength\":0}],\"buffers\":[{\"uri\":\"b.bin\",\"byteLength\":4}]}";
+    writeText(tmp.file("b.bin"), "abcd");
+    writeText(tmp.file("view.gltf"), view);
+    DiagnosticSink sink;
+    try {
+        importGltf(tmp.file("view.gltf"), sink);
+    } catch (const std::exception &e) {
+        EXPECT_EQ(std::string(e.what()).find("a buffer holds at least"), std::string::npos)
             << e.what();
     }
 }

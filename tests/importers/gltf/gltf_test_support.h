@@ -80,6 +80,34 @@ class TempDir {
     std::filesystem::path path_;
 };
 
+/// A .glb built to order: `json` padded with spaces to 4 bytes, then a BIN chunk declaring
+/// `binLength` bytes with `binBytes` zero bytes after its header (none when both are 0).
+/// Zeros in `version`, `length` and `jsonLength` stand for the true values.
+struct Glb {
+    uint32_t version = 2, length = 0, jsonLength = 0, binLength = 0;
+    size_t binBytes = 0;
+    std::string bytes(std::string json) const {
+        auto u32 = [](std::string &out, uint32_t v) {
+            out.append(reinterpret_cast<const char *>(&v), 4);
+        };
+        while (json.size() % 4) json += ' ';
+        bool bin = binLength || binBytes;
+        size_t size = 20 + json.size() + (bin ? 8 + binBytes : 0);
+        std::string out = "glTF";
+        u32(out, version ? version : 2);
+        u32(out, length ? length : static_cast<uint32_t>(size));
+        u32(out, jsonLength ? jsonLength : static_cast<uint32_t>(json.size()));
+        u32(out, 0x4E4F534Au);
+        out += json;
+        if (bin) {
+            u32(out, binLength);
+            u32(out, 0x004E4942u);
+            out += std::string(binBytes, '\0');
+        }
+        return out;
+    }
+};
+
 /// Replaces the one occurrence of `from` in `text` (fails the test if it is not there once).
 inline std::string replaceOnce(std::string text, const std::string &from, const std::string &to) {
     size_t at = text.find(from);
