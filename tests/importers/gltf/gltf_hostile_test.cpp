@@ -189,6 +189,11 @@ TEST(GltfHostile, GlbChunkLengthsAreCheckedAgainstTheFile) {
     for (const Case &c : cases) expectLayoutError(c.glb.bytes(json), c.expect);
     expectLayoutError(Glb{.binLength = 16, .binBytes = 16}.bytes(json).substr(0, 19),
                       "the file is 19 bytes");
+    expectLayoutError(Glb{}.bytes(""), "the JSON chunk (at byte 12) is empty");
+    std::string notJson = Glb{}.bytes(json);
+    notJson.replace(16, 3, "BIN");  // and a NUL: the BIN chunk's type
+    notJson[19] = '\0';
+    expectLayoutError(notJson, "the first chunk (at byte 12) is not the JSON chunk");
     // Bytes after the container's length are not a chunk: with no BIN chunk inside the length
     // and a BIN-like chunk after it, buffers[0] has no data. (The rewrite of a meshopt
     // fallback buffer used to carry those bytes into the container, where tinygltf read them
