@@ -250,6 +250,37 @@ size_t checkGlbLayout(const std::vector<unsigned char> &bytes, const SourceLoc &
     return length;
 }
 
+/// Keeps of a checked .glb, cut to its length, what tinygltf 2.7 reads. The spec allows a BIN
+/// chunk of length 0 (one SHOULD be omitted, and the file means the same) and has readers skip
+/// chunks of unknown types, but tinygltf refuses either as the second chunk. Such a chunk and
+/// those after it are dropped (the BIN chunk can only be the second) and the header's length
+/// made to match; an unknown type is named in a warning.
+void keepChunksTinygltfReads(std::vector<unsigned char> &bytes, const SourceLoc &loc,
+                             DiagnosticSink &diag) {
+    uint32_t json = 0, bin = 0, type = 0;
+    std::memcpy(&json, bytes.data() + 12, 4);
+    size_t second = 20 + size_t(json);
+    if (bytes.size() < second + 8) return;  // JSON only
+    std::memcpy(&bin, bytes.data() + second, 4);
+    std::memcpy(&type, bytes.data() + second + 4, 4);
+    if (type == 0x004E4942u && bin != 0) return;
+    if (type != 0x004E4942u) {
+        std::string name;
+        for (int k = 0; k < 4; ++k) {
+            auto c = static_cast<unsigned char>(type >> (8 * k));
+            name += std::isprint(c) ? std::string(1, static_cast<char>(c))
+                                    : "\\x" + std::string(1, "0123456789abcdef"[c >> 4]) +
+                                          "0123456789abcdef"[c & 15];
+        }
+        diag.warning(loc, "binary glTF: the chunk at byte " + std::to_string(second) +
+                              " has the unknown type '" + name + "' and is ignored, with any "
+                              "after it (the BIN chunk can only be the second)");
+    }
+    bytes.resize(second);
+    uint32_t length = static_cast<uint32_t>(bytes.size());
+    std::memcpy(bytes.data() + 8, &length, 4);
+}
+
 /// The JSON text: the whole .gltf, or a .glb's first chunk (empty when its header is broken,
 /// which tinygltf reports).
 std::string_view jsonText(const std::vector<unsigned char> &bytes, bool binary) {
@@ -325,6 +356,7 @@ std::unique_ptr<LoadedFile> loadFile(const std::string &path, const SourceLoc &l
                                   " bytes after the binary glTF's length (" +
                                   std::to_string(length) + " bytes, at byte 8) are ignored");
         bytes.resize(length);
+        keepChunksTinygltfReads(bytes, loc, diag);
     }
     std::vector<size_t> fallbacks = detail::patchJsonForTinygltf(bytes, binary);
     std::string baseDir = std::filesystem::path(path).parent_path().string();

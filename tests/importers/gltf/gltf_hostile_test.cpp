@@ -214,6 +214,27 @@ TEST(GltfHostile, GlbChunkLengthsAreCheckedAgainstTheFile) {
                                        std::to_string(length) + " bytes, at byte 8) are ignored"),
                   1);
     }
+    // A BIN chunk of length 0 is allowed (tinygltf 2.7 refused it: "Insufficient storage space
+    // for Chunk1"); the triangle imports from its data URI
+    {
+        writeText(tmp.file("empty_bin.glb"), Glb{.emptyBin = true}.bytes(triangleGltf("")));
+        DiagnosticSink sink;
+        ir::Scene scene = importGltf(tmp.file("empty_bin.glb"), sink);
+        EXPECT_EQ(instancedTriangles(scene), 1u);
+    }
+    // So is a second chunk of an unknown type, which readers skip (a warning names it)
+    {
+        std::string bytes = Glb{.binLength = 8, .binBytes = 8}.bytes(triangleGltf(""));
+        size_t type = bytes.size() - 12;
+        bytes.replace(type, 4, "XYZ\x01");
+        writeText(tmp.file("unknown_chunk.glb"), bytes);
+        DiagnosticSink sink;
+        ir::Scene scene = importGltf(tmp.file("unknown_chunk.glb"), sink);
+        EXPECT_EQ(instancedTriangles(scene), 1u);
+        EXPECT_EQ(sink.countContaining("the chunk at byte " + std::to_string(type - 4) +
+                                       " has the unknown type 'XYZ\\x01' and is ignored"),
+                  1);
+    }
     // The same file with its 16 BIN bytes present imports (a library: no scenes, no error
     // about its layout)
     writeText(tmp.file("good.glb"), Glb{.binLength = 16, .binBytes = 16}.bytes(json));

@@ -81,17 +81,19 @@ class TempDir {
 };
 
 /// A .glb built to order: `json` padded with spaces to 4 bytes, then a BIN chunk declaring
-/// `binLength` bytes with `binBytes` zero bytes after its header (none when both are 0).
-/// Zeros in `version`, `length` and `jsonLength` stand for the true values.
+/// `binLength` bytes with `binBytes` zero bytes after its header (none when both are 0 and
+/// `emptyBin` is not set). Zeros in `version`, `length` and `jsonLength` stand for the true
+/// values.
 struct Glb {
     uint32_t version = 2, length = 0, jsonLength = 0, binLength = 0;
     size_t binBytes = 0;
+    bool emptyBin = false;
     std::string bytes(std::string json) const {
         auto u32 = [](std::string &out, uint32_t v) {
             out.append(reinterpret_cast<const char *>(&v), 4);
         };
         while (json.size() % 4) json += ' ';
-        bool bin = binLength || binBytes;
+        bool bin = binLength || binBytes || emptyBin;
         size_t size = 20 + json.size() + (bin ? 8 + binBytes : 0);
         std::string out = "glTF";
         u32(out, version ? version : 2);
