@@ -56,19 +56,11 @@ std::vector<size_t> patchJsonForTinygltf(std::vector<unsigned char> &bytes, bool
     std::string_view all(reinterpret_cast<const char *>(bytes.data()), bytes.size());
     if (all.find(kMeshopt) == std::string_view::npos && all.find(kDraco) == std::string_view::npos)
         return {};
-    size_t jsonStart = 0, jsonLength = bytes.size();
-    if (binary) {
-        if (bytes.size() < 20) return {};
-        uint32_t chunk = 0;
-        std::memcpy(&chunk, bytes.data() + 12, 4);
-        if (chunk > bytes.size() - 20) return {};
-        jsonStart = 20;
-        jsonLength = chunk;
-    }
+    std::string_view json = jsonText(bytes, binary);
     // Too deep JSON is refused by the prescan that follows, invalid JSON by tinygltf, which
     // reports where it is
-    if (scanJson(all.substr(jsonStart, jsonLength)).tooDeep) return {};
-    nlohmann::json doc = nlohmann::json::parse(all.substr(jsonStart, jsonLength), nullptr, false);
+    if (scanJson(json).tooDeep) return {};
+    nlohmann::json doc = nlohmann::json::parse(json, nullptr, false);
     if (doc.is_discarded() || !doc.is_object()) return {};
     std::vector<size_t> patched;
     bool changed = false;
@@ -119,7 +111,7 @@ std::vector<size_t> patchJsonForTinygltf(std::vector<unsigned char> &bytes, bool
                reinterpret_cast<unsigned char *>(&length) + 4);
     out.insert(out.end(), bytes.begin() + 16, bytes.begin() + 20);  // chunk type "JSON"
     out.insert(out.end(), text.begin(), text.end());
-    out.insert(out.end(), bytes.begin() + static_cast<long>(20 + jsonLength), bytes.end());
+    out.insert(out.end(), bytes.begin() + static_cast<long>(20 + json.size()), bytes.end());
     uint32_t total = static_cast<uint32_t>(out.size());
     std::memcpy(out.data() + 8, &total, 4);
     bytes = std::move(out);

@@ -206,17 +206,20 @@ std::vector<unsigned char> readMainFile(const std::string &path, const SourceLoc
     return bytes;
 }
 
-/// Checks a .glb's header and chunk lengths before tinygltf reads them. tinygltf 2.7 bounds the
-/// BIN chunk's data by the header's length without counting the chunk's own 8-byte header, so a
-/// BIN chunk declaring up to 8 bytes more than follow it makes a buffer copy from past the end
-/// of the file; a length past the file's end is refused here as well, with what it declares.
-/// Returns the container's length (bytes after it are not part of it).
-size_t checkGlbLayout(const std::vector<unsigned char> &bytes, const SourceLoc &loc) {
-    auto word = [&](size_t at) {
-        uint32_t v = 0;
-        std::memcpy(&v, bytes.data() + at, 4);
-        return static_cast<uint64_t>(v);
-    };
+/// Checks a .glb's header and chunk lengths before tinygltf reads them, and cuts the file to
+/// what tinygltf should read. tinygltf 2.7 bounds the BIN chunk's data by the header's length
+/// without counting the chunk's own 8-byte header, so a BIN chunk declaring up to 8 bytes more
+/// than follow it made a buffer copy from past the end of the file: every length is checked
+/// against the file here, each failure naming what was declared and where. Then:
+/// - bytes after the header's length are dropped (with a warning): the JSON rewrite that
+///   follows makes the length that of the whole vector, and tinygltf would read them as a
+///   chunk;
+/// - a second chunk that is an empty BIN chunk or of an unknown type is dropped, with any after
+///   it, and the header's length made to match. The spec allows both (an empty BIN chunk
+///   SHOULD be omitted and means the same; readers skip unknown types, and the BIN chunk can
+///   only be the second); tinygltf refuses either. An unknown type is named in a warning.
+void prepareGlb(std::vector<unsigned char> &bytes, const SourceLoc &loc, DiagnosticSink &diag) {
+    using detail::glbWord;
     auto fail = [&](const std::string &what) {
         throw ParseError(loc, "invalid binary glTF (.glb): " + what);
     };
@@ -224,50 +227,43 @@ size_t checkGlbLayout(const std::vector<unsigned char> &bytes, const SourceLoc &
     if (size < 20)
         fail("the file is " + std::to_string(size) +
              " bytes, shorter than the 12-byte header and a chunk header");
-    if (word(4) != 2)
-        fail("container version " + std::to_string(word(4)) +
+    if (glbWord(bytes, 4) != 2)
+        fail("container version " + std::to_string(glbWord(bytes, 4)) +
              " (at byte 4); only version 2 is read");
-    const uint64_t length = word(8);
+    const uint64_t length = glbWord(bytes, 8);
     if (length > size)
         fail("the header's length (at byte 8) is " + std::to_string(length) +
              " bytes, but the file has " + std::to_string(size) + " (truncated?)");
-    const uint64_t json = word(12);
-    if (word(16) != 0x4E4F534Au) fail("the first chunk (at byte 12) is not the JSON chunk");
+    const uint64_t json = glbWord(bytes, 12);
+    if (glbWord(bytes, 16) != detail::kGlbJsonChunk)
+        fail("the first chunk (at byte 12) is not the JSON chunk");
     if (json == 0) fail("the JSON chunk (at byte 12) is empty");
     if (20 + json > length)
         fail("the JSON chunk (at byte 12) declares " + std::to_string(json) + " bytes, but " +
              std::to_string(length - 20) + " follow its header");
-    const uint64_t rest = length - 20 - json;
-    if (rest == 0) return length;  // no BIN chunk
-    if (rest < 8)
-        fail(std::to_string(rest) + " bytes after the JSON chunk (at byte " +
-             std::to_string(20 + json) + "), too few for a chunk header");
-    const uint64_t bin = word(20 + json);
-    if (8 + bin > rest)
-        fail("the chunk at byte " + std::to_string(20 + json) + " declares " +
-             std::to_string(bin) + " bytes, but " + std::to_string(rest - 8) +
-             " follow its header");
-    return length;
-}
-
-/// Keeps of a checked .glb, cut to its length, what tinygltf 2.7 reads. The spec allows a BIN
-/// chunk of length 0 (one SHOULD be omitted, and the file means the same) and has readers skip
-/// chunks of unknown types, but tinygltf refuses either as the second chunk. Such a chunk and
-/// those after it are dropped (the BIN chunk can only be the second) and the header's length
-/// made to match; an unknown type is named in a warning.
-void keepChunksTinygltfReads(std::vector<unsigned char> &bytes, const SourceLoc &loc,
-                             DiagnosticSink &diag) {
-    uint32_t json = 0, bin = 0, type = 0;
-    std::memcpy(&json, bytes.data() + 12, 4);
-    size_t second = 20 + size_t(json);
-    if (bytes.size() < second + 8) return;  // JSON only
-    std::memcpy(&bin, bytes.data() + second, 4);
-    std::memcpy(&type, bytes.data() + second + 4, 4);
-    if (type == 0x004E4942u && bin != 0) return;
-    if (type != 0x004E4942u) {
+    const uint64_t second = 20 + json, rest = length - second;
+    uint32_t secondLength = 0, secondType = 0;
+    if (rest > 0) {
+        if (rest < 8)
+            fail(std::to_string(rest) + " bytes after the JSON chunk (at byte " +
+                 std::to_string(second) + "), too few for a chunk header");
+        secondLength = glbWord(bytes, second);
+        secondType = glbWord(bytes, second + 4);
+        if (8 + uint64_t(secondLength) > rest)
+            fail("the chunk at byte " + std::to_string(second) + " declares " +
+                 std::to_string(secondLength) + " bytes, but " + std::to_string(rest - 8) +
+                 " follow its header");
+    }
+    if (length < size)
+        diag.warning(loc, std::to_string(size - length) +
+                              " bytes after the binary glTF's length (" +
+                              std::to_string(length) + " bytes, at byte 8) are ignored");
+    bytes.resize(length);
+    if (rest == 0 || (secondType == detail::kGlbBinChunk && secondLength != 0)) return;
+    if (secondType != detail::kGlbBinChunk) {
         std::string name;
         for (int k = 0; k < 4; ++k) {
-            auto c = static_cast<unsigned char>(type >> (8 * k));
+            auto c = static_cast<unsigned char>(secondType >> (8 * k));
             name += std::isprint(c) ? std::string(1, static_cast<char>(c))
                                     : "\\x" + std::string(1, "0123456789abcdef"[c >> 4]) +
                                           "0123456789abcdef"[c & 15];
@@ -277,19 +273,8 @@ void keepChunksTinygltfReads(std::vector<unsigned char> &bytes, const SourceLoc 
                               "after it (the BIN chunk can only be the second)");
     }
     bytes.resize(second);
-    uint32_t length = static_cast<uint32_t>(bytes.size());
-    std::memcpy(bytes.data() + 8, &length, 4);
-}
-
-/// The JSON text: the whole .gltf, or a .glb's first chunk (empty when its header is broken,
-/// which tinygltf reports).
-std::string_view jsonText(const std::vector<unsigned char> &bytes, bool binary) {
-    std::string_view text(reinterpret_cast<const char *>(bytes.data()), bytes.size());
-    if (!binary) return text;
-    uint32_t chunk = 0;
-    if (bytes.size() < 20) return {};
-    std::memcpy(&chunk, bytes.data() + 12, 4);
-    return chunk <= bytes.size() - 20 ? text.substr(20, chunk) : std::string_view();
+    uint32_t cut = static_cast<uint32_t>(second);
+    std::memcpy(bytes.data() + 8, &cut, 4);
 }
 
 /// Checks the JSON text before tinygltf parses it: nesting depth, buffer and image URIs.
@@ -334,7 +319,7 @@ void prescan(std::string_view text, bool binary, const std::string &path, const 
     }
     // A number too large for a double (1e999): nlohmann names the token but not where it is
     if (std::optional<std::string> token = overflowToken(message)) {
-        if (auto at = findNumberToken(jsonText(bytes, binary), *token))
+        if (auto at = findNumberToken(detail::jsonText(bytes, binary), *token))
             failAt(binary, path, loc, at->first, at->second,
                    "number " + *token + " is too large for a double");
     }
@@ -347,22 +332,12 @@ std::unique_ptr<LoadedFile> loadFile(const std::string &path, const SourceLoc &l
                                      DiagnosticSink &diag, bool keepImages) {
     std::vector<unsigned char> bytes = readMainFile(path, loc);
     bool binary = bytes.size() >= 4 && std::equal(bytes.begin(), bytes.begin() + 4, "glTF");
-    // Bytes past the container's length are dropped: the JSON rewrite below makes the length
-    // that of the whole vector, and tinygltf would then read them as a chunk
-    if (binary) {
-        size_t length = checkGlbLayout(bytes, loc);
-        if (length < bytes.size())
-            diag.warning(loc, std::to_string(bytes.size() - length) +
-                                  " bytes after the binary glTF's length (" +
-                                  std::to_string(length) + " bytes, at byte 8) are ignored");
-        bytes.resize(length);
-        keepChunksTinygltfReads(bytes, loc, diag);
-    }
+    if (binary) prepareGlb(bytes, loc, diag);
     std::vector<size_t> fallbacks = detail::patchJsonForTinygltf(bytes, binary);
     std::string baseDir = std::filesystem::path(path).parent_path().string();
 
     detail::FileAccess files{detail::ModelFolder(path), baseDir, {}, 0, {}, 0};
-    prescan(jsonText(bytes, binary), binary, path, loc, files.folder);
+    prescan(detail::jsonText(bytes, binary), binary, path, loc, files.folder);
 
     auto file = std::make_unique<LoadedFile>();
     file->images.model = &file->model;

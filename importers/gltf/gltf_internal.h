@@ -5,6 +5,7 @@
 #include <tiny_gltf.h>
 
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -150,6 +151,23 @@ void checkAttributeType(const ImportContext &ctx, int index, const std::string &
 constexpr uint64_t kMaxMeshoptViewBytes = uint64_t(1) << 31;
 constexpr uint64_t kMaxDracoElements = uint64_t(1) << 27;
 
+/// The chunk types of a .glb ("JSON" and "BIN\0", read as little-endian words).
+constexpr uint32_t kGlbJsonChunk = 0x4E4F534Au, kGlbBinChunk = 0x004E4942u;
+
+/// The little-endian 32-bit word at byte `at` of a .glb (the caller knows it lies inside).
+inline uint32_t glbWord(const std::vector<unsigned char> &bytes, size_t at) {
+    uint32_t v = 0;
+    std::memcpy(&v, bytes.data() + at, 4);
+    return v;
+}
+
+/// The JSON text: the whole .gltf, or a .glb's first chunk. A .glb must have passed the
+/// importer's layout check (prepareGlb), which keeps the chunk inside the file.
+inline std::string_view jsonText(const std::vector<unsigned char> &bytes, bool binary) {
+    std::string_view text(reinterpret_cast<const char *>(bytes.data()), bytes.size());
+    return binary ? text.substr(20, glbWord(bytes, 12)) : text;
+}
+
 /// Rewrites the JSON text (of a .gltf, or the JSON chunk of the .glb `bytes`) where tinygltf
 /// 2.7 would refuse valid compressed files: an EXT_meshopt_compression fallback buffer (no
 /// `uri`, `fallback: true`; tinygltf refuses a uri-less buffer in a .gltf and copies the BIN
@@ -157,7 +175,8 @@ constexpr uint64_t kMaxDracoElements = uint64_t(1) << 27;
 /// KHR_draco_mesh_compression primitive loses its `indices` when that accessor has no
 /// bufferView (tinygltf requires one: "accessor[N] invalid bufferView"; the Draco data holds
 /// the indices). Returns the indices of the fallback buffers rewritten; `bytes` is unchanged
-/// when there is nothing to rewrite or the JSON does not parse.
+/// when there is nothing to rewrite or the JSON does not parse. A .glb must have passed the
+/// importer's layout check (prepareGlb).
 std::vector<size_t> patchJsonForTinygltf(std::vector<unsigned char> &bytes, bool binary);
 
 /// Decodes every bufferView that carries EXT_meshopt_compression into a new buffer and points
