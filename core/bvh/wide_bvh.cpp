@@ -11,6 +11,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
@@ -675,9 +676,12 @@ bool WideBvh::FloatRay::init(const Ray &ray, __m128 *inv) {
             }
         return t;
     }();
+    // Element by element: std::copy of the three ints was a call to memmove
     const auto &planes = kPlanes[_mm_movemask_ps(negative) & 7];
-    std::copy(planes.begin(), planes.begin() + 3, nearAt);
-    std::copy(planes.begin() + 3, planes.end(), farAt);
+    for (int a = 0; a < 3; ++a) {
+        nearAt[a] = planes[a];
+        farAt[a] = planes[3 + a];
+    }
     return true;
 }
 
@@ -710,6 +714,26 @@ void WideBvh::build(size_t n, BoxOf &&boxOf, int threads, float itemCost) {
     WideBvhBuilder builder(n, boxOf, *this, threads, itemCost);
     builder.build();
     nodes_.shrink_to_fit();
+    setLeafData({nullptr, 0});
+}
+
+void WideBvh::setLeafData(LeafData data) {
+    static_assert(kLeaf == 0x80000000u && kEmpty >> 31 == 1);  // the walk picks a base by the top bit
+    // Each kind counts from the line it starts in (a small array may start within one)
+    const uintptr_t nodeStart = reinterpret_cast<uintptr_t>(nodes_.data());
+    const uintptr_t leafStart = reinterpret_cast<uintptr_t>(data.base);
+    leafLines_ = data.base ? leafStart & ~uintptr_t{63} : 0;
+    for (Node &n : nodes_)
+        for (int c = 0; c < kWidth; ++c) {
+            uint32_t r = n.child[c];
+            uint64_t line = 0;  // an empty slot (the leaf data's first line), or a leaf without data (the root)
+            if (!(r & kLeaf))
+                line = (nodeStart % 64 + uint64_t{r} * sizeof(Node)) / 64;
+            else if (r != kEmpty && data.base)
+                line = (leafStart % 64 + uint64_t{(r & ~kLeaf) >> 2} * data.stride) / 64;
+            // At most 2^29 slots of a few hundred bytes: far below 2^32 lines
+            n.fetch[c] = static_cast<uint32_t>(line);
+        }
 }
 
 WideBvh::WideBvh(const ir::Mesh &mesh, int threads, float itemCost) {

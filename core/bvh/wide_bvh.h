@@ -7,6 +7,7 @@
 // SAH build, parallel below the top levels and identical for any number of threads.
 #pragma once
 
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <cstddef>
@@ -71,7 +72,11 @@ class WideBvh {
         float hi[3][kWidth];
         /// kLeaf | first << 2 | (count - 1), an interior node's index, or kEmpty
         uint32_t child[kWidth];
-        // 16 bytes of padding: a node is two cache lines
+        /// Per child, the cache line where the walk prefetches it, in 64-byte steps from the
+        /// line where its kind starts: an interior child's node from the node array's, a leaf's
+        /// data from the leaf data's (setLeafData; without it, the root). Read with the child
+        /// instead of computed from it with a product by the leaf stride and a select.
+        uint32_t fetch[kWidth];
     };
     static_assert(sizeof(Node) == 128);
     static_assert(offsetof(Node, hi) == 3 * kWidth * sizeof(float));  // FloatSlabs indexes the planes
@@ -117,17 +122,21 @@ class WideBvh {
     void traverseSlots(const Ray &ray, double tMin, double *tMax, Visit &&visit) const;
 
     /// Per-item data a caller keeps in leaf order (a mesh's leaf vertices): item slot s's data
-    /// starts at base + s * stride. The walk prefetches the start of each leaf child's data
-    /// while it tests the node, a level before it visits the leaf.
+    /// starts at base + s * stride.
     struct LeafData {
         const void *base;  ///< null: no leaf data
         size_t stride;
     };
+    /// Makes the walk prefetch the start of each leaf child's data (two cache lines) while it
+    /// tests the node, a level before it visits the leaf. It decides only what is fetched
+    /// ahead: without it, or after a copy of the BVH, the hits are the same.
+    void setLeafData(LeafData data);
+    /// Where the walk prefetches child c of node n: the start of the cache line that holds it.
+    const void *fetchLine(const Node &n, int c) const { return fetchLine(fetchBases(), n, c); }
     /// As traverseSlots, a leaf at a time: visit(first, count, tMax) gets the leaf's slots
     /// [first, first + count) (count <= kMaxLeafItems).
     template <typename Visit>
-    void traverseLeaves(const Ray &ray, double tMin, double *tMax, Visit &&visit,
-                        LeafData data = {nullptr, 0}) const;
+    void traverseLeaves(const Ray &ray, double tMin, double *tMax, Visit &&visit) const;
 
   private:
     /// Depth bound of the build; with at most three pushes a level it sizes the traversal stack.
@@ -209,11 +218,22 @@ class WideBvh {
     template <typename BoxOf>
     void build(size_t n, BoxOf &&boxOf, int threads, float itemCost);
     template <typename Slabs, typename Visit>
-    void walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit, LeafData data) const;
+    void walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit) const;
 
     LargeVector<Node> nodes_;
     LargeVector<uint32_t> order_;
     int depth_ = 0;
+    uintptr_t leafLines_ = 0;  ///< the line where the leaf data starts; 0: none
+
+    /// Where the lines of each kind count from, picked by a child's top bit (kLeaf; an empty
+    /// slot takes the leaf data's first line). In integers: the kinds are separate allocations.
+    std::array<uintptr_t, 2> fetchBases() const {
+        const uintptr_t nodeLines = reinterpret_cast<uintptr_t>(nodes_.data()) & ~uintptr_t{63};
+        return {nodeLines, leafLines_ ? leafLines_ : nodeLines};
+    }
+    static const char *fetchLine(const std::array<uintptr_t, 2> &bases, const Node &n, int c) {
+        return reinterpret_cast<const char *>(bases[n.child[c] >> 31] + uintptr_t{n.fetch[c]} * 64);
+    }
 };
 
 template <typename Visit>
@@ -232,18 +252,18 @@ void WideBvh::traverseSlots(const Ray &ray, double tMin, double *tMax, Visit &&v
 }
 
 template <typename Visit>
-void WideBvh::traverseLeaves(const Ray &ray, double tMin, double *tMax, Visit &&visit, LeafData data) const {
+void WideBvh::traverseLeaves(const Ray &ray, double tMin, double *tMax, Visit &&visit) const {
     if (nodes_.empty()) return;
 #if defined(__SSE2__)
     if (tMin >= 0) {
         ForwardSlabs f;
-        if (f.init(ray)) return walk(f, tMin, tMax, visit, data);
+        if (f.init(ray)) return walk(f, tMin, tMax, visit);
     } else {
         FloatSlabs f;
-        if (f.init(ray)) return walk(f, tMin, tMax, visit, data);
+        if (f.init(ray)) return walk(f, tMin, tMax, visit);
     }
 #endif
-    walk(DoubleSlabs(ray), tMin, tMax, visit, data);
+    walk(DoubleSlabs(ray), tMin, tMax, visit);
 }
 
 #if defined(__SSE2__)
@@ -355,7 +375,7 @@ inline int WideBvh::DoubleSlabs::test(const Node &n, const Limits &l, float tn[k
 }
 
 template <typename Slabs, typename Visit>
-void WideBvh::walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit, LeafData data) const {
+void WideBvh::walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit) const {
     struct Entry {
         uint32_t ref;
         float tNear;  ///< no greater than the child's near distance
@@ -366,16 +386,7 @@ void WideBvh::walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit, 
     typename Slabs::Limits limits = slabs.limits(tMin, *tMax);
     auto push = [&](uint32_t ref, float tNear) { stack[top++] = {ref, tNear}; };
 #if defined(__SSE2__)
-    // Where a child's data starts, for the prefetches: its node, or its leaf's data (without
-    // leaf data, the root, which is in cache)
-    const char *base = reinterpret_cast<const char *>(nodes_.data());
-    const char *leafBase = data.base ? static_cast<const char *>(data.base) : base;
-    const size_t stride = data.base ? data.stride : 0;
-    auto at = [&](uint32_t r) {
-        return (r & kLeaf) ? leafBase + size_t{(r & ~kLeaf) >> 2} * stride : base + size_t{r} * sizeof(Node);
-    };
-#else
-    (void)data;
+    const std::array<uintptr_t, 2> bases = fetchBases();
 #endif
     while (true) {
         if (current & kLeaf) {
@@ -388,7 +399,8 @@ void WideBvh::walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit, 
             // waits on memory about once a level instead of once a node. Written out: GCC 12 at
             // -O2 dropped these prefetches from a lambda called for each child, and kept a loop
             // with a branch per child
-            const char *p0 = at(n.child[0]), *p1 = at(n.child[1]), *p2 = at(n.child[2]), *p3 = at(n.child[3]);
+            const char *p0 = fetchLine(bases, n, 0), *p1 = fetchLine(bases, n, 1);
+            const char *p2 = fetchLine(bases, n, 2), *p3 = fetchLine(bases, n, 3);
             _mm_prefetch(p0, _MM_HINT_T0);
             _mm_prefetch(p0 + 64, _MM_HINT_T0);
             _mm_prefetch(p1, _MM_HINT_T0);

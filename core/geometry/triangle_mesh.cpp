@@ -164,6 +164,7 @@ TriangleMesh::TriangleMesh(ir::MeshPtr mesh, int buildThreads) : mesh_(std::move
         leafTriangles_ = leafOrder(m, bvh_);
     else
         bvh_.dropItemOrder();  // the float leaves hold it
+    bvh_.setLeafData(leafData());
     topology_ = ir::analyzeMesh(m);
 }
 
@@ -335,7 +336,7 @@ bool TriangleMesh::closest(const Ray &r, double tMin, double tMax, Hit *hit) con
             found = true;
         });
         return false;
-    }, leafData());
+    });
     return found;
 }
 
@@ -348,7 +349,7 @@ void TriangleMesh::allHits(const Ray &r, std::vector<Hit> &out) const {
             if (intersect(frame, p0, p1, p2, triangle, -kInfinity, kInfinity, false, &h)) out.push_back(h);
         });
         return false;
-    }, leafData());
+    });
 }
 
 ObjectSurface TriangleMesh::surface(const Hit &hit, Vec3 *shadingNormal,

@@ -102,7 +102,8 @@ class TriangleMesh {
     /// when t is not within (tMin, tMax), or (tMin, tMax] when tMaxInclusive.
     bool intersect(const RayFrame &f, const Vec3 &p0, const Vec3 &p1, const Vec3 &p2, uint32_t triangle,
                    double tMin, double tMax, bool tMaxInclusive, Hit *hit) const;
-    /// Where the walk prefetches a leaf's data: its float leaf, or its triangles' records.
+    /// Where the walk prefetches a leaf's data (WideBvh::setLeafData): its float leaf, or its
+    /// triangles' records.
     WideBvh::LeafData leafData() const {
         if (!floatLeaves_.empty()) return {floatLeaves_.data(), kFloatLeafWords * sizeof(uint32_t)};
         return {leafTriangles_.data(), sizeof(LeafTriangle)};

@@ -126,6 +126,12 @@ TEST(WideBvh, FloatLeavesClosestHitMatchesBruteForceAtEveryScale) {
     expectClosestMatchesBruteForce(1e6, Vec3(3e9, 0, -1e9), true);
 }
 
+/// Whether the line the walk prefetches for child c of node n holds `target`.
+bool fetchLineHolds(const WideBvh &bvh, const WideBvh::Node &n, int c, const void *target) {
+    auto line = reinterpret_cast<uintptr_t>(bvh.fetchLine(n, c)), t = reinterpret_cast<uintptr_t>(target);
+    return line <= t && t < line + 64;
+}
+
 TEST(WideBvh, FloatLeavesHoldEachLeafsTrianglesAndVerticesSideBySide) {
     auto m = test::inFloats(troubleMesh(4, 1, Vec3(0.25, 0, 0)));
     TriangleMesh mesh(m);
@@ -139,10 +145,13 @@ TEST(WideBvh, FloatLeavesHoldEachLeafsTrianglesAndVerticesSideBySide) {
     ASSERT_EQ(words.size(), TriangleMesh::kFloatLeafWords * order.size() + TriangleMesh::kLeafPadding);
     size_t leafTriangles = 0;
     for (const auto &node : mesh.bvh().nodes())
-        for (uint32_t ref : node.child) {
+        for (int c = 0; c < WideBvh::kWidth; ++c) {
+            uint32_t ref = node.child[c];
             if (ref == WideBvh::kEmpty || !(ref & WideBvh::kLeaf)) continue;
             const uint32_t first = (ref & ~WideBvh::kLeaf) >> 2, n = (ref & 3) + 1;
             const uint32_t *leaf = words.data() + TriangleMesh::kFloatLeafWords * first;
+            // The walk prefetches the leaf's words
+            ASSERT_TRUE(fetchLineHolds(mesh.bvh(), node, c, leaf));
             leafTriangles += n;
             for (uint32_t i = 0; i < n; ++i) {
                 ASSERT_EQ(leaf[i], order[first + i]);
@@ -158,6 +167,13 @@ TEST(WideBvh, FloatLeavesHoldEachLeafsTrianglesAndVerticesSideBySide) {
     EXPECT_TRUE(indexed.floatLeaves().empty());
     EXPECT_FALSE(indexed.leafTriangles().empty());
     EXPECT_FALSE(indexed.bvh().itemOrder().empty());
+    // whose walk prefetches a leaf's triangle records
+    for (const auto &node : indexed.bvh().nodes())
+        for (int c = 0; c < WideBvh::kWidth; ++c) {
+            if (node.child[c] == WideBvh::kEmpty || !(node.child[c] & WideBvh::kLeaf)) continue;
+            ASSERT_TRUE(fetchLineHolds(indexed.bvh(), node, c,
+                                       &indexed.leafTriangles()[(node.child[c] & ~WideBvh::kLeaf) >> 2]));
+        }
 }
 
 TEST(WideBvh, ClosestHitMatchesBruteForceFarFromTheOriginAtEveryScale) {
@@ -259,6 +275,63 @@ TEST(WideBvh, LeafOrderedTrianglesAreTheTrianglesOfTheItemOrder) {
         });
         ASSERT_EQ(slots, items);
     }
+}
+
+TEST(WideBvh, EachChildsPrefetchLineIsItsNodeOrItsLeafsData) {
+    // The walk prefetches, per child, the cache line its node keeps: an interior child's node,
+    // a leaf's data where setLeafData gave it, otherwise the root (an empty slot: the leaf
+    // data's first line, or the root). A wrong line costs only time, so only this test sees it
+    auto m = troubleMesh(4, 1, Vec3(0));
+    WideBvh bvh(*m, 1);
+    const auto &nodes = bvh.nodes();
+    const int64_t root = int64_t(reinterpret_cast<uintptr_t>(nodes.data()));
+    auto check = [&](uintptr_t data, size_t stride) {
+        size_t leaves = 0;
+        for (const auto &n : nodes)
+            for (int c = 0; c < WideBvh::kWidth; ++c) {
+                uint32_t r = n.child[c];
+                int64_t target = root;
+                if (r == WideBvh::kEmpty) {
+                    if (data) target = int64_t(data);
+                } else if (!(r & WideBvh::kLeaf)) {
+                    target = root + int64_t(r) * int64_t(sizeof(WideBvh::Node));
+                } else if (data) {
+                    ++leaves;
+                    target = int64_t(data) + int64_t((r & ~WideBvh::kLeaf) >> 2) * int64_t(stride);
+                }
+                int64_t line = int64_t(reinterpret_cast<uintptr_t>(bvh.fetchLine(n, c)));
+                ASSERT_EQ(line % 64, 0);
+                ASSERT_TRUE(line <= target && target < line + 64)
+                    << "child " << c << " ref " << r << ": line " << line - root << ", target " << target - root;
+            }
+        if (data) {
+            EXPECT_GT(leaves, 100u);
+        }
+    };
+    check(0, 0);  // as built: no leaf data
+    std::vector<uint32_t> words(m->triangles.size() * 10 + 16);
+    for (size_t offset : {0, 4, 60}) {
+        const char *data = reinterpret_cast<const char *>(words.data()) + offset;
+        bvh.setLeafData({data, 40});
+        check(reinterpret_cast<uintptr_t>(data), 40);
+    }
+    // Only addresses (never read): data below the nodes, and far above them (another mapping)
+    for (uintptr_t data : {uintptr_t(root) - 64 * 1000 - 17, uintptr_t(root) + (uintptr_t{1} << 40) + 8}) {
+        bvh.setLeafData({reinterpret_cast<const void *>(data), 36});
+        check(data, 36);
+    }
+    bvh.setLeafData({nullptr, 0});
+    check(0, 0);
+    // A tree with empty slots: three items make a root of three children
+    std::vector<Bounds3> boxes = {{Vec3(0), Vec3(1)}, {Vec3(2), Vec3(3)}, {Vec3(4), Vec3(5)}};
+    WideBvh small(boxes);
+    ASSERT_EQ(small.nodes().size(), 1u);
+    const int64_t smallRoot = int64_t(reinterpret_cast<uintptr_t>(small.nodes().data()));
+    for (int c = 0; c < WideBvh::kWidth; ++c) {
+        int64_t line = int64_t(reinterpret_cast<uintptr_t>(small.fetchLine(small.nodes()[0], c)));
+        EXPECT_TRUE(line <= smallRoot && smallRoot < line + 64) << c;
+    }
+    EXPECT_EQ(small.nodes()[0].child[3], WideBvh::kEmpty);
 }
 
 TEST(WideBvh, LargeArraysAreAlignedForHugePages) {
