@@ -718,20 +718,34 @@ void WideBvh::build(size_t n, BoxOf &&boxOf, int threads, float itemCost) {
 }
 
 void WideBvh::setLeafData(LeafData data) {
-    static_assert(kLeaf == 0x80000000u && kEmpty >> 31 == 1);  // the walk picks a base by the top bit
-    // Each kind counts from the line it starts in (a small array may start within one)
+    static_assert(kLeaf == 0x80000000u && kEmpty >> 31 == 1);  // the far walk picks a base by the top bit
+    // Lines count from the line an array starts in (a small array may start within one)
     const uintptr_t nodeStart = reinterpret_cast<uintptr_t>(nodes_.data());
     const uintptr_t leafStart = reinterpret_cast<uintptr_t>(data.base);
+    const uintptr_t nodeLines = nodeStart & ~uintptr_t{63};
     leafLines_ = data.base ? leafStart & ~uintptr_t{63} : 0;
+    // Each child's line from its own kind's first line: a node's, or a leaf's data (an empty
+    // slot: the leaf data's first line; a leaf without data: the root). At most 2^29 slots of a
+    // few hundred bytes, far below 2^32 lines
+    auto ownLine = [&](uint32_t r) -> uint64_t {
+        if (!(r & kLeaf)) return (nodeStart % 64 + uint64_t{r} * sizeof(Node)) / 64;
+        if (r != kEmpty && data.base) return (leafStart % 64 + uint64_t{(r & ~kLeaf) >> 2} * data.stride) / 64;
+        return 0;
+    };
+    // Near where every leaf kind's line, counted from the nodes' first line, fits in 31 bits
+    // and a sign (always without leaf data)
+    const int64_t shift = data.base ? (int64_t(leafLines_) - int64_t(nodeLines)) / 64 : 0;
+    fetchNear_ = true;
+    for (const Node &n : nodes_)
+        for (int c = 0; c < kWidth && fetchNear_; ++c)
+            if (n.child[c] & kLeaf) {
+                int64_t line = int64_t(ownLine(n.child[c])) + shift;
+                fetchNear_ = line >= INT32_MIN && line <= INT32_MAX;
+            }
     for (Node &n : nodes_)
         for (int c = 0; c < kWidth; ++c) {
             uint32_t r = n.child[c];
-            uint64_t line = 0;  // an empty slot (the leaf data's first line), or a leaf without data (the root)
-            if (!(r & kLeaf))
-                line = (nodeStart % 64 + uint64_t{r} * sizeof(Node)) / 64;
-            else if (r != kEmpty && data.base)
-                line = (leafStart % 64 + uint64_t{(r & ~kLeaf) >> 2} * data.stride) / 64;
-            // At most 2^29 slots of a few hundred bytes: far below 2^32 lines
+            int64_t line = int64_t(ownLine(r)) + (fetchNear_ && (r & kLeaf) ? shift : 0);
             n.fetch[c] = static_cast<uint32_t>(line);
         }
 }

@@ -72,10 +72,11 @@ class WideBvh {
         float hi[3][kWidth];
         /// kLeaf | first << 2 | (count - 1), an interior node's index, or kEmpty
         uint32_t child[kWidth];
-        /// Per child, the cache line where the walk prefetches it, in 64-byte steps from the
-        /// line where its kind starts: an interior child's node from the node array's, a leaf's
-        /// data from the leaf data's (setLeafData; without it, the root). Read with the child
-        /// instead of computed from it with a product by the leaf stride and a select.
+        /// Per child, the cache line where the walk prefetches it: an interior child's node, a
+        /// leaf's data (setLeafData; without it, the root). In 64-byte steps, signed, from the
+        /// line where the node array starts; where some leaf's data lies beyond 2^31 lines of
+        /// it, unsigned from the line where the child's kind starts (fetchesNear()). Read with
+        /// the child instead of computed from it with a product by the leaf stride and a select.
         uint32_t fetch[kWidth];
     };
     static_assert(sizeof(Node) == 128);
@@ -132,7 +133,11 @@ class WideBvh {
     /// ahead: without it, or after a copy of the BVH, the hits are the same.
     void setLeafData(LeafData data);
     /// Where the walk prefetches child c of node n: the start of the cache line that holds it.
-    const void *fetchLine(const Node &n, int c) const { return fetchLine(fetchBases(), n, c); }
+    const void *fetchLine(const Node &n, int c) const {
+        return fetchNear_ ? fetchLine<true>(fetchBases(), n, c) : fetchLine<false>(fetchBases(), n, c);
+    }
+    /// Whether every child's line counts from the node array's (one base, no select a child).
+    bool fetchesNear() const { return fetchNear_; }
     /// As traverseSlots, a leaf at a time: visit(first, count, tMax) gets the leaf's slots
     /// [first, first + count) (count <= kMaxLeafItems).
     template <typename Visit>
@@ -219,20 +224,28 @@ class WideBvh {
     void build(size_t n, BoxOf &&boxOf, int threads, float itemCost);
     template <typename Slabs, typename Visit>
     void walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit) const;
+    template <bool Near, typename Slabs, typename Visit>
+    void walkFetching(const Slabs &slabs, double tMin, double *tMax, Visit &visit) const;
 
     LargeVector<Node> nodes_;
     LargeVector<uint32_t> order_;
     int depth_ = 0;
     uintptr_t leafLines_ = 0;  ///< the line where the leaf data starts; 0: none
+    bool fetchNear_ = true;
 
-    /// Where the lines of each kind count from, picked by a child's top bit (kLeaf; an empty
-    /// slot takes the leaf data's first line). In integers: the kinds are separate allocations.
+    /// Where the lines count from: the node array's first line, and where they do not fetch
+    /// near, the leaf data's, picked by a child's top bit (kLeaf; an empty slot takes the leaf
+    /// data's). In integers: a leaf's data lies in another allocation.
     std::array<uintptr_t, 2> fetchBases() const {
         const uintptr_t nodeLines = reinterpret_cast<uintptr_t>(nodes_.data()) & ~uintptr_t{63};
         return {nodeLines, leafLines_ ? leafLines_ : nodeLines};
     }
+    template <bool Near>
     static const char *fetchLine(const std::array<uintptr_t, 2> &bases, const Node &n, int c) {
-        return reinterpret_cast<const char *>(bases[n.child[c] >> 31] + uintptr_t{n.fetch[c]} * 64);
+        if constexpr (Near)
+            return reinterpret_cast<const char *>(bases[0] + uintptr_t(intptr_t{static_cast<int32_t>(n.fetch[c])} * 64));
+        else
+            return reinterpret_cast<const char *>(bases[n.child[c] >> 31] + uintptr_t{n.fetch[c]} * 64);
     }
 };
 
@@ -376,6 +389,14 @@ inline int WideBvh::DoubleSlabs::test(const Node &n, const Limits &l, float tn[k
 
 template <typename Slabs, typename Visit>
 void WideBvh::walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit) const {
+    if (fetchNear_)
+        walkFetching<true>(slabs, tMin, tMax, visit);
+    else
+        walkFetching<false>(slabs, tMin, tMax, visit);
+}
+
+template <bool Near, typename Slabs, typename Visit>
+void WideBvh::walkFetching(const Slabs &slabs, double tMin, double *tMax, Visit &visit) const {
     struct Entry {
         uint32_t ref;
         float tNear;  ///< no greater than the child's near distance
@@ -399,8 +420,8 @@ void WideBvh::walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit) 
             // waits on memory about once a level instead of once a node. Written out: GCC 12 at
             // -O2 dropped these prefetches from a lambda called for each child, and kept a loop
             // with a branch per child
-            const char *p0 = fetchLine(bases, n, 0), *p1 = fetchLine(bases, n, 1);
-            const char *p2 = fetchLine(bases, n, 2), *p3 = fetchLine(bases, n, 3);
+            const char *p0 = fetchLine<Near>(bases, n, 0), *p1 = fetchLine<Near>(bases, n, 1);
+            const char *p2 = fetchLine<Near>(bases, n, 2), *p3 = fetchLine<Near>(bases, n, 3);
             _mm_prefetch(p0, _MM_HINT_T0);
             _mm_prefetch(p0 + 64, _MM_HINT_T0);
             _mm_prefetch(p1, _MM_HINT_T0);

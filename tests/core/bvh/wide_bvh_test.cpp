@@ -280,7 +280,9 @@ TEST(WideBvh, LeafOrderedTrianglesAreTheTrianglesOfTheItemOrder) {
 TEST(WideBvh, EachChildsPrefetchLineIsItsNodeOrItsLeafsData) {
     // The walk prefetches, per child, the cache line its node keeps: an interior child's node,
     // a leaf's data where setLeafData gave it, otherwise the root (an empty slot: the leaf
-    // data's first line, or the root). A wrong line costs only time, so only this test sees it
+    // data's first line, or the root), whether the lines count from the nodes alone or, for
+    // data far from them, from each kind's start. A wrong line costs only time, so only this
+    // test sees it
     auto m = troubleMesh(4, 1, Vec3(0));
     WideBvh bvh(*m, 1);
     const auto &nodes = bvh.nodes();
@@ -315,12 +317,16 @@ TEST(WideBvh, EachChildsPrefetchLineIsItsNodeOrItsLeafsData) {
         bvh.setLeafData({data, 40});
         check(reinterpret_cast<uintptr_t>(data), 40);
     }
-    // Only addresses (never read): data below the nodes, and far above them (another mapping)
+    // Only addresses (never read): data below the nodes, counted from them; and far above them
+    // (another mapping), beyond 2^31 lines, where each kind counts from its own first line
+    EXPECT_TRUE(bvh.fetchesNear());
     for (uintptr_t data : {uintptr_t(root) - 64 * 1000 - 17, uintptr_t(root) + (uintptr_t{1} << 40) + 8}) {
         bvh.setLeafData({reinterpret_cast<const void *>(data), 36});
+        EXPECT_EQ(bvh.fetchesNear(), data < uintptr_t(root));
         check(data, 36);
     }
     bvh.setLeafData({nullptr, 0});
+    EXPECT_TRUE(bvh.fetchesNear());
     check(0, 0);
     // A tree with empty slots: three items make a root of three children
     std::vector<Bounds3> boxes = {{Vec3(0), Vec3(1)}, {Vec3(2), Vec3(3)}, {Vec3(4), Vec3(5)}};
