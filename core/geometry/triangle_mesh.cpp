@@ -6,7 +6,6 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <optional>
 
 #if defined(__x86_64__)
 #include <immintrin.h>
@@ -323,15 +322,12 @@ bool TriangleMesh::intersect(const RayFrame &f, const Vec3 &p0, const Vec3 &p1, 
 bool TriangleMesh::closest(const Ray &r, double tMin, double tMax, Hit *hit) const {
     bool found = false;
     double far = tMax;
-    // The triangle test's frame (three divisions), made when the walk first reaches a leaf: a
-    // ray that meets no leaf's box needs none
-    std::optional<RayFrame> frame;
+    RayFrame frame(r);
     bvh_.traverseLeaves(r, tMin, &far, [&](uint32_t first, uint32_t count, double *tFar) {
-        if (!frame) frame.emplace(r);
-        forLeaf(*frame, first, count, [&](const Vec3 &p0, const Vec3 &p1, const Vec3 &p2, uint32_t triangle) {
+        forLeaf(frame, first, count, [&](const Vec3 &p0, const Vec3 &p1, const Vec3 &p2, uint32_t triangle) {
             Hit h;
             // A tie at the closest t goes to the lower triangle index
-            if (!intersect(*frame, p0, p1, p2, triangle, tMin, *tFar, found && triangle < hit->triangle, &h)) return;
+            if (!intersect(frame, p0, p1, p2, triangle, tMin, *tFar, found && triangle < hit->triangle, &h)) return;
             // A hit within its own rounding error of the origin may be the surface the ray
             // starts on: t must be conservatively positive (pbrt-v3 Triangle::Intersect)
             if (h.t <= h.tError) return;
