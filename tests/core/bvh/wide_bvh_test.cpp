@@ -126,10 +126,14 @@ TEST(WideBvh, FloatLeavesClosestHitMatchesBruteForceAtEveryScale) {
     expectClosestMatchesBruteForce(1e6, Vec3(3e9, 0, -1e9), true);
 }
 
-/// Whether the line the walk prefetches for child c of node n holds `target`.
+/// Whether the line the walk prefetches for child c of node n starts a cache line and holds
+/// `target` (an address only, never read).
+bool fetchLineHolds(const WideBvh &bvh, const WideBvh::Node &n, int c, uintptr_t target) {
+    auto line = reinterpret_cast<uintptr_t>(bvh.fetchLine(n, c));
+    return line % 64 == 0 && line <= target && target < line + 64;
+}
 bool fetchLineHolds(const WideBvh &bvh, const WideBvh::Node &n, int c, const void *target) {
-    auto line = reinterpret_cast<uintptr_t>(bvh.fetchLine(n, c)), t = reinterpret_cast<uintptr_t>(target);
-    return line <= t && t < line + 64;
+    return fetchLineHolds(bvh, n, c, reinterpret_cast<uintptr_t>(target));
 }
 
 TEST(WideBvh, FloatLeavesHoldEachLeafsTrianglesAndVerticesSideBySide) {
@@ -301,10 +305,9 @@ TEST(WideBvh, EachChildsPrefetchLineIsItsNodeOrItsLeafsData) {
                     ++leaves;
                     target = int64_t(data) + int64_t((r & ~WideBvh::kLeaf) >> 2) * int64_t(stride);
                 }
-                int64_t line = int64_t(reinterpret_cast<uintptr_t>(bvh.fetchLine(n, c)));
-                ASSERT_EQ(line % 64, 0);
-                ASSERT_TRUE(line <= target && target < line + 64)
-                    << "child " << c << " ref " << r << ": line " << line - root << ", target " << target - root;
+                ASSERT_TRUE(fetchLineHolds(bvh, n, c, uintptr_t(target)))
+                    << "child " << c << " ref " << r << ": line "
+                    << int64_t(reinterpret_cast<uintptr_t>(bvh.fetchLine(n, c))) - root << ", target " << target - root;
             }
         if (data) {
             EXPECT_GT(leaves, 100u);
@@ -332,11 +335,8 @@ TEST(WideBvh, EachChildsPrefetchLineIsItsNodeOrItsLeafsData) {
     std::vector<Bounds3> boxes = {{Vec3(0), Vec3(1)}, {Vec3(2), Vec3(3)}, {Vec3(4), Vec3(5)}};
     WideBvh small(boxes);
     ASSERT_EQ(small.nodes().size(), 1u);
-    const int64_t smallRoot = int64_t(reinterpret_cast<uintptr_t>(small.nodes().data()));
-    for (int c = 0; c < WideBvh::kWidth; ++c) {
-        int64_t line = int64_t(reinterpret_cast<uintptr_t>(small.fetchLine(small.nodes()[0], c)));
-        EXPECT_TRUE(line <= smallRoot && smallRoot < line + 64) << c;
-    }
+    for (int c = 0; c < WideBvh::kWidth; ++c)
+        EXPECT_TRUE(fetchLineHolds(small, small.nodes()[0], c, small.nodes().data())) << c;
     EXPECT_EQ(small.nodes()[0].child[3], WideBvh::kEmpty);
 }
 
