@@ -732,22 +732,19 @@ void WideBvh::setLeafData(LeafData data) {
         if (r != kEmpty && data.base) return (leafStart % 64 + uint64_t{(r & ~kLeaf) >> 2} * data.stride) / 64;
         return 0;
     };
-    // Near where every leaf kind's line, counted from the nodes' first line, fits in 31 bits
-    // and a sign (always without leaf data)
+    // Near: each line counted from the nodes' first line, in 8-byte steps (a line is 8 of
+    // them), fits in 31 bits and a sign; always without leaf data, up to 2^28 nodes
     const int64_t shift = data.base ? (int64_t(leafLines_) - int64_t(nodeLines)) / 64 : 0;
+    auto nearSteps = [&](uint32_t r) { return (int64_t(ownLine(r)) + (r & kLeaf ? shift : 0)) * 8; };
     fetchNear_ = true;
     for (const Node &n : nodes_)
-        for (int c = 0; c < kWidth && fetchNear_; ++c)
-            if (n.child[c] & kLeaf) {
-                int64_t line = int64_t(ownLine(n.child[c])) + shift;
-                fetchNear_ = line >= INT32_MIN && line <= INT32_MAX;
-            }
-    for (Node &n : nodes_)
-        for (int c = 0; c < kWidth; ++c) {
-            uint32_t r = n.child[c];
-            int64_t line = int64_t(ownLine(r)) + (fetchNear_ && (r & kLeaf) ? shift : 0);
-            n.fetch[c] = static_cast<uint32_t>(line);
+        for (int c = 0; c < kWidth && fetchNear_; ++c) {
+            int64_t steps = nearSteps(n.child[c]);
+            fetchNear_ = steps >= INT32_MIN && steps <= INT32_MAX;
         }
+    for (Node &n : nodes_)
+        for (int c = 0; c < kWidth; ++c)
+            n.fetch[c] = static_cast<uint32_t>(fetchNear_ ? nearSteps(n.child[c]) : int64_t(ownLine(n.child[c])));
 }
 
 WideBvh::WideBvh(const ir::Mesh &mesh, int threads, float itemCost) {

@@ -73,10 +73,11 @@ class WideBvh {
         /// kLeaf | first << 2 | (count - 1), an interior node's index, or kEmpty
         uint32_t child[kWidth];
         /// Per child, the cache line where the walk prefetches it: an interior child's node, a
-        /// leaf's data (setLeafData; without it, the root). In 64-byte steps, signed, from the
-        /// line where the node array starts; where some leaf's data lies beyond 2^31 lines of
-        /// it, unsigned from the line where the child's kind starts (fetchesNear()). Read with
-        /// the child instead of computed from it with a product by the leaf stride and a select.
+        /// leaf's data (setLeafData; without it, the root). In 8-byte steps, signed, from the
+        /// line where the node array starts, so that the prefetch's address is one scaled index;
+        /// where some line lies beyond 2^31 steps (16 GiB) of it, in 64-byte steps, unsigned,
+        /// from the line where the child's kind starts (fetchesNear()). Read with the child
+        /// instead of computed from it with a product by the leaf stride and a select.
         uint32_t fetch[kWidth];
     };
     static_assert(sizeof(Node) == 128);
@@ -136,7 +137,8 @@ class WideBvh {
     const void *fetchLine(const Node &n, int c) const {
         return fetchNear_ ? fetchLine<true>(fetchBases(), n, c) : fetchLine<false>(fetchBases(), n, c);
     }
-    /// Whether every child's line counts from the node array's (one base, no select a child).
+    /// Whether every child's line counts from the node array's (one base, no select a child,
+    /// in 8-byte steps).
     bool fetchesNear() const { return fetchNear_; }
     /// As traverseSlots, a leaf at a time: visit(first, count, tMax) gets the leaf's slots
     /// [first, first + count) (count <= kMaxLeafItems).
@@ -161,6 +163,10 @@ class WideBvh {
     /// The slab test of the four children of a node: the mask of those the ray meets within
     /// [tMin, tMax], and for each a float no greater than its near distance.
     struct DoubleSlabs : PlainLimits {
+        /// Whether the test alone culls an empty slot (lo +inf, hi -inf): not here, where the
+        /// far distance -inf grown by its error is NaN (and a ray with a NaN direction meets
+        /// every box), so the walk masks empty slots out.
+        static constexpr bool kCullsEmpty = false;
         double o[3], inv[3];
         int nearHi[3];  ///< the near plane of each axis: hi for a negative direction
         explicit DoubleSlabs(const Ray &ray);
@@ -170,6 +176,11 @@ class WideBvh {
     /// The origin and planes of a float test: per axis, where in a node (in floats from
     /// lo[0][0]) the near and the far planes lie, and the origin rounded for each.
     struct FloatRay {
+        /// The float tests cull an empty slot (lo +inf, hi -inf) without a mask: the ray fits
+        /// (its origin is finite, no reciprocal zero or NaN), so on every axis the near plane's
+        /// distance is +inf and the far one's -inf, whatever the signs, and no clamp or margin
+        /// brings the two ends back in order.
+        static constexpr bool kCullsEmpty = true;
         __m128 oNear[3], oFar[3];
         int nearAt[3], farAt[3];
         /// False where the ray does not fit in floats (an origin beyond 1e30, a direction
@@ -242,8 +253,8 @@ class WideBvh {
     }
     template <bool Near>
     static const char *fetchLine(const std::array<uintptr_t, 2> &bases, const Node &n, int c) {
-        if constexpr (Near)
-            return reinterpret_cast<const char *>(bases[0] + uintptr_t(intptr_t{static_cast<int32_t>(n.fetch[c])} * 64));
+        if constexpr (Near)  // a sign-extending load, then base + index * 8 in the prefetch itself
+            return reinterpret_cast<const char *>(bases[0]) + intptr_t{static_cast<int32_t>(n.fetch[c])} * 8;
         else
             return reinterpret_cast<const char *>(bases[n.child[c] >> 31] + uintptr_t{n.fetch[c]} * 64);
     }
@@ -433,14 +444,16 @@ void WideBvh::walkFetching(const Slabs &slabs, double tMin, double *tMax, Visit 
 #endif
             alignas(16) float tn[4];
             int mask = slabs.test(n, limits, tn);
-            // Without the empty slots (an inverted infinite box still meets a ray with tMax = inf)
+            // Without the empty slots, where the test does not cull their inverted infinite boxes
+            if constexpr (!Slabs::kCullsEmpty) {
 #if defined(__SSE2__)
-            mask &= ~_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(
-                _mm_load_si128(reinterpret_cast<const __m128i *>(n.child)), _mm_set1_epi32(-1))));
+                mask &= ~_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(
+                    _mm_load_si128(reinterpret_cast<const __m128i *>(n.child)), _mm_set1_epi32(-1))));
 #else
-            for (int c = 0; c < 4; ++c)
-                if (n.child[c] == kEmpty) mask &= ~(1 << c);
+                for (int c = 0; c < 4; ++c)
+                    if (n.child[c] == kEmpty) mask &= ~(1 << c);
 #endif
+            }
             // Go on with the nearest child met and push the others, farthest first
             if (mask != 0) {
                 int c0 = __builtin_ctz(mask);

@@ -320,12 +320,19 @@ TEST(WideBvh, EachChildsPrefetchLineIsItsNodeOrItsLeafsData) {
         bvh.setLeafData({data, 40});
         check(reinterpret_cast<uintptr_t>(data), 40);
     }
-    // Only addresses (never read): data below the nodes, counted from them; and far above them
-    // (another mapping), beyond 2^31 lines, where each kind counts from its own first line
+    // Only addresses (never read): data below the nodes, counted from them; and far from them
+    // (another mapping), beyond 2^31 8-byte steps (16 GiB), where each kind counts from its own
+    // first line
     EXPECT_TRUE(bvh.fetchesNear());
-    for (uintptr_t data : {uintptr_t(root) - 64 * 1000 - 17, uintptr_t(root) + (uintptr_t{1} << 40) + 8}) {
+    const uintptr_t gib = uintptr_t{1} << 30;
+    for (auto [data, near] : {std::pair{uintptr_t(root) - 64 * 1000 - 17, true},
+                              {uintptr_t(root) + 15 * gib, true},
+                              {uintptr_t(root) - 15 * gib + 8, true},
+                              {uintptr_t(root) + 17 * gib, false},
+                              {uintptr_t(root) - 17 * gib, false},
+                              {uintptr_t(root) + 1024 * gib + 8, false}}) {
         bvh.setLeafData({reinterpret_cast<const void *>(data), 36});
-        EXPECT_EQ(bvh.fetchesNear(), data < uintptr_t(root));
+        EXPECT_EQ(bvh.fetchesNear(), near) << int64_t(data - uintptr_t(root));
         check(data, 36);
     }
     bvh.setLeafData({nullptr, 0});
@@ -550,6 +557,51 @@ TEST(WideBvh, OverItemBoxesVisitsEveryBoxTheRayMeetsEvenEmptyInfiniteAndHugeOnes
         }
     }
     EXPECT_GT(met, 5000);
+}
+
+TEST(WideBvh, EmptySlotsAreNeverVisited) {
+    // The float tests cull an empty slot's inverted infinite box by themselves (the walk masks
+    // empty slots out only for the double test): from every sign pattern, with zero (+0 and -0)
+    // and tiny direction components, from box planes and corners, forward and along the whole
+    // line, in float and (far from the origin) in double. A visit would read past the leaves
+    Rng rng(11);
+    for (int n = 1; n <= 9; ++n) {
+        std::vector<Bounds3> boxes;
+        for (int i = 0; i < n; ++i) {
+            Vec3 c(rng.uniform() * 4 - 2, rng.uniform() * 4 - 2, rng.uniform() * 4 - 2);
+            boxes.emplace_back(c - Vec3(0.5), c + Vec3(0.5));
+        }
+        WideBvh bvh(boxes);
+        size_t empty = 0;
+        for (const auto &node : bvh.nodes())
+            for (uint32_t c : node.child) empty += c == WideBvh::kEmpty;
+        if (n < 4) {
+            EXPECT_GT(empty, 0u);
+        }
+        const double components[] = {1, -1, 0, -0.0, 1e-30, -1e-300, 0.25};
+        int rays = 0;
+        for (double dx : components)
+            for (double dy : components)
+                for (double dz : components) {
+                    Vec3 d(dx, dy, dz);
+                    if (lengthSquared(d) == 0) continue;
+                    for (int k = 0; k < 4; ++k) {
+                        const Bounds3 &b = boxes[k % n];
+                        Vec3 o = k == 0 ? b.min : k == 1 ? Vec3(b.max.x, 0, b.min.z) : k == 2 ? Vec3(0) : Vec3(1e31);
+                        Ray r(o, d);
+                        for (double tMin : {0.0, 1e-300, -kInfinity})
+                            for (double tMax : {kInfinity, 7.5}) {
+                                double far = tMax;
+                                bvh.traverseLeaves(r, tMin, &far, [&](uint32_t first, uint32_t count, double *) {
+                                    EXPECT_LE(first + count, uint32_t(n)) << describe(r);
+                                    return false;
+                                });
+                                ++rays;
+                            }
+                    }
+                }
+        EXPECT_GT(rays, 1000);
+    }
 }
 
 }  // namespace
