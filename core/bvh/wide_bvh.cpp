@@ -171,8 +171,8 @@ class WideBvhBuilder {
 
     /// boxOf(i, lo, hi) gives the double bounds of item i.
     template <typename BoxOf>
-    WideBvhBuilder(size_t n, BoxOf &&boxOf, WideBvh &bvh, int threads, float itemCost)
-        : bvh_(bvh), threads_(threads), itemCost_(itemCost) {
+    WideBvhBuilder(size_t n, BoxOf &&boxOf, WideBvh &bvh, int threads, float itemCost, int leafItems)
+        : bvh_(bvh), threads_(threads), itemCost_(itemCost), leafItems_(static_cast<uint32_t>(leafItems)) {
         items_.resize(n);
         parallelFor(0, n, n >= kParallelFrom ? static_cast<size_t>(threads) : 1, [&](size_t, size_t begin, size_t end) {
             for (size_t i = begin; i < end; ++i) {
@@ -298,7 +298,7 @@ class WideBvhBuilder {
             auto binsOf = [&](const Item &it, int b[3]) {
                 min(max((it.centroid() - origin) * scale4, zero), last).storeBins(b);
             };
-            if (only >= 0 && n <= static_cast<uint32_t>(WideBvh::kMaxLeafItems)) {
+            if (only >= 0 && n <= leafItems_) {
                 // Two to four items, as many bins: the sweep of the bins, done over the items
                 // themselves (the items of bins 0..k have the union of those bins' boxes). These
                 // are most of the decisions, and filling bins on the stack for sweepBins made
@@ -401,7 +401,7 @@ class WideBvhBuilder {
         // tests weighted by the children's areas, a leaf its items' tests
         float area = r.box.halfArea();
         float splitCost = area > 0 && bestAxis >= 0 ? 1.0f + itemCost_ * bestCost / area : INFINITY;
-        if (n <= static_cast<uint32_t>(WideBvh::kMaxLeafItems) && splitCost >= itemCost_ * n) {
+        if (n <= leafItems_ && splitCost >= itemCost_ * n) {
             r.decision = Range::kLeaf;
             return;
         }
@@ -555,7 +555,7 @@ class WideBvhBuilder {
         for (int c = 0; c < count; ++c) {
             const Range &k = kids[c];
             if (k.decision == Range::kLeaf) {
-                node.child[c] = WideBvh::kLeaf | k.begin << 2 | (k.end - k.begin - 1);
+                node.child[c] = WideBvh::leafRef(k.begin, k.end - k.begin);
             } else if (depth == taskDepth) {
                 pending->push_back({k, index, c, depth + 1, {}, 0});
             } else {
@@ -624,6 +624,7 @@ class WideBvhBuilder {
     WideBvh &bvh_;
     int threads_;
     float itemCost_;
+    uint32_t leafItems_;
     LargeVector<Item> items_;
 };
 
@@ -707,11 +708,12 @@ bool WideBvh::ForwardSlabs::init(const Ray &ray) {
 #endif
 
 template <typename BoxOf>
-void WideBvh::build(size_t n, BoxOf &&boxOf, int threads, float itemCost) {
-    if (n >= kMaxItems) throw std::length_error("a BVH indexes at most 2^29 items (triangles or CSG operands)");
+void WideBvh::build(size_t n, BoxOf &&boxOf, int threads, float itemCost, int leafItems) {
+    if (n >= kMaxItems) throw std::length_error("a BVH indexes at most 2^28 items (triangles or CSG operands)");
+    if (leafItems < 1 || leafItems > kMaxLeafItems) throw std::invalid_argument("a BVH leaf holds 1 to 8 items");
     if (n == 0) return;
     if (threads <= 0) threads = std::max(1u, std::thread::hardware_concurrency());
-    WideBvhBuilder builder(n, boxOf, *this, threads, itemCost);
+    WideBvhBuilder builder(n, boxOf, *this, threads, itemCost, leafItems);
     builder.build();
     nodes_.shrink_to_fit();
     setLeafData({nullptr, 0});
@@ -729,7 +731,7 @@ void WideBvh::setLeafData(LeafData data) {
     // few hundred bytes, far below 2^32 lines
     auto ownLine = [&](uint32_t r) -> uint64_t {
         if (!(r & kLeaf)) return (nodeStart % 64 + uint64_t{r} * sizeof(Node)) / 64;
-        if (r != kEmpty && data.base) return (leafStart % 64 + uint64_t{(r & ~kLeaf) >> 2} * data.stride) / 64;
+        if (r != kEmpty && data.base) return (leafStart % 64 + uint64_t{leafFirst(r)} * data.stride) / 64;
         return 0;
     };
     // Near: each line counted from the nodes' first line, in 8-byte steps (a line is 8 of
@@ -747,7 +749,7 @@ void WideBvh::setLeafData(LeafData data) {
             n.fetch[c] = static_cast<uint32_t>(fetchNear_ ? nearSteps(n.child[c]) : int64_t(ownLine(n.child[c])));
 }
 
-WideBvh::WideBvh(const ir::Mesh &mesh, int threads, float itemCost) {
+WideBvh::WideBvh(const ir::Mesh &mesh, int threads, float itemCost, int leafItems) {
     build(mesh.triangles.size(), [&](size_t i, double lo[3], double hi[3]) {
         const auto &t = mesh.triangles[i];
         const Vec3 &p0 = mesh.positions[t[0]], &p1 = mesh.positions[t[1]], &p2 = mesh.positions[t[2]];
@@ -755,16 +757,16 @@ WideBvh::WideBvh(const ir::Mesh &mesh, int threads, float itemCost) {
             lo[a] = std::min({p0[a], p1[a], p2[a]});
             hi[a] = std::max({p0[a], p1[a], p2[a]});
         }
-    }, threads, itemCost);
+    }, threads, itemCost, leafItems);
 }
 
-WideBvh::WideBvh(const std::vector<Bounds3> &items, int threads, float itemCost) {
+WideBvh::WideBvh(const std::vector<Bounds3> &items, int threads, float itemCost, int leafItems) {
     build(items.size(), [&](size_t i, double lo[3], double hi[3]) {
         for (int a = 0; a < 3; ++a) {
             lo[a] = items[i].min[a];
             hi[a] = items[i].max[a];
         }
-    }, threads, itemCost);
+    }, threads, itemCost, leafItems);
 }
 
 }  // namespace rt

@@ -3,8 +3,9 @@
 // children per node with their boxes stored as floats rounded
 // outward (so a box only ever grows, and no hit is lost), tested four at a time in float with
 // margins that make the test conservative (every box the exact ray meets is visited; rays that
-// do not fit in floats take a double-precision test); leaves of up to four items; binned
-// SAH build, parallel below the top levels and identical for any number of threads.
+// do not fit in floats take a double-precision test); leaves of up to four items (eight for
+// meshes that test a leaf's triangles four at a time); binned SAH build, parallel below the
+// top levels and identical for any number of threads.
 #pragma once
 
 #include <array>
@@ -63,14 +64,21 @@ using LargeVector = std::vector<T, LargeAllocator<T>>;
 class WideBvh {
   public:
     static constexpr int kWidth = 4;
-    static constexpr int kMaxLeafItems = 4;
-    /// Items a BVH can index (29 bits of a child reference).
-    static constexpr size_t kMaxItems = size_t{1} << 29;
+    /// The most items a leaf holds: 4 by default (CSG operands), 8 where a build asks for it
+    /// (meshes whose leaves are tested four triangles at a time).
+    static constexpr int kLeafItems = 4;
+    static constexpr int kMaxLeafItems = 8;
+    /// Items a BVH can index (28 bits of a child reference).
+    static constexpr size_t kMaxItems = size_t{1} << 28;
+    /// A leaf's child reference, and its first slot and item count.
+    static constexpr uint32_t leafRef(uint32_t first, uint32_t count) { return kLeaf | first << 3 | (count - 1); }
+    static constexpr uint32_t leafFirst(uint32_t ref) { return (ref & ~kLeaf) >> 3; }
+    static constexpr uint32_t leafCount(uint32_t ref) { return (ref & 7) + 1; }
 
     struct alignas(64) Node {
         float lo[3][kWidth];  ///< per axis, the lower bound of each child
         float hi[3][kWidth];
-        /// kLeaf | first << 2 | (count - 1), an interior node's index, or kEmpty
+        /// leafRef(first, count), an interior node's index, or kEmpty
         uint32_t child[kWidth];
         /// Per child, the cache line where the walk prefetches it: an interior child's node, a
         /// leaf's data (setLeafData; without it, the root). In 8-byte steps, signed, from the
@@ -97,10 +105,13 @@ class WideBvh {
     /// threads: 0 for std::thread::hardware_concurrency(). The tree does not depend on it.
     /// Throws std::length_error beyond kMaxItems.
     /// Over the triangles of a mesh.
-    explicit WideBvh(const ir::Mesh &mesh, int threads = 0, float itemCost = kTriangleCost);
+    /// leafItems: the most items a leaf holds (1 to kMaxLeafItems).
+    explicit WideBvh(const ir::Mesh &mesh, int threads = 0, float itemCost = kTriangleCost,
+                     int leafItems = kLeafItems);
     /// Over item boxes, which may be empty, infinite or beyond the float range: they are
     /// rounded outward to floats, and their centres clamped to it.
-    explicit WideBvh(const std::vector<Bounds3> &items, int threads = 1, float itemCost = kItemCost);
+    explicit WideBvh(const std::vector<Bounds3> &items, int threads = 1, float itemCost = kItemCost,
+                     int leafItems = kLeafItems);
 
     const LargeVector<Node> &nodes() const { return nodes_; }
     /// Item (triangle) indices in leaf order; empty after dropItemOrder().
@@ -129,7 +140,7 @@ class WideBvh {
         const void *base;  ///< null: no leaf data
         size_t stride;
     };
-    /// Makes the walk prefetch the start of each leaf child's data (two cache lines) while it
+    /// Makes the walk prefetch the start of each leaf child's data (four cache lines) while it
     /// tests the node, a level before it visits the leaf. It decides only what is fetched
     /// ahead: without it, or after a copy of the BVH, the hits are the same.
     void setLeafData(LeafData data);
@@ -141,7 +152,7 @@ class WideBvh {
     /// in 8-byte steps).
     bool fetchesNear() const { return fetchNear_; }
     /// As traverseSlots, a leaf at a time: visit(first, count, tMax) gets the leaf's slots
-    /// [first, first + count) (count <= kMaxLeafItems).
+    /// [first, first + count) (count <= the build's leafItems).
     template <typename Visit>
     void traverseLeaves(const Ray &ray, double tMin, double *tMax, Visit &&visit) const;
 
@@ -232,7 +243,7 @@ class WideBvh {
     static constexpr float kLargest = 3.40282347e38f;     ///< the largest finite float
 #endif
     template <typename BoxOf>
-    void build(size_t n, BoxOf &&boxOf, int threads, float itemCost);
+    void build(size_t n, BoxOf &&boxOf, int threads, float itemCost, int leafItems);
     template <typename Slabs, typename Visit>
     void walk(const Slabs &slabs, double tMin, double *tMax, Visit &visit) const;
     template <bool Near, typename Slabs, typename Visit>
@@ -422,15 +433,17 @@ void WideBvh::walkFetching(const Slabs &slabs, double tMin, double *tMax, Visit 
 #endif
     while (true) {
         if (current & kLeaf) {
-            if (visit((current & ~kLeaf) >> 2, (current & 3) + 1, tMax)) return;
+            if (visit(leafFirst(current), leafCount(current), tMax)) return;
             slabs.lower(limits, *tMax);
         } else {
             const Node &n = nodes_[current];
 #if defined(__SSE2__)
             // Every child's node or leaf data is fetched while this node is tested, so the walk
-            // waits on memory about once a level instead of once a node. Written out: GCC 12 at
-            // -O2 dropped these prefetches from a lambda called for each child, and kept a loop
-            // with a branch per child
+            // waits on memory about once a level instead of once a node: four lines a child, a
+            // node's two and its neighbour's (often a sibling the walk visits next), or the
+            // first 256 bytes of a leaf's data (a float leaf of up to eight triangles takes 40
+            // bytes each). Written out: GCC 12 at -O2 dropped these prefetches from a lambda
+            // called for each child, and kept a loop with a branch per child
             const char *p0 = fetchLine<Near>(bases, n, 0), *p1 = fetchLine<Near>(bases, n, 1);
             const char *p2 = fetchLine<Near>(bases, n, 2), *p3 = fetchLine<Near>(bases, n, 3);
             _mm_prefetch(p0, _MM_HINT_T0);
@@ -441,6 +454,14 @@ void WideBvh::walkFetching(const Slabs &slabs, double tMin, double *tMax, Visit 
             _mm_prefetch(p2 + 64, _MM_HINT_T0);
             _mm_prefetch(p3, _MM_HINT_T0);
             _mm_prefetch(p3 + 64, _MM_HINT_T0);
+            _mm_prefetch(p0 + 128, _MM_HINT_T0);
+            _mm_prefetch(p0 + 192, _MM_HINT_T0);
+            _mm_prefetch(p1 + 128, _MM_HINT_T0);
+            _mm_prefetch(p1 + 192, _MM_HINT_T0);
+            _mm_prefetch(p2 + 128, _MM_HINT_T0);
+            _mm_prefetch(p2 + 192, _MM_HINT_T0);
+            _mm_prefetch(p3 + 128, _MM_HINT_T0);
+            _mm_prefetch(p3 + 192, _MM_HINT_T0);
 #endif
             alignas(16) float tn[4];
             int mask = slabs.test(n, limits, tn);

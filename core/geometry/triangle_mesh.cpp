@@ -85,8 +85,13 @@ struct FloatLeafLoad {
     }
 };
 
+/// edgeCandidates of a float leaf's n triangles (up to eight: two groups of four, independent
+/// of each other, in lanes 0 to 3 and 4 to 7 of the result).
 SCADRAY_AVX2_FMA unsigned floatLeafCandidates(const uint32_t *coordinates, uint32_t n, const TriangleMesh::RayFrame &f) {
-    return edgeCandidates(FloatLeafLoad{reinterpret_cast<const float *>(coordinates), n}, n, f);
+    const float *c = reinterpret_cast<const float *>(coordinates);
+    unsigned lanes = edgeCandidates(FloatLeafLoad{c, n}, std::min(n, 4u), f);
+    if (n > 4) lanes |= edgeCandidates(FloatLeafLoad{c + 4, n}, n - 4, f) << 4;
+    return lanes;
 }
 
 /// Coordinate a of vertex v of a leaf of triangle records, gathered by vertex index: at[v]
@@ -144,7 +149,8 @@ bool TriangleMesh::fourWideLeaves() {
 WideBvh TriangleMesh::buildBvh(const ir::Mesh &mesh, int threads) {
     // The four-wide edge test makes a leaf of up to four triangles cost little more than one,
     // so where it runs the BVH has fuller leaves
-    return WideBvh(mesh, threads, fourWideLeaves() ? WideBvh::kTriangleCost : WideBvh::kItemCost);
+    if (fourWideLeaves()) return WideBvh(mesh, threads, WideBvh::kTriangleCost, WideBvh::kMaxLeafItems);
+    return WideBvh(mesh, threads, WideBvh::kItemCost);
 }
 
 TriangleMesh::TriangleMesh(ir::MeshPtr mesh, int buildThreads) : mesh_(std::move(mesh)) {
@@ -189,7 +195,7 @@ LargeVector<uint32_t> TriangleMesh::floatLeaves(const ir::Mesh &mesh, const Wide
         for (size_t k = begin; k < end; ++k)
             for (uint32_t ref : nodes[k].child) {
                 if (ref == WideBvh::kEmpty || !(ref & WideBvh::kLeaf)) continue;
-                const uint32_t first = (ref & ~WideBvh::kLeaf) >> 2, n = (ref & 3) + 1;
+                const uint32_t first = WideBvh::leafFirst(ref), n = WideBvh::leafCount(ref);
                 uint32_t *leaf = out.data() + kFloatLeafWords * first;
                 for (uint32_t i = 0; i < n; ++i) {
                     const uint32_t triangle = order[first + i];
@@ -221,7 +227,10 @@ void TriangleMesh::forLeaf(const RayFrame &frame, uint32_t first, uint32_t count
         const auto &pos = mesh_->positions;
         const LeafTriangle *leaf = leafTriangles_.data() + first;
 #ifdef SCADRAY_LEAF_FILTER
-        if (fourWide_) lanes = indexedLeafCandidates(leaf, count, pos.data(), frame);
+        if (fourWide_) {
+            lanes = indexedLeafCandidates(leaf, std::min(count, 4u), pos.data(), frame);
+            if (count > 4) lanes |= indexedLeafCandidates(leaf + 4, count - 4, pos.data(), frame) << 4;
+        }
 #endif
         for (; lanes != 0; lanes &= lanes - 1) {
             const LeafTriangle &t = leaf[__builtin_ctz(lanes)];

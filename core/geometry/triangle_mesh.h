@@ -26,7 +26,8 @@ class TriangleMesh {
     };
     /// The triangles of `mesh` in the leaf order of `bvh` (built over that mesh).
     static LargeVector<LeafTriangle> leafOrder(const ir::Mesh &mesh, const WideBvh &bvh);
-    /// Words after the last leaf, so a four-lane load of a shorter leaf stays in the array.
+    /// Words after the last leaf, so a four-lane load of a shorter leaf (or of the second four
+    /// of a leaf of five to seven) stays in the array.
     static constexpr size_t kLeafPadding = 4;
     /// Words of float leaves a triangle takes: its index and its nine coordinates.
     static constexpr size_t kFloatLeafWords = 10;
@@ -34,12 +35,14 @@ class TriangleMesh {
     /// 32-bit words: for a leaf of n triangles from slot `first`, at [10 * first, 10 * (first +
     /// n)), first the n triangles' indices, then their vertices as floats, coordinate by
     /// coordinate: coordinate j (vertex j / 3, axis j % 3) of the i-th triangle in word
-    /// n + j * n + i, so a leaf's triangles sit side by side, four to a SIMD register. Then
+    /// n + j * n + i, so a leaf's triangles sit side by side, four to a SIMD register (a leaf
+    /// holds up to eight: two registers a coordinate). Then
     /// kLeafPadding words. Empty unless every position is a float (as STL and glTF give them),
     /// so the floats stand for the positions exactly. threads: 0 for all cores.
     static LargeVector<uint32_t> floatLeaves(const ir::Mesh &mesh, const WideBvh &bvh, int threads = 0);
     /// Whether a leaf's triangles are tested four at a time (on a CPU with AVX2 and FMA); mesh
-    /// BVHs are then built with WideBvh::kTriangleCost, for fuller leaves.
+    /// BVHs are then built with WideBvh::kTriangleCost and leaves of up to eight triangles (two
+    /// groups of four), for fuller leaves and fewer nodes.
     static bool fourWideLeaves();
     /// The BVH a TriangleMesh builds over `mesh` on this CPU (threads: 0 for all cores).
     static WideBvh buildBvh(const ir::Mesh &mesh, int threads);

@@ -10,6 +10,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 
 #include "core/bvh/wide_bvh.h"
@@ -148,15 +149,17 @@ TEST(WideBvh, FloatLeavesHoldEachLeafsTrianglesAndVerticesSideBySide) {
     const auto &words = mesh.floatLeaves();
     ASSERT_EQ(words.size(), TriangleMesh::kFloatLeafWords * order.size() + TriangleMesh::kLeafPadding);
     size_t leafTriangles = 0;
+    uint32_t largest = 0;
     for (const auto &node : mesh.bvh().nodes())
         for (int c = 0; c < WideBvh::kWidth; ++c) {
             uint32_t ref = node.child[c];
             if (ref == WideBvh::kEmpty || !(ref & WideBvh::kLeaf)) continue;
-            const uint32_t first = (ref & ~WideBvh::kLeaf) >> 2, n = (ref & 3) + 1;
+            const uint32_t first = WideBvh::leafFirst(ref), n = WideBvh::leafCount(ref);
             const uint32_t *leaf = words.data() + TriangleMesh::kFloatLeafWords * first;
             // The walk prefetches the leaf's words
             ASSERT_TRUE(fetchLineHolds(mesh.bvh(), node, c, leaf));
             leafTriangles += n;
+            largest = std::max(largest, n);
             for (uint32_t i = 0; i < n; ++i) {
                 ASSERT_EQ(leaf[i], order[first + i]);
                 for (int j = 0; j < 9; ++j)
@@ -164,6 +167,10 @@ TEST(WideBvh, FloatLeavesHoldEachLeafsTrianglesAndVerticesSideBySide) {
             }
         }
     EXPECT_EQ(leafTriangles, order.size());
+    // Where a leaf's triangles are tested four at a time, leaves hold up to eight (two groups),
+    // and this mesh has some of more than four, so the tests above run the second group
+    EXPECT_EQ(largest > 4, TriangleMesh::fourWideLeaves());
+    EXPECT_LE(largest, 8u);
     // One position that is not a float (0.1) and the mesh keeps vertex indices and its order
     auto d = test::inFloats(troubleMesh(2, 1, Vec3(0)));
     d->positions[7].y = 0.1;
@@ -172,12 +179,15 @@ TEST(WideBvh, FloatLeavesHoldEachLeafsTrianglesAndVerticesSideBySide) {
     EXPECT_FALSE(indexed.leafTriangles().empty());
     EXPECT_FALSE(indexed.bvh().itemOrder().empty());
     // whose walk prefetches a leaf's triangle records
+    largest = 0;
     for (const auto &node : indexed.bvh().nodes())
         for (int c = 0; c < WideBvh::kWidth; ++c) {
             if (node.child[c] == WideBvh::kEmpty || !(node.child[c] & WideBvh::kLeaf)) continue;
+            largest = std::max(largest, WideBvh::leafCount(node.child[c]));
             ASSERT_TRUE(fetchLineHolds(indexed.bvh(), node, c,
-                                       &indexed.leafTriangles()[(node.child[c] & ~WideBvh::kLeaf) >> 2]));
+                                       &indexed.leafTriangles()[WideBvh::leafFirst(node.child[c])]));
         }
+    EXPECT_EQ(largest > 4, TriangleMesh::fourWideLeaves());
 }
 
 TEST(WideBvh, ClosestHitMatchesBruteForceFarFromTheOriginAtEveryScale) {
@@ -222,7 +232,7 @@ void expectWellFormed(const WideBvh &bvh, const ir::Mesh &m) {
         for (int c = 0; c < WideBvh::kWidth; ++c) {
             uint32_t ref = node.child[c];
             if (ref == WideBvh::kEmpty || !(ref & WideBvh::kLeaf)) continue;
-            uint32_t first = (ref & ~WideBvh::kLeaf) >> 2, count = (ref & 3) + 1;
+            uint32_t first = WideBvh::leafFirst(ref), count = WideBvh::leafCount(ref);
             ASSERT_LE(first + count, bvh.itemOrder().size());
             for (uint32_t i = first; i < first + count; ++i)
                 for (uint32_t v : m.triangles[bvh.itemOrder()[i]])
@@ -303,7 +313,7 @@ TEST(WideBvh, EachChildsPrefetchLineIsItsNodeOrItsLeafsData) {
                     target = root + int64_t(r) * int64_t(sizeof(WideBvh::Node));
                 } else if (data) {
                     ++leaves;
-                    target = int64_t(data) + int64_t((r & ~WideBvh::kLeaf) >> 2) * int64_t(stride);
+                    target = int64_t(data) + int64_t(WideBvh::leafFirst(r)) * int64_t(stride);
                 }
                 ASSERT_TRUE(fetchLineHolds(bvh, n, c, uintptr_t(target)))
                     << "child " << c << " ref " << r << ": line "
@@ -532,6 +542,14 @@ TEST(WideBvh, OverItemBoxesVisitsEveryBoxTheRayMeetsEvenEmptyInfiniteAndHugeOnes
     WideBvh bvh(boxes, 2);
     std::vector<int> seen(boxes.size(), 0);
     for (uint32_t i : bvh.itemOrder()) ++seen.at(i);
+    // CSG operands keep leaves of up to four (they are tested one at a time)
+    for (const auto &node : bvh.nodes())
+        for (uint32_t c : node.child)
+            if (c != WideBvh::kEmpty && (c & WideBvh::kLeaf)) {
+                ASSERT_LE(WideBvh::leafCount(c), uint32_t(WideBvh::kLeafItems));
+            }
+    EXPECT_THROW(WideBvh(boxes, 1, WideBvh::kItemCost, 0), std::invalid_argument);
+    EXPECT_THROW(WideBvh(boxes, 1, WideBvh::kItemCost, 9), std::invalid_argument);
     EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int s) { return s == 1; }));
     int met = 0;
     for (int k = 0; k < 800; ++k) {
