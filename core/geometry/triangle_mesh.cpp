@@ -49,7 +49,7 @@ SCADRAY_AVX2_FMA inline __m256d differenceOfProducts4(__m256d a, __m256d b, __m2
 /// differenceOfProducts with its two FMAs), so a lane left out is one that intersect rejects
 /// at its first test. NaN edge functions pass, as there.
 template <typename Load>
-SCADRAY_AVX2_FMA inline unsigned edgeCandidates(const Load &load, uint32_t n, const TriangleMesh::RayFrame &f) {
+SCADRAY_AVX2_FMA __attribute__((always_inline)) inline unsigned edgeCandidates(const Load &load, uint32_t n, const TriangleMesh::RayFrame &f) {
     const __m256d ox = _mm256_set1_pd(f.ox), oy = _mm256_set1_pd(f.oy), oz = _mm256_set1_pd(f.oz);
     const __m256d shx = _mm256_set1_pd(f.sx), shy = _mm256_set1_pd(f.sy);
     const int kx = f.kx, ky = f.ky, kz = f.kz;
