@@ -735,7 +735,8 @@ void WideBvh::setLeafData(LeafData data) {
         return 0;
     };
     // Near: each line counted from the nodes' first line, in 8-byte steps (a line is 8 of
-    // them), fits in 31 bits and a sign; always without leaf data, up to 2^28 nodes
+    // them), fits in 31 bits and a sign; without leaf data, wherever the nodes take less than
+    // 16 GiB (2^27 nodes)
     const int64_t shift = data.base ? (int64_t(leafLines_) - int64_t(nodeLines)) / 64 : 0;
     auto nearSteps = [&](uint32_t r) { return (int64_t(ownLine(r)) + (r & kLeaf ? shift : 0)) * 8; };
     fetchNear_ = true;
