@@ -727,7 +727,7 @@ void WideBvh::setLeafData(LeafData data) {
     const uintptr_t nodeLines = nodeStart & ~uintptr_t{63};
     leafLines_ = data.base ? leafStart & ~uintptr_t{63} : 0;
     // Each child's line from its own kind's first line: a node's, or a leaf's data (an empty
-    // slot: the leaf data's first line; a leaf without data: the root). At most 2^29 slots of a
+    // slot: the leaf data's first line; a leaf without data: the root). At most 2^28 slots of a
     // few hundred bytes, far below 2^32 lines
     auto ownLine = [&](uint32_t r) -> uint64_t {
         if (!(r & kLeaf)) return (nodeStart % 64 + uint64_t{r} * sizeof(Node)) / 64;

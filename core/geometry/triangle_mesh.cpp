@@ -100,25 +100,32 @@ SCADRAY_AVX2_FMA unsigned floatLeafCandidates(const uint32_t *coordinates, uint3
 struct GatherLoad {
     const double *positions;
     __m128i at[3];
+    /// The load of a group of n (1 to 4) records.
+    SCADRAY_AVX2_FMA static GatherLoad of(const TriangleMesh::LeafTriangle *group, uint32_t n, const Vec3 *positions) {
+        const TriangleMesh::LeafTriangle &t0 = group[0], &t1 = group[n > 1 ? 1 : 0], &t2 = group[n > 2 ? 2 : 0],
+                                         &t3 = group[n > 3 ? 3 : 0];
+        static_assert(sizeof(Vec3) == 3 * sizeof(double));
+        GatherLoad load{&positions[0].x, {}};
+        for (int v = 0; v < 3; ++v)
+            load.at[v] = _mm_mullo_epi32(_mm_set_epi32(static_cast<int>(t3.v[v]), static_cast<int>(t2.v[v]),
+                                                       static_cast<int>(t1.v[v]), static_cast<int>(t0.v[v])),
+                                         _mm_set1_epi32(3));
+        return load;
+    }
     SCADRAY_AVX2_FMA __m256d operator()(int v, int a) const {
         return _mm256_mask_i32gather_pd(_mm256_setzero_pd(), positions + a, at[v],
                                         _mm256_castsi256_pd(_mm256_set1_epi64x(-1)), 8);
     }
 };
 
-/// edgeCandidates of a leaf of n triangle records, the positions gathered by vertex index
-/// (three times an index must fit in 31 bits: TriangleMesh checks the vertex count).
+/// edgeCandidates of a leaf of n triangle records (up to eight, in two groups of four as
+/// floatLeafCandidates takes them), the positions gathered by vertex index (three times an
+/// index must fit in 31 bits: TriangleMesh checks the vertex count).
 SCADRAY_AVX2_FMA unsigned indexedLeafCandidates(const TriangleMesh::LeafTriangle *leaf, uint32_t n,
                                                 const Vec3 *positions, const TriangleMesh::RayFrame &f) {
-    const TriangleMesh::LeafTriangle &t0 = leaf[0], &t1 = leaf[n > 1 ? 1 : 0], &t2 = leaf[n > 2 ? 2 : 0],
-                                     &t3 = leaf[n > 3 ? 3 : 0];
-    static_assert(sizeof(Vec3) == 3 * sizeof(double));
-    GatherLoad load{&positions[0].x, {}};
-    for (int v = 0; v < 3; ++v)
-        load.at[v] = _mm_mullo_epi32(_mm_set_epi32(static_cast<int>(t3.v[v]), static_cast<int>(t2.v[v]),
-                                                   static_cast<int>(t1.v[v]), static_cast<int>(t0.v[v])),
-                                     _mm_set1_epi32(3));
-    return edgeCandidates(load, n, f);
+    unsigned lanes = edgeCandidates(GatherLoad::of(leaf, std::min(n, 4u), positions), std::min(n, 4u), f);
+    if (n > 4) lanes |= edgeCandidates(GatherLoad::of(leaf + 4, n - 4, positions), n - 4, f) << 4;
+    return lanes;
 }
 
 #endif
@@ -227,10 +234,7 @@ void TriangleMesh::forLeaf(const RayFrame &frame, uint32_t first, uint32_t count
         const auto &pos = mesh_->positions;
         const LeafTriangle *leaf = leafTriangles_.data() + first;
 #ifdef SCADRAY_LEAF_FILTER
-        if (fourWide_) {
-            lanes = indexedLeafCandidates(leaf, std::min(count, 4u), pos.data(), frame);
-            if (count > 4) lanes |= indexedLeafCandidates(leaf + 4, count - 4, pos.data(), frame) << 4;
-        }
+        if (fourWide_) lanes = indexedLeafCandidates(leaf, count, pos.data(), frame);
 #endif
         for (; lanes != 0; lanes &= lanes - 1) {
             const LeafTriangle &t = leaf[__builtin_ctz(lanes)];
