@@ -2,6 +2,8 @@
 // Diagnostic formatting with a source excerpt, and the collecting sink.
 #include "core/ir/diagnostics.h"
 
+#include "core/system/input_file.h"
+
 #include <sys/stat.h>
 
 #include <algorithm>
@@ -159,8 +161,10 @@ void markUnquotable(const std::string &path) {
 
 std::string formatDiagnostic(const Diagnostic &d, bool withExcerpt) {
     // A diagnostic about the scene as a whole has no location to print
-    std::string out = (d.loc.file ? d.loc.toString() + ": " : std::string()) +
-                      severityName(d.severity) + ": " + d.message;
+    // File names and messages quote input (names, echo() text): control characters are
+    // escaped so that a file cannot drive the terminal (clear it, retitle it, recolour it)
+    std::string out = (d.loc.file ? printable(d.loc.toString()) + ": " : std::string()) +
+                      severityName(d.severity) + ": " + printable(d.message, true);
     if (!withExcerpt || !d.loc.isValid() || isUnquotable(*d.loc.file)) return out;
     int col = std::max(d.loc.col, 1);
     // Long lines (minified JSON) are shown as a window around the column
@@ -174,10 +178,10 @@ std::string formatDiagnostic(const Diagnostic &d, bool withExcerpt) {
     int64_t last = first - 1 + static_cast<int64_t>(window.size());
     std::string lead = first > 1 ? "..." : "";
     std::string tail = last < lineLength ? "..." : "";
-    out += "\n    " + lead + window + tail + "\n    " + std::string(lead.size(), ' ');
-    // Keep tabs so the caret lines up under the offending text
-    for (int i = first; i < col && i - first < static_cast<int>(window.size()); ++i)
-        out += window[static_cast<size_t>(i - first)] == '\t' ? '\t' : ' ';
+    out += "\n    " + lead + printable(window) + tail + "\n    " + std::string(lead.size(), ' ');
+    // Keep tabs so the caret lines up under the offending text, as shown (escapes included)
+    size_t before = static_cast<size_t>(std::clamp(col - first, 0, static_cast<int>(window.size())));
+    for (char c : printable(window.substr(0, before))) out += c == '\t' ? '\t' : ' ';
     out += "^";
     return out;
 }
@@ -255,6 +259,14 @@ std::vector<std::string> DiagnosticSink::summary() const {
     for (const auto &k : kinds_) line(k, "like: ");
     line(overflowKind_, "of other kinds, the first: ");
     return lines;
+}
+
+std::string readInputFileAt(const std::string &path, const SourceLoc &loc, uint64_t maxBytes) {
+    try {
+        return readInputFile(path, maxBytes);
+    } catch (const InputFileError &e) {
+        throw ParseError(loc, e.what());
+    }
 }
 
 }  // namespace rt

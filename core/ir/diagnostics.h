@@ -112,4 +112,8 @@ class SceneError : public LocatedError {
     using LocatedError::LocatedError;
 };
 
+/// readInputFile (core/system/input_file.h) with its refusal as a ParseError at `loc`: the
+/// reader of every file an importer opens on behalf of its input.
+std::string readInputFileAt(const std::string &path, const SourceLoc &loc, uint64_t maxBytes);
+
 }  // namespace rt

@@ -2,6 +2,8 @@
 // Temporary files beside their target, and the interrupt handler that removes them.
 #include "core/system/temp_file.h"
 
+#include "core/system/input_file.h"
+
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -77,6 +79,7 @@ mode_t newFileMode() {
 }  // namespace
 
 TempFile::TempFile(const std::string &target, const std::string &suffix) : target_(target) {
+    refuseOverwritingInput(target);
     fs::path t(target);
     fs::path dir = t.has_parent_path() ? t.parent_path() : fs::path(".");
     std::error_code ec;
@@ -102,19 +105,42 @@ TempFile::~TempFile() {
 }
 
 void TempFile::commit() {
+    std::string problem;
+    // Checked again at the end: an input read while this file was written counts too
+    try {
+        refuseOverwritingInput(target_);
+    } catch (const std::runtime_error &e) {
+        problem = e.what();
+    }
     std::error_code ec;
-    fs::rename(path_, target_, ec);
-    if (ec) {
+    if (problem.empty()) fs::rename(path_, target_, ec);
+    if (ec) problem = "cannot write '" + target_ + "': " + ec.message();
+    if (!problem.empty()) {
         ::unlink(path_.c_str());
         done_ = true;
         releaseSlot(slot_);
         slot_ = -1;
-        throw std::runtime_error("cannot write '" + target_ + "': " + ec.message());
+        throw std::runtime_error(problem);
     }
     done_ = true;
     // Released after the rename: an interrupt in between unlinks a name that is gone
     releaseSlot(slot_);
     slot_ = -1;
+}
+
+TempDir::TempDir(const std::string &parent) {
+    std::string name = (fs::path(parent.empty() ? "." : parent) / ".scadray-XXXXXX").string();
+    std::vector<char> buf(name.begin(), name.end());
+    buf.push_back('\0');
+    if (!::mkdtemp(buf.data()))
+        throw std::runtime_error("cannot create a temporary folder in '" + parent +
+                                 "': " + std::strerror(errno));
+    path_ = buf.data();
+}
+
+TempDir::~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
 }
 
 ChildGroupGuard::ChildGroupGuard(int pgid) {

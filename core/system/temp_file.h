@@ -31,6 +31,23 @@ class TempFile {
     bool done_ = false;
 };
 
+/// A new, empty folder `.scadray-XXXXXX` inside `parent` (mkdtemp: made fresh and private,
+/// so nothing in it was put there by anyone else). The destructor removes it with whatever is
+/// still in it.
+class TempDir {
+  public:
+    /// Throws std::runtime_error naming `parent` when it is missing or not writable.
+    explicit TempDir(const std::string &parent);
+    ~TempDir();
+    TempDir(const TempDir &) = delete;
+    TempDir &operator=(const TempDir &) = delete;
+
+    const std::string &path() const { return path_; }
+
+  private:
+    std::string path_;
+};
+
 /// While it lives, an interrupt caught by installInterruptCleanup() also kills the process
 /// group `pgid` (an external renderer in its own group would otherwise outlive scadray, and
 /// the time limit scadray enforces on it).

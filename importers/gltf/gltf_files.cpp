@@ -2,16 +2,13 @@
 // What a glTF file may make the importer read: a scan of its JSON text (nesting depth, buffer
 // and image URIs with their line and column) before tinygltf parses it, and the filesystem
 // callbacks tinygltf reads through, which open nothing outside the model's folder.
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 
+#include "core/system/input_file.h"
 #include "importers/gltf/gltf_internal.h"
 #include "importers/scad/lexer.h"  // appendUtf8
 
@@ -225,16 +222,6 @@ bool hasScheme(const std::string &uri) {
     return true;
 }
 
-/// `inner` lies in `folder` or below it (both canonical or weakly canonical).
-bool isInside(const fs::path &inner, const fs::path &folder) {
-    auto f = folder.begin(), i = inner.begin();
-    for (; f != folder.end(); ++f, ++i) {
-        if (f->empty()) continue;  // a trailing separator
-        if (i == inner.end() || *i != *f) return false;
-    }
-    return true;
-}
-
 }  // namespace
 
 ModelFolder::ModelFolder(const std::string &gltfPath) {
@@ -253,7 +240,7 @@ std::string ModelFolder::check(const std::string &path, fs::path *resolved) cons
     if (p.is_relative()) p = fs::current_path(ec) / p;
     fs::path canonical = fs::weakly_canonical(p, ec);
     if (ec) return "cannot be resolved: " + ec.message();
-    if (!isInside(canonical, folder_))
+    if (!isInsideFolder(canonical, folder_))
         return "lies outside the model's folder " + folder_.string() +
                " (a glTF file may only use files in its own folder or below it, and data: URIs)";
     if (resolved) *resolved = canonical;
@@ -316,52 +303,39 @@ bool fsReadWholeFile(std::vector<unsigned char> *out, std::string *err, const st
         if (err) *err += problem;
         return false;
     }
-    // O_NONBLOCK: a FIFO swapped in since the check must not hang the open; fstat then
-    // refuses it
-    int fd = ::open(resolved.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
-    if (fd < 0) {
-        if (err) *err += std::strerror(errno);
-        return false;
-    }
-    struct stat st {};
-    std::string refusal;
-    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_size < 0) {
-        refusal = "is not a regular file";
-    } else {
-        auto size = static_cast<uint64_t>(st.st_size);
+    // Through the input reader (regular files only, never blocking): examined first for the
+    // budget, then read, each open checking again, so a FIFO swapped in between cannot hang it
+    std::string refusal, bytes;
+    try {
+        uint64_t size = checkInputFile(resolved.string(), kMaxExternalFileBytes);
         uint64_t distinct = files->distinctBytes;
         if (!files->sizes.count(resolved.string())) distinct += size;
         uint64_t budget = std::min(kMaxExternalBytes, 2 * distinct + kExternalRereadSlack);
-        if (size > kMaxExternalFileBytes)
-            refusal = "is " + std::to_string(size) + " bytes, more than the limit of " +
-                      std::to_string(kMaxExternalFileBytes) + " for one file";
-        else if (size > budget - std::min(budget, files->bytesRead))
+        if (size > budget - std::min(budget, files->bytesRead))
             refusal =
                 "is named too often: reading it again would bring the bytes read for this "
                 "model to " +
                 std::to_string(files->bytesRead + size) +
                 ", more than twice the size of the files it names plus " +
                 std::to_string(kExternalRereadSlack);
+        else
+            bytes = readInputFile(resolved.string(), size);
+    } catch (const InputFileError &e) {
+        refusal = e.reason() == InputFileError::Reason::NotRegular ? "is not a regular file"
+                  : e.reason() == InputFileError::Reason::TooLarge
+                      ? "is more than the limit of " + std::to_string(kMaxExternalFileBytes) +
+                            " bytes for one file"
+                      : e.what();
     }
     if (!refusal.empty()) {
-        ::close(fd);
         files->refused.push_back("'" + path + "' " + refusal);
         if (err) *err += refusal;
         return false;
     }
-    size_t size = static_cast<size_t>(st.st_size);
-    out->resize(size);
-    size_t got = 0;
-    while (got < size) {
-        ssize_t n = ::read(fd, out->data() + got, size - got);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) break;
-        got += static_cast<size_t>(n);
-    }
-    ::close(fd);
-    out->resize(got);
-    files->bytesRead += got;
-    if (files->sizes.emplace(resolved.string(), got).second) files->distinctBytes += got;
+    out->assign(bytes.begin(), bytes.end());
+    files->bytesRead += bytes.size();
+    if (files->sizes.emplace(resolved.string(), bytes.size()).second)
+        files->distinctBytes += bytes.size();
     return true;
 }
 

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iterator>
 #include <limits>
 #include <optional>
@@ -185,25 +184,12 @@ std::optional<std::string> overflowToken(std::string_view message) {
                               std::to_string(line) + ", column " + std::to_string(column) + ")");
 }
 
-/// The file's bytes, refusing what is not a regular file (a FIFO, /dev/zero) or is larger than
-/// a glTF file can be.
+/// The file's bytes, through the input reader: a FIFO, /dev/zero or a folder is refused, and so
+/// is a file larger than a glTF file can be (its lengths are 32-bit).
 std::vector<unsigned char> readMainFile(const std::string &path, const SourceLoc &loc) {
-    std::error_code ec;
-    std::filesystem::file_status st = std::filesystem::status(path, ec);
-    if (std::filesystem::is_directory(st)) throw ParseError(loc, "'" + path + "' is a directory");
-    if (std::filesystem::exists(st) && !std::filesystem::is_regular_file(st))
-        throw ParseError(loc, "'" + path + "' is not a regular file");
-    if (std::filesystem::exists(st) &&
-        std::filesystem::file_size(path, ec) >= std::numeric_limits<unsigned int>::max())
-        throw ParseError(loc, "glTF file is larger than 4 GiB");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw ParseError(loc, "cannot open glTF file '" + path + "'");
-    std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
-                                     std::istreambuf_iterator<char>());
-    if (in.bad()) throw ParseError(loc, "cannot read glTF file '" + path + "'");
-    if (bytes.size() >= std::numeric_limits<unsigned int>::max())
-        throw ParseError(loc, "glTF file is larger than 4 GiB");
-    return bytes;
+    std::string bytes =
+        readInputFileAt(path, loc, uint64_t{std::numeric_limits<unsigned int>::max()} - 1);
+    return std::vector<unsigned char>(bytes.begin(), bytes.end());
 }
 
 /// Checks a .glb's header and chunk lengths before tinygltf reads them, and cuts the file to

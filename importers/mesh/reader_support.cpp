@@ -4,11 +4,6 @@
 
 #include "core/math/rng.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <charconv>
 #include <cstring>
 #include <limits>
@@ -28,42 +23,8 @@ uint64_t bitsOf(double d) {
 
 }  // namespace
 
-std::string readRegularFile(const std::string &path, const SourceLoc &loc, uint64_t maxBytes) {
-    // Non-blocking, so that opening a FIFO without a writer returns at once; fstat of the open
-    // descriptor then decides what it is
-    int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-    if (fd < 0) throw ParseError(loc, "can't open file '" + path + "': " + std::strerror(errno));
-    struct Closer {
-        int fd;
-        ~Closer() { ::close(fd); }
-    } closer{fd};
-    struct stat st {};
-    if (::fstat(fd, &st) != 0)
-        throw ParseError(loc, "can't read file '" + path + "': " + std::strerror(errno));
-    if (!S_ISREG(st.st_mode))
-        throw ParseError(loc, "can't read '" + path + "': not a regular file (" +
-                                  (S_ISDIR(st.st_mode) ? "a directory" : "a device, pipe or socket") +
-                                  ")");
-    auto size = static_cast<uint64_t>(st.st_size);
-    if (size > maxBytes)
-        throw ParseError(loc, "file '" + path + "' is too large: " + std::to_string(size) +
-                                  " bytes, more than the limit of " + std::to_string(maxBytes));
-    std::string data(static_cast<size_t>(size), '\0');
-    size_t got = 0;
-    // A file that grows while being read is cut at the size it had
-    while (got < data.size()) {
-        ssize_t n = ::read(fd, data.data() + got, data.size() - got);
-        if (n < 0 && errno == EINTR) continue;
-        if (n < 0) throw ParseError(loc, "can't read file '" + path + "': " + std::strerror(errno));
-        if (n == 0) break;
-        got += static_cast<size_t>(n);
-    }
-    data.resize(got);
-    return data;
-}
-
 std::string readFileBytes(const std::string &path, const std::shared_ptr<const std::string> &file) {
-    return readRegularFile(path, SourceLoc(file, 0, 0), kMaxMeshFileBytes);
+    return readInputFileAt(path, SourceLoc(file, 0, 0), kMaxMeshFileBytes);
 }
 
 ParseError byteError(const std::shared_ptr<const std::string> &file, uint64_t offset,

@@ -18,12 +18,7 @@ namespace rt::meshio::detail {
 /// Largest mesh file read (1 GiB: about 20 million binary STL triangles).
 constexpr uint64_t kMaxMeshFileBytes = uint64_t{1} << 30;
 
-/// Reads a whole regular file of at most `maxBytes`; throws ParseError at `loc` when it cannot
-/// be read, is not a regular file (a directory, FIFO or device is refused without blocking or
-/// reading from it) or is larger (refused before reading).
-std::string readRegularFile(const std::string &path, const SourceLoc &loc, uint64_t maxBytes);
-
-/// readRegularFile of a mesh file, errors located at `file` (line 0).
+/// readInputFileAt of a mesh file, errors located at `file` (line 0).
 std::string readFileBytes(const std::string &path, const std::shared_ptr<const std::string> &file);
 
 /// The error for a problem at a byte offset of a binary file (the location names the file; the

@@ -4,7 +4,9 @@
 // dxf_cross() and surface().
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
+#include "core/system/input_file.h"
 #include "importers/mesh/mesh_reader.h"
 #include "importers/scad/dxf.h"
 #include "importers/scad/evaluator.h"
@@ -19,6 +21,24 @@ namespace fs = std::filesystem;
 
 /// A parameter OpenSCAD reads with toString(): undef is "", other values as str() shows them.
 std::string textOf(const Value &v) { return v.isUndef() ? std::string() : v.toString(false); }
+
+/// The bytes of a file that import(), dxf_dim() or dxf_cross() names, through the input reader.
+/// Nothing when it is missing, unreadable or a folder: OpenSCAD warns and goes on, and so does
+/// the caller. A FIFO, device or socket (which would block, or never end) or a file past
+/// `maxBytes` is a located error.
+std::optional<std::string> readNamedFile(const std::string &path, uint64_t maxBytes,
+                                         const std::string &who, const SourceLoc &loc) {
+    std::error_code ec;
+    if (path.empty() || fs::is_directory(path, ec)) return std::nullopt;
+    try {
+        return readInputFile(path, maxBytes);
+    } catch (const InputFileError &e) {
+        if (e.reason() == InputFileError::Reason::Missing ||
+            e.reason() == InputFileError::Reason::Unreadable)
+            return std::nullopt;
+        throw EvalError(loc, who + "(): " + e.what());
+    }
+}
 
 }  // namespace
 
@@ -58,12 +78,12 @@ ir::NodePtr Evaluator::dxfShapeNode(const std::string &path, const Dxf2dArgs &ar
     dxf::Data data;
     Shape2d s;
     s.kind = Shape2dKind::Polygon;
-    std::error_code ec;
-    if (fs::is_directory(path, ec) ||
-        !dxf::read(path, path, opts, data, [&](const std::string &m) { warn(inst.loc, m); })) {
+    std::optional<std::string> bytes = readNamedFile(path, dxf::kMaxFileBytes, inst.name.str(), inst.loc);
+    if (!bytes) {
         // OpenSCAD warns and goes on with empty geometry
         warn(inst.loc, "Can't open DXF file '" + path + "'.");
     } else {
+        dxf::read(*bytes, path, opts, data, [&](const std::string &m) { warn(inst.loc, m); });
         for (Outline &o : dxf::outlines(data))
             if (o.size() > 2) s.outlines.push_back(std::move(o));
     }
@@ -101,9 +121,9 @@ ir::NodePtr Evaluator::importSvg(const std::string &path, const BoundArgs &a,
     s.sanitized = true;
     svg::Drawing drawing;
     std::string error;
-    std::error_code ec;
-    if (fs::is_directory(path, ec)) error = "Can't open file '" + path + "'";
-    if (error.empty() && svg::read(path, opts, drawing, error)) {
+    std::optional<std::string> bytes = readNamedFile(path, svg::kMaxFileBytes, "import", inst.loc);
+    if (!bytes) error = "Can't open file '" + path + "'";
+    if (error.empty() && svg::read(*bytes, path, opts, drawing, error)) {
         for (const auto &[element, count] : drawing.skipped)
             warn(inst.loc, "import(): " + std::to_string(count) + " <" + element +
                                "> element(s) of '" + path + "' left out (not drawn by OpenSCAD "
@@ -177,11 +197,12 @@ Value Evaluator::callDxfFunction(bool cross, const ArgumentList &args, const Fra
     opts.scale = scale;
     opts.fragments = ir::Fragments{36, 0, 0};
     dxf::Data data;
-    if (!fs::is_regular_file(path, ec) ||
-        !dxf::read(path, path, opts, data, [&](const std::string &m) { warn(loc, m); })) {
+    std::optional<std::string> bytes = readNamedFile(path, dxf::kMaxFileBytes, who, loc);
+    if (!bytes) {
         warn(loc, "Can't open DXF file '" + path + "'.");
         return Value();
     }
+    dxf::read(*bytes, path, opts, data, [&](const std::string &m) { warn(loc, m); });
     if (cross) {
         double x, y;
         if (dxf::cross(data, x, y)) {
@@ -217,8 +238,13 @@ ir::NodePtr Evaluator::moduleSurface(const ModuleInstantiation &inst, const Fram
         warn(inst.loc, "The file '" + path + "' couldn't be opened.");
         return newNode(ir::NodeKind::Group, inst.loc);
     }
-    auto r = surface::readHeightMap(path, invert, map,
-                                    [&](const std::string &m) { warn(inst.loc, m); });
+    surface::ReadResult r;
+    try {
+        r = surface::readHeightMap(path, invert, map,
+                                   [&](const std::string &m) { warn(inst.loc, m); });
+    } catch (const InputFileError &e) {
+        throw EvalError(inst.loc, std::string("surface(): ") + e.what());
+    }
     if (r == surface::ReadResult::TooLarge)
         throw EvalError(inst.loc, "surface(): '" + path + "' holds more than " +
                                       std::to_string(surface::kMaxCells) + " heights");

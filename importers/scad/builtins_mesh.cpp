@@ -240,12 +240,14 @@ ir::NodePtr Evaluator::moduleImport(const ModuleInstantiation &inst, const Frame
 
     std::string path = resolveImportPath(name, inst.loc);
     std::error_code ec;
+    // The name as written, and where it was looked for when that differs
+    std::string shown = "'" + name + "'" + (path != name ? " (" + path + ")" : "");
     if (!fs::is_regular_file(path, ec))
         throw EvalError(inst.loc,
-                        "import(): can't open file '" + path +
-                            "': " + (fs::exists(path, ec) ? "not a regular file" : "no such file"));
+                        "import(): can't open file " + shown +
+                            ": " + (fs::exists(path, ec) ? "not a regular file" : "no such file"));
     if (!std::ifstream(path, std::ios::binary))
-        throw EvalError(inst.loc, "import(): can't read file '" + path + "'");
+        throw EvalError(inst.loc, "import(): can't read file " + shown);
     // Left out with its `%` subtree: the file need not be read
     if (backgroundDepth_ > 0) return newNode(ir::NodeKind::Group, inst.loc);
     return meshFile ? importMeshFile(path, inst, f) : importGltfFile(path, inst);

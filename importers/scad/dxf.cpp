@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
+#include <sstream>
 #include <map>
 #include <stdexcept>
 #include <unordered_map>
@@ -468,14 +468,12 @@ bool parseNumber(const std::string &s, double &out) {
     return *end == '\0';
 }
 
-bool read(const std::string &path, const std::string &shownName, const ReadOptions &opts,
+void read(const std::string &bytes, const std::string &shownName, const ReadOptions &opts,
           Data &out, const WarnFn &warn) {
-    std::ifstream stream(path);
-    if (!stream.good()) return false;
+    std::istringstream stream(bytes);
     Reader r(opts, out, shownName, warn);
     r.parse(stream);
     r.joinPaths();
-    return true;
 }
 
 std::vector<Outline> outlines(const Data &d) {

@@ -5,6 +5,7 @@
 // import() makes of them.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -46,9 +47,12 @@ struct ReadOptions {
 
 using WarnFn = std::function<void(const std::string &)>;
 
-/// Reads `path` into `out`; `shownName` names it in warnings. False (nothing read) when the
-/// file cannot be opened. Bad group codes or values warn as OpenSCAD does and stop or skip.
-bool read(const std::string &path, const std::string &shownName, const ReadOptions &opts,
+/// Largest DXF file read (the caller reads it through readInputFile).
+constexpr uint64_t kMaxFileBytes = uint64_t{256} << 20;
+
+/// Parses a DXF file's `bytes` into `out`; `shownName` names it in warnings. Bad group codes or
+/// values warn as OpenSCAD does and stop or skip.
+void read(const std::string &bytes, const std::string &shownName, const ReadOptions &opts,
           Data &out, const WarnFn &warn);
 
 /// DxfData::toPolygon2d: every path as an outline, open ones closed, points in reverse order.

@@ -8,7 +8,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "importers/mesh/reader_support.h"
+#include "core/ir/diagnostics.h"
+#include "core/system/input_file.h"
 #include "importers/scad/lexer.h"
 
 #ifndef SCADRAY_LIBRARY_DIR
@@ -791,6 +792,14 @@ void SourceLoader::registerFont(const std::string &name, const std::string &from
                                name + "'");
         return;
     }
+    // Through the input reader's checks: FreeType opens the file itself later, so it must
+    // be a regular file (or a link to one) of at most a font's size
+    try {
+        checkInputFile(path, kMaxFontBytes);
+    } catch (const InputFileError &e) {
+        diag_.warning(loc, "Can't register font '" + path + "': " + e.what());
+        return;
+    }
     if (!hasFontSignature(path)) {
         diag_.warning(loc, "Can't register font '" + path + "': not a TrueType/OpenType file");
         return;
@@ -801,9 +810,12 @@ void SourceLoader::registerFont(const std::string &name, const std::string &from
 
 std::string SourceLoader::read(const std::string &path, const SourceLoc &loc) const {
     // A file that is not named .scad may be anything (include </etc/shadow>): diagnostics
-    // located in it never quote its lines
-    if (!isScadFile(path)) markUnquotable(path);
-    return meshio::detail::readRegularFile(path, loc, kMaxSourceBytes);
+    // located in it never quote its lines. A link counts by what it leads to (link.scad ->
+    // /etc/shadow).
+    std::error_code ec;
+    fs::path target = fs::weakly_canonical(path, ec);
+    if (!isScadFile(path) || ec || !isScadFile(target.string())) markUnquotable(path);
+    return readInputFileAt(path, loc, kMaxSourceBytes);
 }
 
 bool isScadFile(const std::string &path) {

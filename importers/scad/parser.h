@@ -16,6 +16,8 @@ namespace rt::scad {
 
 /// Largest source file read (main file, include<> or use<>): 256 MiB.
 constexpr uint64_t kMaxSourceBytes = uint64_t{256} << 20;
+/// Largest font file `use <font.ttf>` registers (the largest CJK collections are ~100 MiB).
+constexpr uint64_t kMaxFontBytes = uint64_t{256} << 20;
 
 /// True when `path` ends in .scad (any case); other files are not quoted in diagnostics.
 bool isScadFile(const std::string &path);

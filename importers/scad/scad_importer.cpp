@@ -7,7 +7,7 @@
 #include <functional>
 
 #include "core/system/large_stack.h"
-#include "importers/mesh/reader_support.h"
+#include "core/ir/diagnostics.h"
 #include "importers/scad/evaluator.h"
 #include "importers/scad/lexer.h"
 #include "importers/scad/parser.h"
@@ -56,7 +56,7 @@ ir::Scene importScadSource(const std::string &source, const std::string &virtual
 
 ir::Scene importScad(const std::string &path, DiagnosticSink &diag, const ImportOptions &opts) {
     SourceLoc loc(std::make_shared<const std::string>(path), 0, 0);
-    return importScadSource(meshio::detail::readRegularFile(path, loc, kMaxSourceBytes), path,
+    return importScadSource(readInputFileAt(path, loc, kMaxSourceBytes), path,
                             diag, opts);
 }
 

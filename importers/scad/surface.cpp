@@ -5,12 +5,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
+#include <sstream>
 #include <map>
 #include <stdexcept>
 #include <utility>
 
 #include "core/image/png_io.h"
+#include "core/system/input_file.h"
 #include "importers/scad/dxf.h"
 
 namespace rt::scad::surface {
@@ -49,12 +50,9 @@ class Cells {
     int lines_ = 0, columns_ = 0;
 };
 
-ReadResult readDat(const std::string &path, Cells &cells, const WarnFn &warn) {
-    std::ifstream stream(path);
-    if (!stream.good()) {
-        warn("Can't open DAT file '" + path + "'.");
-        return ReadResult::Ok;
-    }
+ReadResult readDat(const std::string &path, const std::string &bytes, Cells &cells,
+                   const WarnFn &warn) {
+    std::istringstream stream(bytes);
     int lines = 0;
     while (!stream.eof()) {
         std::string line;
@@ -132,15 +130,23 @@ ReadResult readPng(const std::string &path, bool invert, Cells &cells, const War
 ReadResult readHeightMap(const std::string &path, bool invert, HeightMap &out,
                          const WarnFn &warn) {
     out = HeightMap();
-    std::ifstream probe(path, std::ios::binary);
-    if (!probe.good()) {
+    // Through the input reader: a FIFO, device or /proc file is refused before it is opened
+    // for reading (it would block, or never end), as is a file past the cap
+    std::string bytes;
+    try {
+        bytes = readInputFile(path, kMaxFileBytes);
+    } catch (const InputFileError &e) {
+        if (e.reason() != InputFileError::Reason::Missing &&
+            e.reason() != InputFileError::Reason::Unreadable)
+            throw;
         warn("The file '" + path + "' couldn't be opened.");
         return ReadResult::Ok;
     }
-    probe.close();
     Cells cells;
-    ReadResult r = hasPngSignature(path) ? readPng(path, invert, cells, warn)
-                                         : readDat(path, cells, warn);
+    static const char kPngSignature[] = "\x89PNG\r\n\x1a\n";
+    ReadResult r = bytes.compare(0, 8, kPngSignature, 8) == 0
+                       ? readPng(path, invert, cells, warn)
+                       : readDat(path, bytes, cells, warn);
     if (r == ReadResult::Ok) cells.into(out);
     return r;
 }

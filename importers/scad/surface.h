@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -16,6 +17,9 @@ namespace rt::scad::surface {
 /// OpenSCAD's mesh has four triangles a cell, so this bounds a surface at about 4.4 million
 /// triangles (and a few hundred MB while it is built). More is a located error.
 constexpr size_t kMaxCells = 1'100'000;
+
+/// Largest height-map file read (a DAT file of kMaxCells numbers with comments, or a PNG).
+constexpr uint64_t kMaxFileBytes = uint64_t{256} << 20;
 
 /// Heights by row (y) and column (x); cells a ragged DAT file leaves out are 0.
 struct HeightMap {
@@ -35,7 +39,8 @@ enum class ReadResult {
 };
 
 /// Reads a PNG (by its signature) or a DAT file. Problems OpenSCAD warns about are warnings
-/// and leave `out` empty or cut short as OpenSCAD's is.
+/// and leave `out` empty or cut short as OpenSCAD's is (a missing file among them). Throws
+/// InputFileError for what is not a regular file or is larger than kMaxFileBytes.
 ReadResult readHeightMap(const std::string &path, bool invert, HeightMap &out,
                          const WarnFn &warn);
 

@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -768,16 +769,17 @@ double toMm(const Length &l, double viewBox, bool valid, double dpi) {
 
 }  // namespace
 
-bool read(const std::string &path, const Options &opts, Drawing &out, std::string &error) {
+bool read(const std::string &bytes, const std::string &path, const Options &opts, Drawing &out,
+          std::string &error) {
     out = Drawing();
-    FILE *probe = std::fopen(path.c_str(), "rb");
-    if (!probe) {
-        error = "Can't open file '" + path + "'";
+    if (bytes.size() > static_cast<size_t>(std::numeric_limits<int>::max())) {
+        error = "Error parsing file '" + path + "'";
         return false;
     }
-    std::fclose(probe);
-    xmlDocPtr doc = xmlReadFile(path.c_str(), nullptr,
-                                XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING);
+    // From memory: libxml2 never opens the file itself (nor, without XML_PARSE_DTDLOAD and
+    // with XML_PARSE_NONET, anything the file names)
+    xmlDocPtr doc = xmlReadMemory(bytes.data(), static_cast<int>(bytes.size()), path.c_str(),
+                                  nullptr, XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING);
     if (!doc) {
         error = "Error parsing file '" + path + "'";
         return false;

@@ -5,6 +5,7 @@
 // OpenSCAD's fixed numbers of segments, open paths and lines widened by their stroke.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -32,8 +33,12 @@ struct Drawing {
     std::vector<std::pair<std::string, int>> skipped;
 };
 
-/// Reads `path`; false with OpenSCAD's error text in `error` ("Can't open file '...'",
-/// "Error parsing file '...'") when it can't be read or is not XML.
-bool read(const std::string &path, const Options &opts, Drawing &out, std::string &error);
+/// Largest SVG file read (the caller reads it through readInputFile).
+constexpr uint64_t kMaxFileBytes = uint64_t{256} << 20;
+
+/// Parses the SVG file `path`, whose content is `bytes`; false with OpenSCAD's error text in
+/// `error` ("Error parsing file '...'") when it is not XML.
+bool read(const std::string &bytes, const std::string &path, const Options &opts, Drawing &out,
+          std::string &error);
 
 }  // namespace rt::scad::svg

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/system/input_file.h"
 #include "importers/scad/dxf.h"
 #include "importers/scad/test_support.h"
 #include "support/temp_dir_test.h"
@@ -25,10 +26,10 @@ dxf::Data readLayer(const std::string &layer, std::vector<std::string> *warnings
     opts.layer = layer;
     opts.fragments.fn = fn;
     dxf::Data d;
-    bool ok = dxf::read(shapesDxf(), "shapes.dxf", opts, d, [&](const std::string &m) {
-        if (warnings) warnings->push_back(m);
-    });
-    EXPECT_TRUE(ok);
+    dxf::read(readInputFile(shapesDxf(), dxf::kMaxFileBytes), "shapes.dxf", opts, d,
+              [&](const std::string &m) {
+                  if (warnings) warnings->push_back(m);
+              });
     return d;
 }
 
@@ -115,7 +116,8 @@ TEST(Dxf, OriginAndScale) {
     opts.originY = 1;
     opts.scale = 2;
     dxf::Data d;
-    ASSERT_TRUE(dxf::read(shapesDxf(), "shapes.dxf", opts, d, [](const std::string &) {}));
+    dxf::read(readInputFile(shapesDxf(), dxf::kMaxFileBytes), "shapes.dxf", opts, d,
+              [](const std::string &) {});
     double minX = 1e9, minY = 1e9;
     for (Vec2 p : d.points) {
         minX = std::min(minX, p.x);

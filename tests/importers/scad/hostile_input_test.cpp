@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "importers/scad/evaluator.h"
+#include "importers/scad/surface.h"
 #include "importers/scad/test_support.h"
 
 namespace rt::scad::test {
@@ -296,6 +297,51 @@ TEST(Hostile, NonScadIncludeTargetsAreNeverQuoted) {
     writeFile(dir + "/lib.scad", "y = unknown_y;\n");
     Imported s = importText("include <lib.scad>\n", dir + "/main.scad");
     EXPECT_NE(formatDiagnostic(s.warning("unknown_y")).find("y = unknown_y"), std::string::npos);
+}
+
+TEST(Hostile, LinksToNonScadIncludeTargetsAreNeverQuoted) {
+    std::string dir = testDir();
+    writeFile(dir + "/secret.txt", "root:SECRETHASH:19000:0:99999:7:::\n");
+    fs::remove(dir + "/link.scad");
+    fs::create_symlink(dir + "/secret.txt", dir + "/link.scad");
+    try {
+        importText("cube();\ninclude <link.scad>\n", dir + "/main.scad");
+        FAIL() << "expected ParseError";
+    } catch (const ParseError &e) {
+        std::string shown = formatDiagnostic(e.diagnostic());
+        EXPECT_EQ(shown.find("SECRET"), std::string::npos) << shown;
+        EXPECT_EQ(shown.find('\n'), std::string::npos) << shown;
+    }
+}
+
+TEST(Hostile, TwoDimensionalFilesAndHeightMapsMustBeRegularFiles) {
+    // surface(), import() of SVG and DXF, dxf_dim() and dxf_cross() once opened FIFOs (a
+    // hang) and devices (/dev/zero: gigabytes); they go through the input reader now
+    std::string dir = testDir();
+    for (const char *name : {"pipe.dat", "pipe.svg", "pipe.dxf"}) {
+        std::string fifo = dir + "/" + name;
+        fs::remove(fifo);
+        ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    }
+    for (const char *name : {"zero.dat", "zero.svg", "zero.dxf", "zero.png"}) {
+        fs::remove(dir + "/" + name);
+        fs::create_symlink("/dev/zero", dir + "/" + name);
+    }
+    std::string main = dir + "/main.scad";
+    for (const char *src :
+         {"surface(file=\"pipe.dat\");", "surface(file=\"zero.dat\");",
+          "surface(file=\"zero.png\");", "surface(file=\"/dev/zero\");",
+          "linear_extrude(1) import(\"pipe.svg\");", "linear_extrude(1) import(\"zero.svg\");",
+          "linear_extrude(1) import(\"pipe.dxf\");", "linear_extrude(1) import(\"zero.dxf\");",
+          "x = dxf_dim(file=\"pipe.dxf\", name=\"a\");",
+          "x = dxf_cross(file=\"zero.dxf\");", "linear_extrude(file=\"pipe.dxf\", height=1);"}) {
+        SCOPED_TRACE(src);
+        EvalError e = errorOf<EvalError>(std::string("cube();\n") + src + "\n",
+                                         "not a regular file", main);
+        EXPECT_EQ(e.loc().line, 2);
+    }
+    // A height map past the reader's cap is refused before it is read
+    EXPECT_LT(surface::kMaxFileBytes, uint64_t{1} << 30);
 }
 
 TEST(Hostile, FifosDevicesAndFoldersAreRefusedWithoutBlocking) {

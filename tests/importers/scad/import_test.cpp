@@ -96,7 +96,7 @@ TEST(Import, MissingFileIsAnErrorAtTheCall) {
     EXPECT_EQ(e.loc().line, 2);
     EXPECT_EQ(e.loc().col, 3);
     EXPECT_EQ(std::string(e.what()),
-              "import(): can't open file '" + dir + "/nope.stl': no such file");
+              "import(): can't open file 'nope.stl' (" + dir + "/nope.stl): no such file");
     // A folder is not a mesh file either
     fs::create_directories(dir + "/dir.stl");
     writeFile(main, "import(\"dir.stl\");");
