@@ -81,7 +81,8 @@ void AnimationArgs::addTo(CLI::App &cmd) {
                                 "as openscad --animate N) to <name>_0000.png ..., then a video "
                                 "with ffmpeg (see --video)",
                                 1, kMaxFrames);
-    addNumber(cmd, "--fps", fps, "--frames: frames per second of the video", 0.0, 1000.0, true)
+    // ffmpeg's MP4 muxer refuses rates below about 1e-4; 0.001 is a frame every 1000 s
+    addNumber(cmd, "--fps", fps, "--frames: frames per second of the video", kMinFps, kMaxFps)
         ->needs(framesOpt);
     auto *frameOpt = addNumber(cmd, "--frame", frame,
                                "--frames: render only frame I (0..N-1; a share of a job array), "
@@ -109,6 +110,18 @@ std::string frameFileName(const std::string &output, int i, int n) {
     return p.has_parent_path() ? (p.parent_path() / name).string() : name;
 }
 
+std::string framePattern(const std::string &output, int n) {
+    auto literal = [](const std::string &text) {
+        std::string out;
+        for (char ch : text) out += ch == '%' ? std::string("%%") : std::string(1, ch);
+        return out;
+    };
+    fs::path p(output);
+    std::string folder = p.has_parent_path() ? p.parent_path().string() + "/" : "";
+    return "file:" + literal(folder + p.stem().string()) + "_%0" +
+           std::to_string(frameDigits(n)) + "d" + literal(p.extension().string());
+}
+
 void encodeVideo(const std::string &output, int n, double fps, const std::string &video) {
     // Every frame must be there: ffmpeg would stop quietly at the first gap
     for (int i = 0; i < n; ++i) {
@@ -122,14 +135,6 @@ void encodeVideo(const std::string &output, int n, double fps, const std::string
         throw std::runtime_error("cannot encode " + video +
                                  ": ffmpeg is not installed (tools/setup.sh installs it)");
 
-    // The image2 pattern of the frame names; a '%' in the name itself is doubled
-    fs::path p(output);
-    std::string stem = p.stem().string(), escaped;
-    for (char ch : stem) escaped += ch == '%' ? std::string("%%") : std::string(1, ch);
-    std::string pattern = escaped + "_%0" + std::to_string(frameDigits(n)) + "d" +
-                          p.extension().string();
-    if (p.has_parent_path()) pattern = (p.parent_path() / pattern).string();
-
     // Written beside the target under a temporary name and renamed when ffmpeg succeeds
     std::string vext = lowerExtension(video);
     TempFile partial(video, vext);
@@ -140,7 +145,8 @@ void encodeVideo(const std::string &output, int n, double fps, const std::string
     // EXR frames hold linear values: shown through the sRGB curve, as a PNG frame is
     if (lowerExtension(output) == ".exr") args.insert(args.end(), {"-apply_trc", "iec61966_2_1"});
     args.insert(args.end(), {"-f", "image2", "-pattern_type", "sequence", "-framerate", rate,
-                             "-start_number", "0", "-i", pattern, "-frames:v", std::to_string(n)});
+                             "-start_number", "0", "-i", framePattern(output, n), "-frames:v",
+                             std::to_string(n)});
     if (vext == ".gif") {
         // One palette made from all frames, looping forever
         args.insert(args.end(),
@@ -151,7 +157,8 @@ void encodeVideo(const std::string &output, int n, double fps, const std::string
         args.insert(args.end(), {"-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264",
                                  "-pix_fmt", "yuv420p", "-movflags", "+faststart"});
     }
-    args.push_back(partial.path());
+    // "file:" makes it a file name whatever it looks like (an option, another protocol)
+    args.push_back("file:" + partial.path());
     ProcessOptions po;
     po.logFile = log.path();
     po.timeoutSeconds = kMaxTimeoutSeconds;

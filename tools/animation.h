@@ -12,8 +12,11 @@ class App;
 
 namespace rt::cli {
 
-/// Frames per second of the video unless --fps says otherwise.
+/// Frames per second of the video unless --fps says otherwise, and --fps's range (ffmpeg's MP4
+/// muxer refuses rates below about 1e-4, so a slower one would fail only after every frame).
 constexpr double kDefaultFps = 25;
+constexpr double kMinFps = 0.001;
+constexpr double kMaxFps = 1000;
 /// Most frames of one animation (11 hours at 25 fps).
 constexpr int kMaxFrames = 1'000'000;
 
@@ -37,6 +40,11 @@ double frameTime(int i, int n);
 /// name_0007.png for output "name.png", frame 7: the frame number with 4 digits, more when
 /// n - 1 needs them, before the output's extension.
 std::string frameFileName(const std::string &output, int i, int n);
+
+/// The frames' names as ffmpeg's image2 pattern ("file:" + the name with every '%' of the
+/// output's folder and stem doubled and the frame number as %0Nd), so that no name can be an
+/// option, another protocol, or a pattern of its own.
+std::string framePattern(const std::string &output, int n);
 
 /// Runs an animation: renders each frame (or only args.frame) through `renderFrame(time,
 /// path)`, then, for a full run, encodes the video when ffmpeg is installed (one warning

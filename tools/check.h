@@ -81,8 +81,24 @@ struct CheckResult {
 /// when the scene or a renderer fails.
 CheckResult checkScene(const CheckArgs &a);
 
+/// The stem of a scene's name with every byte but letters, digits, '_', '-' and '.' replaced
+/// by '_' and a leading '-' or '.' too ("scene" when empty): the stem of every file `check` and
+/// `converge` write, so that none can be read as an option by POV-Ray or OpenSCAD, nor cut at
+/// a space in a POV-Ray .ini.
+std::string safeFileStem(const std::string &name);
+
+/// True when `stem` is what safeFileStem makes: only those bytes, no leading '-' or '.'.
+bool isSafeFileStem(const std::string &stem);
+
 /// The output folder of a check of `a` (a.outDir, or <scene stem>_check).
 std::string checkDir(const CheckArgs &a);
+
+/// Throws std::invalid_argument naming `option` unless `dir` is new, empty, or holds a file
+/// whose name ends in `marker` (an earlier run's output, such as "_check.json"): a command
+/// that writes many files never writes them into a folder of other files (a model's own
+/// folder, whose textures a heat map would replace).
+void requireOutputFolder(const std::string &dir, const std::string &marker,
+                         const std::string &option);
 
 /// The machine-readable file each check leaves beside its pictures, <stem>_check.json (or
 /// <stem>_openscad_check.json), from which `report --from` rebuilds its row.

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // A check's figures as JSON (nlohmann-json, confined to this file in tools/): what `check`
 // leaves beside its pictures and `report --from` reads back.
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -8,7 +10,9 @@
 #include <sstream>
 
 #include "core/ir/diagnostics.h"
+#include "core/system/input_file.h"
 #include "tools/check.h"
+#include "tools/report_html.h"
 
 namespace rt::cli {
 
@@ -34,8 +38,31 @@ void get(const json &j, const char *key, T &out) {
 
 }  // namespace
 
+namespace {
+
+bool safeStemByte(char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+}
+
+}  // namespace
+
+std::string safeFileStem(const std::string &name) {
+    std::string stem = std::filesystem::path(name).stem().string();
+    for (char &c : stem)
+        if (!safeStemByte(c)) c = '_';
+    // Not an option (-x), not hidden (.x), and never empty
+    if (stem.empty()) return "scene";
+    if (stem[0] == '-' || stem[0] == '.') stem[0] = '_';
+    return stem;
+}
+
+bool isSafeFileStem(const std::string &stem) {
+    return !stem.empty() && stem[0] != '-' && stem[0] != '.' &&
+           std::all_of(stem.begin(), stem.end(), safeStemByte);
+}
+
 std::string checkJsonPath(const std::string &dir, const std::string &scene, bool openscad) {
-    std::string stem = fs::path(scene).stem().string();
+    std::string stem = safeFileStem(scene);
     return (fs::path(dir) / (stem + (openscad ? "_openscad_check.json" : "_check.json"))).string();
 }
 
@@ -88,11 +115,7 @@ std::string checkResultJson(const CheckResult &r) {
 }
 
 CheckResult readCheckResult(const std::string &path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error(path + ": cannot read");
-    std::stringstream ss;
-    ss << in.rdbuf();
-    json j = json::parse(ss.str(), nullptr, false);
+    json j = json::parse(readInputFile(path, kMaxReportFileBytes), nullptr, false);
     if (j.is_discarded() || !j.is_object())
         throw std::runtime_error(path + ": not JSON (expected the figures `scadray check` writes)");
     if (!j.contains(kFormatKey) || !j[kFormatKey].is_number_integer() ||

@@ -19,10 +19,13 @@
 #include "core/image/image_io.h"
 #include "core/ir/scene_defaults.h"
 #include "core/render/environment.h"
+#include "core/system/input_file.h"
+#include "core/system/temp_file.h"
 #include "exporters/povray/pov_writer.h"
 #include "importers/gltf/gltf_importer.h"
 #include "importers/mesh/mesh_reader.h"
 #include "importers/scad/scad_importer.h"
+#include "tools/check.h"
 
 namespace rt::cli {
 
@@ -153,6 +156,8 @@ void requireRegularFile(const std::string &path) {
     if (!S_ISREG(st.st_mode))
         throw std::runtime_error(path + ": is not a regular file (a FIFO, device or socket); "
                                         "scadray reads only regular files");
+    // No output of this run may replace it
+    noteInputFile(path);
 }
 
 ir::Scene loadScene(const std::string &path, DiagnosticSink &diag, const LoadOptions &opts) {
@@ -226,18 +231,35 @@ std::pair<std::string, std::string> parseDefine(const std::string &text) {
 PovReference renderPovReference(const ir::Scene &scene, const std::string &dir,
                                 const std::string &stem, const std::string &sceneName, int width,
                                 int height, int supersample, int threads, int timeout) {
+    namespace fs = std::filesystem;
+    if (!isSafeFileStem(stem))
+        throw std::logic_error("renderPovReference: '" + stem + "' is not a safe file stem");
+    // POV-Ray runs in a folder made fresh for this run (mkdtemp), so nothing planted in the
+    // output folder (a povray.ini, an .ini or .pov of the same name, a stale texture) is read;
+    // its files are named by a safe stem, so nothing of a scene's name becomes an option: POV-Ray
+    // re-splits its arguments at spaces, takes KEY=VALUE words and +/- words as options, and
+    // cuts .ini values at a space
+    TempDir run(dir);
+    fs::path r(run.path());
     pov::IniOptions ini;
     ini.outputFile = stem + "_povray.png";
     ini.width = width;
     ini.height = height;
     ini.supersample = supersample;
     ini.threads = threads;
-    std::filesystem::path d(dir);
-    pov::exportPov(scene, (d / (stem + ".pov")).string(), sceneName, ini);
-    PovReference r;
-    r.run = pov::runPovRay(dir, stem + ".ini", threads, timeout);
-    r.image = downsample(readImage((d / (stem + "_povray.png")).string()), supersample);
-    return r;
+    pov::exportPov(scene, (r / (stem + ".pov")).string(), sceneName, ini);
+    PovReference ref;
+    ref.run = pov::runPovRay(run.path(), stem + ".ini", threads, timeout);
+    ref.image = downsample(readImage((r / ini.outputFile).string()), supersample);
+    // Kept beside the check's other files: the export, the picture, the log. The run's own
+    // povray.conf goes with the folder.
+    for (const auto &entry : fs::directory_iterator(r)) {
+        if (!entry.is_regular_file()) continue;
+        fs::path target = fs::path(dir) / entry.path().filename();
+        refuseOverwritingInput(target.string());
+        fs::rename(entry.path(), target);
+    }
+    return ref;
 }
 
 }  // namespace rt::cli

@@ -125,6 +125,8 @@ ir::Scene loadScene(const std::string &path, DiagnosticSink &diag, const LoadOpt
 /// POV-Ray's picture of a scene, as `check` and `converge` take it: exported to
 /// `dir/stem.pov` (+ .ini), rendered supersample times larger without antialiasing and
 /// box-filtered down to width x height. `sceneName` goes into the file's header comment.
+/// POV-Ray runs in a fresh private folder inside `dir` whose files then move to `dir`;
+/// `stem` must be a safeFileStem (check.h).
 struct PovReference {
     ImageEstimate image;
     pov::PovRunResult run;

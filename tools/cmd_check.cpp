@@ -18,6 +18,7 @@
 #include "core/render/geometry_buffer.h"
 #include "core/render/render_scene.h"
 #include "core/render/renderer.h"
+#include "core/system/input_file.h"
 #include "exporters/povray/pov_runner.h"
 #include "exporters/povray/pov_writer.h"
 #include "tools/check.h"
@@ -31,13 +32,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// Output folder (created) and the path of one output file in it.
+/// Output folder (created, or one that holds earlier output) and the path of one output file
+/// in it, named by the scene's safe file stem.
 struct CheckFiles {
     std::string stem;
     std::filesystem::path dir;
     explicit CheckFiles(const CheckArgs &a) {
-        stem = fs::path(a.scene.input).stem().string();
+        stem = safeFileStem(a.scene.input);
         dir = checkDir(a);
+        requireOutputFolder(dir.string(), "_check.json", "-o");
         fs::create_directories(dir);
     }
     std::string operator()(const std::string &suffix) const { return (dir / (stem + suffix)).string(); }
@@ -338,6 +341,8 @@ CheckResult runOneCheck(const CheckArgs &a, CsvRow &csv) {
 /// error there instead (what `report --from` shows), never stale figures.
 int runCheck(const CheckArgs &a) {
     std::string dir = checkDir(a);
+    // Before anything is written there, the failure's figures included
+    requireOutputFolder(dir, "_check.json", "-o");
     std::string json = checkJsonPath(dir, a.scene.input, a.openscad);
     std::error_code ec;
     fs::remove(json, ec);
@@ -364,6 +369,28 @@ int runCheck(const CheckArgs &a) {
 }
 
 }  // namespace
+
+void requireOutputFolder(const std::string &dir, const std::string &marker,
+                         const std::string &option) {
+    std::error_code ec;
+    fs::file_status st = fs::symlink_status(dir, ec);
+    if (!fs::exists(st)) return;
+    if (!fs::is_directory(fs::status(dir, ec)))
+        throw std::invalid_argument(option + ": '" + printable(dir) + "' is not a folder");
+    bool empty = true;
+    for (const auto &e : fs::directory_iterator(dir, ec)) {
+        empty = false;
+        std::string name = e.path().filename().string();
+        if (name.size() >= marker.size() &&
+            name.compare(name.size() - marker.size(), marker.size(), marker) == 0)
+            return;
+    }
+    if (ec) throw std::invalid_argument(option + ": cannot read the folder '" + printable(dir) + "'");
+    if (!empty)
+        throw std::invalid_argument(
+            option + ": '" + printable(dir) + "' holds other files (no *" + marker +
+            " of an earlier run): its files could be replaced, so give an empty or new folder");
+}
 
 std::string checkDir(const CheckArgs &a) {
     return a.outDir.empty() ? fs::path(a.scene.input).stem().string() + "_check" : a.outDir;

@@ -7,6 +7,7 @@
 #include "core/image/image_compare.h"
 #include "core/image/image_io.h"
 #include "core/render/renderer.h"
+#include "core/system/input_file.h"
 #include "tools/cli_common.h"
 #include "tools/commands.h"
 
@@ -26,6 +27,8 @@ int runCompare(const CompareArgs &a) {
         // Before anything opens them: a FIFO would block, /dev/zero never end
         requireRegularFile(a.test);
         requireRegularFile(a.reference);
+        // Refused before any work: the heat map may not replace an input
+        if (!a.heatMap.empty()) refuseOverwritingInput(a.heatMap);
         test = readEstimate(a.test);
         ref = readEstimate(a.reference);
     } catch (const std::runtime_error &e) {

@@ -16,6 +16,7 @@
 #include "core/render/renderer.h"
 #include "exporters/povray/pov_runner.h"
 #include "exporters/povray/pov_writer.h"
+#include "tools/check.h"
 #include "tools/cli_common.h"
 #include "tools/commands.h"
 #include "tools/svg_plot.h"
@@ -128,9 +129,11 @@ int runConverge(const ConvergeArgs &a) {
         validateRenderOptions(ro);
     }
 
-    std::string stem = fs::path(a.scene.input).stem().string();
+    std::string stem = safeFileStem(a.scene.input);
     std::string sceneName = fs::path(a.scene.input).filename().string();
-    fs::path dir = a.outDir.empty() ? fs::path(stem + "_converge") : fs::path(a.outDir);
+    fs::path dir = a.outDir.empty()
+                       ? fs::path(fs::path(a.scene.input).stem().string() + "_converge")
+                       : fs::path(a.outDir);
     auto file = [&](const std::string &suffix) { return (dir / (stem + suffix)).string(); };
 
     DiagnosticSink diag;

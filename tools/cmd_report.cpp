@@ -12,8 +12,10 @@
 #include <iostream>
 #include <map>
 #include <set>
+#include <sstream>
 
 #include "core/render/renderer.h"
+#include "core/system/input_file.h"
 #include "core/system/subprocess.h"
 #include "exporters/povray/pov_runner.h"
 #include "exporters/povray/pov_writer.h"
@@ -71,8 +73,7 @@ std::vector<std::string> gatherScenes(const std::vector<std::string> &inputs) {
             scenes.insert(scenes.end(), found.begin(), found.end());
         } else if (std::string ext = lower(p.extension().string());
                    ext == ".txt" || ext == ".list") {
-            std::ifstream list(p);
-            if (!list) throw std::invalid_argument(in + ": cannot read this list of scenes");
+            std::istringstream list(readInputFile(in, kMaxReportFileBytes));
             std::string line;
             while (std::getline(list, line)) {
                 size_t a = line.find_first_not_of(" \t\r"), b = line.find_last_not_of(" \t\r");
@@ -151,7 +152,7 @@ CheckResult runCheckCaught(const CheckArgs &a) {
         fs::create_directories(a.outDir);
         pov::writeTextFile(checkJsonPath(a.outDir, a.scene.input, a.openscad), checkResultJson(r));
     } catch (const std::exception &e) {
-        std::cerr << "scadray: warning: " << errorMessage(e) << "\n";
+        std::cerr << "scadray: warning: " << printable(errorMessage(e)) << "\n";
     }
     return r;
 }
@@ -165,9 +166,9 @@ ConvergeCurve runConverge(const ReportArgs &ra, const std::string &scene, const 
     if (ec) throw std::runtime_error("converge: cannot find the scadray binary (/proc/self/exe)");
     std::vector<std::string> args = {self.string(),
                                      "converge",
-                                     scene,
+                                     fileArgument(scene),
                                      "-o",
-                                     dir,
+                                     fileArgument(dir),
                                      "-q",
                                      "-W",
                                      std::to_string(a.width),
@@ -184,7 +185,7 @@ ConvergeCurve runConverge(const ReportArgs &ra, const std::string &scene, const 
     if (pov::povrayAvailable()) args.push_back("--povray");
     std::vector<std::string> sceneOptions = a.scene.optionArguments();
     args.insert(args.end(), sceneOptions.begin(), sceneOptions.end());
-    std::string stem = fs::path(scene).stem().string();
+    std::string stem = safeFileStem(scene);
     ProcessOptions po;
     po.logFile = (fs::path(dir) / (stem + "_converge.log")).string();
     // Its own renders plus POV-Ray's, each of which may take the check's time limit
@@ -195,10 +196,7 @@ ConvergeCurve runConverge(const ReportArgs &ra, const std::string &scene, const 
     if (pr.exitCode != 0)
         throw std::runtime_error("converge failed (exit " + std::to_string(pr.exitCode) + "):\n" +
                                  lastLines(pr.log, 8));
-    ConvergeCurve c = readConvergeCsv((fs::path(dir) / (stem + "_converge.csv")).string());
-    std::ifstream svg(fs::path(dir) / (stem + "_converge.svg"), std::ios::binary);
-    c.svg.assign(std::istreambuf_iterator<char>(svg), std::istreambuf_iterator<char>());
-    return c;
+    return readConvergeFiles(dir, stem);
 }
 
 /// What the page refers to for each picture of a check: the file's bytes as a data: URI, or
@@ -218,9 +216,9 @@ PictureSources pictureSources(const CheckResult &r, const fs::path &pageDir, boo
             continue;
         }
         try {
-            out[i] = dataUri(file.string());
+            out[i] = dataUri(r.dir, *names[i]);
         } catch (const std::exception &e) {
-            std::cerr << "scadray: warning: " << e.what() << "\n";
+            std::cerr << "scadray: warning: " << printable(e.what()) << "\n";
             out[i] = linkSrc;
         }
     }
@@ -272,17 +270,16 @@ int runReport(const ReportArgs &ra) {
         try {
             CheckResult r = readCheckResult(path);
             ReportScene &s = row(r.scene.empty() ? path : r.scene);
-            fs::path csv = fs::path(r.dir) / (fs::path(r.scene).stem().string() + "_converge.csv");
+            std::string stem = safeFileStem(r.scene);
+            fs::path csv = fs::path(r.dir) / (stem + "_converge.csv");
             if (r.referee == "openscad") {
                 s.openscad = std::move(r);
             } else {
                 s.povray = std::move(r);
             }
-            if (!s.converge && fs::exists(csv)) {
-                s.converge = readConvergeCsv(csv.string());
-                std::ifstream svg(fs::path(csv).replace_extension(".svg"), std::ios::binary);
-                s.converge->svg.assign(std::istreambuf_iterator<char>(svg), {});
-            }
+            std::error_code ec;
+            if (!s.converge && fs::exists(fs::symlink_status(csv, ec)))
+                s.converge = readConvergeFiles(r.dir, stem);
         } catch (const std::exception &e) {
             row(path).error = errorMessage(e);
         }

@@ -9,14 +9,15 @@
 # and keep it under tests/fuzz/regressions/<target>/, which every later run replays first.
 #
 #   ./tools/fuzz.sh [seconds] [target...]    seconds per target (default 60); targets:
-#                                            scad gltf glb stl off image pov (default: all)
+#                                            scad gltf glb stl off image pov dxf svg surface
+#                                            report cli (default: all)
 # The corpus grows in build-asan/fuzz/corpus/<target>/ between runs on one machine.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
 seconds=60
 if [[ $# -gt 0 && "$1" =~ ^[0-9]+$ ]]; then seconds=$1; shift; fi
-all=(scad gltf glb stl off image pov)
+all=(scad gltf glb stl off image pov dxf svg surface report cli)
 targets=("$@")
 if [[ ${#targets[@]} -eq 0 ]]; then targets=("${all[@]}"); fi
 for t in "${targets[@]}"; do
@@ -57,6 +58,11 @@ run_one() {  # run_one TARGET
         off)  max_len=16384; seed off '*.off' scenes ;;
         image) max_len=16384 ;;
         pov)  max_len=2048 ;;
+        dxf)  max_len=16384; seed dxf '*.dxf' tests/importers scenes /usr/share/openscad/examples ;;
+        svg)  max_len=16384; seed svg '*.svg' tests/importers scenes /usr/share/openscad/examples ;;
+        surface) max_len=16384; seed surface '*.dat' tests/importers scenes /usr/share/openscad/examples ;;
+        report) max_len=8192 ;;
+        cli)  max_len=1024 ;;
     esac
     local dirs=("$work/corpus/$t" "$work/seeds/$t")
     [[ -d tests/fuzz/seeds/$t ]] && dirs+=("tests/fuzz/seeds/$t")

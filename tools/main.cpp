@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "core/ir/diagnostics.h"
+#include "core/system/input_file.h"
 #include "core/system/large_stack.h"
 #include "core/system/temp_file.h"
 #include "tools/cli_common.h"
@@ -14,17 +15,8 @@ int main(int argc, char **argv) {
     // An interrupt removes the temporary of a write in progress (and still ends the program)
     installInterruptCleanup();
     CLI::App app{"scadray: ray-trace OpenSCAD scenes and convert them for POV-Ray"};
-    app.require_subcommand(1);
-    app.set_version_flag("--version", "scadray 0.1.0");
     std::function<int()> action;
-    cli::addRenderCommand(app, action);
-    cli::addDumpCommand(app, action);
-    cli::addExportCommand(app, action);
-    cli::addCompareCommand(app, action);
-    cli::addCheckCommand(app, action);
-    cli::addConvergeCommand(app, action);
-    cli::addMergeCommand(app, action);
-    cli::addReportCommand(app, action);
+    cli::addCommands(app, action);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError &e) {
@@ -41,13 +33,14 @@ int main(int argc, char **argv) {
         std::cerr << formatDiagnostic(e.diagnostic()) << "\n";
         return cli::kExitInputError;
     } catch (const std::invalid_argument &e) {
-        std::cerr << "scadray: error: " << e.what() << "\n";
+        // Messages quote names and file content: printable() keeps escapes off the terminal
+        std::cerr << "scadray: error: " << printable(e.what(), true) << "\n";
         return cli::kExitUsage;
     } catch (const std::bad_alloc &) {
         std::cerr << "scadray: error: out of memory\n";
         return cli::kExitInputError;
     } catch (const std::exception &e) {
-        std::cerr << "scadray: error: " << e.what() << "\n";
+        std::cerr << "scadray: error: " << printable(e.what(), true) << "\n";
         return cli::kExitInputError;
     }
 }

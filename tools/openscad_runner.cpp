@@ -32,12 +32,14 @@ OpenScadRun exportWithOpenScad(const std::string &scene, const std::string &mesh
     // half-written mesh, and removed on an interrupt
     TempFile partialFile(meshFile, ".stl");
     const std::string &partial = partialFile.path();
-    std::vector<std::string> args = {"openscad", "-o", partial, "--export-format", "binstl"};
+    // File names as arguments that cannot be options (a scene `-ofoo.scad`)
+    std::vector<std::string> args = {"openscad", "-o", fileArgument(partial), "--export-format",
+                                     "binstl"};
     for (const auto &[name, value] : defines) {
         args.push_back("-D");
         args.push_back(name + "=" + value);
     }
-    args.push_back(scene);
+    args.push_back(fileArgument(scene));
     // The same include<>/use<> search as scadray's importer: -L folders, $OPENSCADPATH and
     // scadray's own library folder (OpenSCAD's is searched by OpenSCAD anyway)
     std::string searchPath;

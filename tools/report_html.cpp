@@ -8,9 +8,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
+#include "core/system/input_file.h"
 #include "tools/svg_plot.h"
 
 namespace rt::cli {
@@ -304,9 +304,11 @@ void sortFailuresFirst(std::vector<ReportScene> &scenes) {
     });
 }
 
-ConvergeCurve readConvergeCsv(const std::string &path) {
-    std::ifstream in(path);
-    if (!in) throw std::runtime_error(path + ": cannot read converge's CSV");
+namespace {
+
+/// The CSV's text parsed; `path` names it in errors.
+ConvergeCurve parseConvergeCsv(const std::string &path, const std::string &text) {
+    std::istringstream in(text);
     std::string line;
     std::getline(in, line);
     if (line.rfind("samples,seconds,rmse,rmse_corrected", 0) != 0)
@@ -329,6 +331,22 @@ ConvergeCurve readConvergeCsv(const std::string &path) {
     }
     if (!c.rmsePovray.empty() && c.rmsePovray.size() != c.seconds.size())
         throw std::runtime_error(path + ": rmse_povray is given on some rows only");
+    return c;
+}
+
+}  // namespace
+
+ConvergeCurve readConvergeCsv(const std::string &path) {
+    return parseConvergeCsv(path, readInputFile(path, kMaxReportFileBytes));
+}
+
+ConvergeCurve readConvergeFiles(const std::string &folder, const std::string &stem) {
+    std::string csv = stem + "_converge.csv", svg = stem + "_converge.svg";
+    ConvergeCurve c = parseConvergeCsv((fs::path(folder) / csv).string(),
+                                       readInputFileIn(folder, csv, kMaxReportFileBytes));
+    std::error_code ec;
+    if (fs::exists(fs::symlink_status(fs::path(folder) / svg, ec)))
+        c.svg = readInputFileIn(folder, svg, kMaxReportFileBytes);
     return c;
 }
 
@@ -510,12 +528,11 @@ std::string urlPath(const std::string &path) {
     return out;
 }
 
-std::string dataUri(const std::string &path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error(path + ": cannot read");
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) throw std::runtime_error(path + ": cannot read");
-    std::string ext = fs::path(path).extension().string();
+std::string dataUri(const std::string &folder, const std::string &name) {
+    // Through the input reader and confined to the check's folder: a picture named by a
+    // check's figures that is a link (to a secret, a FIFO, /dev/zero) is never embedded
+    std::string bytes = readInputFileIn(folder, name, kMaxReportPictureBytes);
+    std::string ext = fs::path(name).extension().string();
     const char *mime = ext == ".png"   ? "image/png"
                        : ext == ".svg" ? "image/svg+xml"
                                        : "application/octet-stream";

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,9 +24,19 @@ struct ConvergeCurve {
     std::string svg;
 };
 
+/// Largest file a report reads back (a check's figures, converge's CSV and SVG); a check's
+/// pictures may be up to kMaxReportPictureBytes.
+constexpr uint64_t kMaxReportFileBytes = uint64_t{16} << 20;
+constexpr uint64_t kMaxReportPictureBytes = uint64_t{256} << 20;
+
 /// Reads converge's CSV (samples,seconds,rmse,rmse_corrected,efficiency,rmse_povray). Throws
 /// std::runtime_error naming the file when it is missing or malformed.
 ConvergeCurve readConvergeCsv(const std::string &path);
+
+/// Reads what converge left in `folder` for a scene of file stem `stem`: `<stem>_converge.csv`
+/// and, when there, `<stem>_converge.svg`. Each must lie in `folder` (links resolved), be a
+/// regular file and at most kMaxReportFileBytes. Throws std::runtime_error naming the file.
+ConvergeCurve readConvergeFiles(const std::string &folder, const std::string &stem);
 
 /// A check's three pictures as the page refers to them (data: URIs or relative links), in
 /// the order referee, scadray, difference; empty where the check made none.
@@ -68,9 +79,10 @@ struct ReportPage {
 /// reads from a headless browser).
 std::string reportHtml(const ReportPage &page);
 
-/// The file's bytes as a data: URI (image/png, image/svg+xml or application/octet-stream by
-/// extension). Throws std::runtime_error naming the file when it cannot be read.
-std::string dataUri(const std::string &path);
+/// The bytes of the file `name` in `folder` as a data: URI (image/png, image/svg+xml or
+/// application/octet-stream by extension). The file must lie in `folder` (links resolved), be
+/// a regular file and at most kMaxReportPictureBytes. Throws std::runtime_error naming it.
+std::string dataUri(const std::string &folder, const std::string &name);
 
 /// Standard base64 (RFC 4648, with padding).
 std::string base64(const std::string &bytes);

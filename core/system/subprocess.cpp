@@ -30,6 +30,11 @@ bool programOnPath(const std::string &program) {
     return false;
 }
 
+std::string fileArgument(const std::string &path) {
+    if (!path.empty() && (path[0] == '-' || path[0] == '+')) return "./" + path;
+    return path;
+}
+
 std::string lastLines(const std::string &text, size_t lines) {
     if (text.empty()) return text;
     size_t pos = text.size();

@@ -34,6 +34,10 @@ bool programOnPath(const std::string &program);
 /// started; a failure or time-out of the program itself is reported in the result.
 ProcessResult runProcess(const std::vector<std::string> &args, const ProcessOptions &opts);
 
+/// `path` as a program's file argument: a relative name starting with '-' or '+' gets "./"
+/// before it, so that no program (OpenSCAD, POV-Ray, ffmpeg) reads a file name as an option.
+std::string fileArgument(const std::string &path);
+
 /// The last `lines` lines of a text (for error messages quoting a program's output).
 std::string lastLines(const std::string &text, size_t lines);
 

@@ -73,9 +73,23 @@ std::string safeFileName(std::string_view name) {
 bool iniSafe(std::string_view value) {
     for (char c : value) {
         unsigned char u = static_cast<unsigned char>(c);
-        if (u < 0x20 || u == 0x7f || c == ';') return false;
+        if (u < 0x20 || u == 0x7f || c == ';' || c == '"') return false;
     }
     return true;
+}
+
+std::string iniValue(const std::string &name) {
+    for (char c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-' && c != '.' &&
+            c != '/')
+            return '"' + name + '"';
+    return name;
+}
+
+std::string iniFileName(const std::string &value) {
+    if (value.size() >= 2 && value.front() == '"' && value.back() == '"')
+        return value.substr(1, value.size() - 2);
+    return value;
 }
 
 std::string sdlDirectiveProblem(std::string_view sdl) {

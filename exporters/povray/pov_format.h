@@ -36,8 +36,16 @@ std::string commentText(std::string_view text);
 std::string safeFileName(std::string_view name);
 
 /// Whether a file name may be written as an .ini value: no control characters (a newline
-/// would start a new option, such as a shell-out command) and no `;` (a comment).
+/// would start a new option, such as a shell-out command), no `;` (a comment) and no `"`
+/// (the quotes iniValue puts around a name).
 bool iniSafe(std::string_view value);
+
+/// A file name as an .ini value: as it is when it holds only letters, digits and `_-./`, else
+/// in double quotes, since POV-Ray cuts an unquoted value at a space. `name` must be iniSafe.
+std::string iniValue(const std::string &name);
+
+/// The file name an .ini value names: iniValue undone.
+std::string iniFileName(const std::string &value);
 
 /// Checks SDL before POV-Ray runs it, as POV-Ray's tokenizer reads it (`//` and nested `/* */`
 /// comments, strings with `\` escapes): the code may use only the directives the exporter

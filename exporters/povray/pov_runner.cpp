@@ -57,10 +57,10 @@ void vetExportedScene(const fs::path &dir, const std::string &iniFile) {
         if (line.empty() || line[0] == ';') continue;
         size_t eq = line.find('=');
         std::string key = line.substr(0, eq);
-        if (eq == std::string::npos || !knownIniKey(key) || !iniSafe(line.substr(eq + 1)))
+        if (eq == std::string::npos || !knownIniKey(key) || !iniSafe(iniFileName(line.substr(eq + 1))))
             throw std::runtime_error("refusing to run POV-Ray: " + iniFile + " has an option scadray does not write: " +
                                      commentText(line.substr(0, 80)));
-        if (key == "Input_File_Name") pov = line.substr(eq + 1);
+        if (key == "Input_File_Name") pov = iniFileName(line.substr(eq + 1));
     }
     if (pov.empty()) throw std::runtime_error("refusing to run POV-Ray: " + iniFile + " names no scene");
     std::ifstream in(dir / pov, std::ios::binary);

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -658,16 +659,25 @@ void exportPov(const ir::Scene &scene, const std::string &povPath, const std::st
     std::string sdl = writeSdl(scene, sourceName, &textures, pov.stem().string());
     ini.povFile = pov.filename().string();
     fs::path dir = pov.has_parent_path() ? pov.parent_path() : fs::path(".");
-    // Images first, so the .pov never refers to a missing file
+    std::string iniText = writeIni(ini);
+    // Every file is written under a temporary name first and all are renamed at the end, the
+    // images before the .pov: a full disk or an error leaves none of them (and never a .pov
+    // naming a missing image, nor textures without their .pov)
+    std::vector<std::unique_ptr<TempFile>> staged;
+    auto stage = [&](const fs::path &target) -> const std::string & {
+        staged.push_back(std::make_unique<TempFile>(target.string(), target.extension().string()));
+        return staged.back()->path();
+    };
     for (const TextureFile &t : textures) {
         WriteOptions wo;
         wo.pngDepth = PngDepth::Bits16;
         wo.linearPng = true;
         // .exr (the environment) keeps values above 1 as float
-        writeImage(t.image, (dir / t.fileName).string(), wo);
+        writeImage(t.image, stage(dir / t.fileName), wo);
     }
-    writeTextFile(povPath, sdl);
-    writeTextFile(fs::path(pov).replace_extension(".ini").string(), writeIni(ini));
+    writeTextFile(stage(pov), sdl);
+    writeTextFile(stage(fs::path(pov).replace_extension(".ini")), iniText);
+    for (auto &f : staged) f->commit();
 }
 
 std::string writeIni(const IniOptions &o) {
@@ -675,12 +685,12 @@ std::string writeIni(const IniOptions &o) {
     for (const std::string *name : {&o.povFile, &o.outputFile})
         if (!iniSafe(*name))
             throw std::runtime_error("the file name '" + commentText(*name) +
-                                     "' has a control character or ';', which cannot be written "
+                                     "' has a control character, ';' or '\"', which cannot be written "
                                      "into a POV-Ray .ini file; choose another name");
     std::ostringstream os;
     os << "; scadray: render " << o.povFile << " headless, quietly and deterministically\n"
-       << "Input_File_Name=" << o.povFile << "\n"
-       << "Output_File_Name=" << o.outputFile << "\n"
+       << "Input_File_Name=" << iniValue(o.povFile) << "\n"
+       << "Output_File_Name=" << iniValue(o.outputFile) << "\n"
        << "Width=" << o.width * o.supersample << "\n"
        << "Height=" << o.height * o.supersample << "\n"
        << "; No adaptive antialiasing: supersample by size and box-downsample instead\n"

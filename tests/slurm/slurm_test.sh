@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: MIT
 # tools/slurm/ on a real Slurm cluster (issue 18): brings up a private single-node cluster
 # (cluster.sh), submits with tools/slurm/submit.sh a 4-tile render, a 3-frame animation and a
-# check of two scenes, waits for them, and checks the merged picture and the frames against one
+# check of five scenes (three under awkward names), waits for them, and checks the merged picture and the frames against one
 # process's bit for bit, and the check summary's lines. Stops every daemon it started, also on
 # failure. Skipped (77) without Slurm, munge or root; the animation without ffmpeg and the check
 # without povray are skipped with a note.
@@ -74,12 +74,15 @@ EOF
     fi
 fi
 
-# --- check over two scenes, the summary as the last step
+# --- check over five scenes, the summary as the last step
 if ! command -v povray >/dev/null; then
     echo "NOTE: check array skipped: povray not installed"
 else
-    printf '%s\n' "# two small scenes" "$src/scenes/crosscheck/primitives.scad" "" \
-        "$src/scenes/crosscheck/csg_union.scad" >"$work/scenes.txt"
+    # Two small scenes, and one of them under names that a shell, a list or POV-Ray could
+    # misread: a space, a '#' and a leading '-'
+    for name in "my part" "a#b" "-x"; do cp "$src/scenes/crosscheck/primitives.scad" "$work/$name.scad"; done
+    printf '%s\n' "# small scenes" "$src/scenes/crosscheck/primitives.scad" "" \
+        "$src/scenes/crosscheck/csg_union.scad" "my part.scad" "  a#b.scad" "-x.scad" >"$work/scenes.txt"
     # The report exits 1 when a scene differs: the summary's lines are what is checked here
     timeout "$limit" "$submit" check --wait --scadray "$scadray" -o "$work/check" "$work/scenes.txt" \
         -- -W 32 -H 24 || true
@@ -88,8 +91,11 @@ else
         fail "no check summary $summary"
     else
         cat "$summary"
-        [ "$(grep -c -E '^(PASS|DIFFERENT): ' "$summary")" -eq 2 ] || fail "the summary has not 2 verdicts"
-        grep -q -E '^[0-9]+ of 2 scenes passed$' "$summary" || fail "the summary has no count"
+        [ "$(grep -c -E '^(PASS|DIFFERENT): ' "$summary")" -eq 5 ] || fail "the summary has not 5 verdicts"
+        grep -q -E '^[0-9]+ of 5 scenes passed$' "$summary" || fail "the summary has no count"
+        for name in "my part" "a#b" "-x"; do
+            grep -q -F "$work/$name.scad at" "$summary" || fail "no verdict for '$name.scad'"
+        done
         [ -s "$work/check/report.html" ] || fail "no HTML report $work/check/report.html"
     fi
 fi

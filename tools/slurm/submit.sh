@@ -127,16 +127,26 @@ check)
     while [ $# -gt 0 ] && [ "$1" != "--" ]; do
         case $1 in
         *.txt | *.list)
-            # A list: one scene a line, relative to the list; blank lines and # comments skipped
+            # A list: one scene a line, relative to the list; blank lines and lines starting
+            # with # skipped (a '#' inside a name, a.scad#1, is part of it, as in `report`)
+            [ -f "$1" ] || die "$1: no such list of scenes"
             base=$(cd "$(dirname "$1")" && pwd)
+            number=0
             while IFS= read -r line || [ -n "$line" ]; do
-                line=${line%%#*}
-                line=$(echo "$line" | sed 's/^[[:space:]]*//; s/[[:space:]]*$//')
-                [ -n "$line" ] || continue
-                case $line in /*) echo "$line" ;; *) echo "$base/$line" ;; esac >>"$list"
+                number=$((number + 1))
+                line=$(printf '%s' "$line" | sed 's/^[[:space:]]*//; s/[[:space:]]*$//')
+                case $line in '' | '#'*) continue ;; esac
+                case $line in /*) scene=$line ;; *) scene="$base/$line" ;; esac
+                # Checked before any job is submitted: a wrong line is this error, not a task
+                # that fails later
+                [ -f "$scene" ] || die "$1:$number: no such scene file: $line"
+                printf '%s\n' "$scene" >>"$list"
             done <"$1"
             ;;
-        *) absolute "$1" >>"$list" ;;
+        *)
+            [ -f "$1" ] || die "no such scene file: $1"
+            absolute "$1" >>"$list"
+            ;;
         esac
         shift
     done
