@@ -2,6 +2,9 @@
 // Compressed glTF geometry: EXT_meshopt_compression bufferViews (libmeshoptimizer) and
 // KHR_draco_mesh_compression primitives (libdraco), decoded into what the accessors read.
 #include <draco/compression/decode.h>
+#include <draco/compression/point_cloud/point_cloud_decoder.h>
+#include <draco/core/varint_decoding.h>
+#include <draco/metadata/metadata_decoder.h>
 #include <meshoptimizer.h>
 
 #include <cmath>
@@ -48,6 +51,83 @@ size_t member(const tinygltf::Value &obj, const char *name, const std::string &w
 std::string stringMember(const tinygltf::Value &obj, const char *name, const char *fallback) {
     if (!obj.Has(name) || !obj.Get(name).IsString()) return fallback;
     return obj.Get(name).Get<std::string>();
+}
+
+uint64_t ceilDiv(uint64_t a, uint64_t b) { return a / b + (a % b != 0); }
+
+/// Fewest bytes an EXT_meshopt_compression stream of `count` elements of `stride` bytes can
+/// take (the extension's Appendix A), so a count its bytes cannot hold is refused before
+/// count x stride bytes are allocated and zero-filled.
+/// - ATTRIBUTES: the header byte; blocks of at most min((8192 / stride) & ~15, 256) elements,
+///   each with one data block per byte of the element, which holds at least its header bits
+///   (2 bits per group of 16 elements: ceil(n / 64) bytes for n elements; a group of zero
+///   deltas adds nothing); then the tail, the first element padded to 32 bytes. At most
+///   64 : 1 for strides up to 128 (32 : 1 at 256).
+/// - TRIANGLES: the header byte, one code byte per triangle and the 16-byte code table.
+/// - INDICES: the header byte, at least one varint byte per index and 4 tail bytes.
+uint64_t meshoptMinBytes(const std::string &mode, uint64_t count, uint64_t stride) {
+    if (mode == "TRIANGLES") return 1 + count / 3 + 16;
+    if (mode == "INDICES") return 1 + count + 4;
+    uint64_t blockElements = std::min<uint64_t>((8192 / stride) & ~uint64_t(15), 256);
+    uint64_t headerBytes = (count / blockElements) * ceilDiv(blockElements, 64) +
+                           ceilDiv(count % blockElements, 64);
+    return 1 + stride * headerBytes + std::max<uint64_t>(stride, 32);
+}
+
+/// Most faces or vertices a KHR_draco_mesh_compression stream may declare per byte of it.
+/// Draco's format has no fixed ratio (rANS-coded symbols of constant data cost next to
+/// nothing), so this is a margin over what its encoder makes of the most regular input: a
+/// flat 1000 x 1000 grid (2,000,000 triangles) at its best compression (speed 0, 11-bit
+/// positions) takes 39 triangles and 20 vertices a byte; its standard edgebreaker spends at
+/// least one bit a triangle (8 a byte), its sequential coder at least one byte a triangle.
+constexpr uint64_t kMaxDracoElementsPerByte = 1024;
+
+/// Empty when the counts a Draco stream declares for its connectivity fit its size, else
+/// the reason. The decoder sizes its tables from these counts before reading the data they
+/// describe (100 bytes of edgebreaker stream declaring 7 x 10^8 faces and 6 x 10^8 symbols
+/// took Draco 1.5.5 64 s and 16 GB), so they are read here first, from the layout of Draco
+/// bitstream 2.2 (the version KHR_draco_mesh_compression is written against): the header and
+/// metadata through Draco's own readers, then the counts. Anything else (not Draco, cut
+/// short) is left for the decoder to refuse.
+std::string dracoDeclaredProblem(const unsigned char *data, size_t size) {
+    draco::DecoderBuffer buffer;
+    buffer.Init(reinterpret_cast<const char *>(data), size);
+    draco::DracoHeader header;
+    if (!draco::PointCloudDecoder::DecodeHeader(&buffer, &header).ok()) return "";
+    if (header.version_major != 2 || header.version_minor != 2)
+        return "is Draco bitstream " + std::to_string(header.version_major) + "." +
+               std::to_string(header.version_minor) +
+               "; KHR_draco_mesh_compression requires version 2.2";
+    if (header.encoder_type != draco::TRIANGULAR_MESH) return "is not a Draco triangle mesh";
+    buffer.set_bitstream_version(DRACO_BITSTREAM_VERSION(2, 2));
+    if (header.flags & METADATA_FLAG_MASK) {
+        draco::GeometryMetadata metadata;
+        if (!draco::MetadataDecoder().DecodeGeometryMetadata(&buffer, &metadata)) return "";
+    }
+    // Sequential: faces, points. Edgebreaker: traversal type, vertices, faces, attribute
+    // data, symbols, split symbols (each vertex count is a table the decoder fills)
+    uint32_t faces = 0, vertices = 0, extraVertices = 0;
+    uint8_t byte = 0;
+    if (header.encoder_method == draco::MESH_SEQUENTIAL_ENCODING) {
+        if (!draco::DecodeVarint(&faces, &buffer) || !draco::DecodeVarint(&vertices, &buffer))
+            return "";
+    } else if (header.encoder_method == draco::MESH_EDGEBREAKER_ENCODING) {
+        uint32_t symbols = 0;
+        if (!buffer.Decode(&byte) || !draco::DecodeVarint(&vertices, &buffer) ||
+            !draco::DecodeVarint(&faces, &buffer) || !buffer.Decode(&byte) ||
+            !draco::DecodeVarint(&symbols, &buffer) ||
+            !draco::DecodeVarint(&extraVertices, &buffer))
+            return "";
+    } else {
+        return "";
+    }
+    uint64_t limit = kMaxDracoElementsPerByte * uint64_t(size);
+    uint64_t allVertices = uint64_t(vertices) + extraVertices;
+    if (faces <= limit && allVertices <= limit) return "";
+    return "declares " + std::to_string(faces) + " triangles and " +
+           std::to_string(allVertices) + " vertices in " + std::to_string(size) +
+           " bytes, more than " + std::to_string(kMaxDracoElementsPerByte) +
+           " of either a byte can hold (corrupt or truncated)";
 }
 
 }  // namespace
@@ -162,6 +242,12 @@ void decodeMeshoptViews(tinygltf::Model &model, const std::vector<size_t> &fallb
             throw ParseError(loc, what + ": " + std::to_string(count) + " x " +
                                       std::to_string(stride) + " bytes decoded is more than " +
                                       std::to_string(kMaxMeshoptViewBytes));
+        if (uint64_t least = meshoptMinBytes(mode, count, stride); length < least)
+            throw ParseError(loc, what + ": count " + std::to_string(count) + " of " +
+                                      std::to_string(stride) + "-byte elements (mode " + mode +
+                                      ") needs at least " + std::to_string(least) +
+                                      " compressed bytes, but byteLength is " +
+                                      std::to_string(length) + " (corrupt or truncated)");
         std::vector<unsigned char> out(count * stride);
         const unsigned char *data = src.data() + offset;
         int rc = attributes  ? meshopt_decodeVertexBuffer(out.data(), count, stride, data, length)
@@ -244,8 +330,12 @@ std::unique_ptr<DracoPrimitive> DracoPrimitive::decode(const ImportContext &ctx,
         impl->accessors[name] = acc->second;
     }
 
+    const unsigned char *compressed = data.data() + bv.byteOffset;
+    if (std::string problem = dracoDeclaredProblem(compressed, bv.byteLength); !problem.empty())
+        ctx.fail(what + ": its data (" +
+                 jsonPath("bufferViews", static_cast<size_t>(view)) + ") " + problem);
     draco::DecoderBuffer buffer;
-    buffer.Init(reinterpret_cast<const char *>(data.data() + bv.byteOffset), bv.byteLength);
+    buffer.Init(reinterpret_cast<const char *>(compressed), bv.byteLength);
     draco::Decoder decoder;
     auto result = decoder.DecodeMeshFromBuffer(&buffer);
     if (!result.ok())
