@@ -9,10 +9,13 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <optional>
 #include <stdexcept>
+#include <string_view>
 
+#include "core/image/float_image_limits.h"
 #include "core/image/image_limits.h"
 #include "core/image/oiio_loader.h"
 #include "core/image/png_io.h"
@@ -164,7 +167,7 @@ void checkDeclared(const std::string &path, uint64_t width, uint64_t height, int
 /// premultiplies (left to it, so they read exactly as before).
 std::optional<RawImage> readPngRaw(const std::string &path, uint64_t fileBytes) {
     PngReader png(path);
-    if (png.hasAlpha()) return std::nullopt;
+    // Checked for OpenImageIO's reading too, which allocates the declared pixels as well
     checkDeclared(path, png.width(), png.height(), png.channels());
     // The header's own fields (a palette image has one channel before expansion)
     ImageHeader header;
@@ -175,6 +178,7 @@ std::optional<RawImage> readPngRaw(const std::string &path, uint64_t fileBytes) 
     header.bitDepth = png.fileBitDepth();
     std::string problem = pngPlausibilityProblem(header, fileBytes);
     if (!problem.empty()) throw std::runtime_error("image '" + path + "' " + problem);
+    if (png.hasAlpha()) return std::nullopt;
     RawImage raw;
     raw.width = static_cast<int>(png.width());
     raw.height = static_cast<int>(png.height());
@@ -187,16 +191,45 @@ std::optional<RawImage> readPngRaw(const std::string &path, uint64_t fileBytes) 
     return raw;
 }
 
+/// Refuses a Radiance or OpenEXR file whose header declares more pixels than the limits allow
+/// or than the file can hold, before OpenImageIO reads it (OpenEXR sizes its chunk offset
+/// table from the header as it opens the file).
+void checkFloatImageHeader(const std::string &path, uint64_t fileBytes) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return;  // OpenImageIO says why
+    std::optional<FloatImageHeader> h;
+    try {
+        h = readFloatImageHeader(in);
+    } catch (const std::runtime_error &e) {
+        throw std::runtime_error("cannot read image '" + path + "': " + e.what());
+    }
+    if (!h) return;
+    checkDeclared(path, h->width, h->height, h->channels);
+    std::string problem = floatImagePlausibilityProblem(*h, fileBytes);
+    if (!problem.empty())
+        throw std::runtime_error("image '" + path + "' (" + h->format + ") " + problem);
+}
+
 /// Any other image through the OpenImageIO module.
-RawImage readOiioRaw(const std::string &path) {
+RawImage readOiioRaw(const std::string &path, uint64_t fileBytes) {
+    checkFloatImageHeader(path, fileBytes);
     const ScadrayOiioApi &oiio = oiioModule("read image '" + path + "'");
     char error[4096] = "";
     ScadrayOiioHeader h{};
     void *in = oiio.openInput(path.c_str(), &h, error, sizeof error);
     if (!in) throw std::runtime_error("cannot read image '" + path + "': " + error);
     std::unique_ptr<void, void (*)(void *)> closer(in, oiio.closeInput);
-    checkDeclared(path, uint64_t(std::max(h.width, 0)), uint64_t(std::max(h.height, 0)),
-                  h.channels);
+    uint64_t width = uint64_t(std::max(h.width, 0)), height = uint64_t(std::max(h.height, 0));
+    checkDeclared(path, width, height, h.channels);
+    // OpenImageIO also reads a Radiance file whose header lacks the "#?" line, and splits long
+    // header lines where the check above does not: its own size decides here
+    if (std::string_view(h.format) == "hdr" && radianceMinDataBytes(height, width) > fileBytes)
+        throw std::runtime_error("image '" + path + "' (Radiance HDR) declares " +
+                                 std::to_string(width) + " x " + std::to_string(height) +
+                                 " pixels, which need at least " +
+                                 std::to_string(radianceMinDataBytes(height, width)) +
+                                 " bytes, more than its " + std::to_string(fileBytes) +
+                                 " bytes (corrupt or truncated)");
     RawImage raw;
     raw.width = h.width;
     raw.height = h.height;
@@ -229,7 +262,7 @@ RawImage readRaw(const std::string &path, bool forceOiio = false) {
     uint64_t fileBytes = fs::file_size(path, ec);
     if (!forceOiio && hasPngSignature(path))
         if (std::optional<RawImage> raw = readPngRaw(path, fileBytes)) return std::move(*raw);
-    return readOiioRaw(path);
+    return readOiioRaw(path, fileBytes);
 }
 
 /// The first three channels (grey repeated) as linear RGB: integer samples are sRGB-encoded

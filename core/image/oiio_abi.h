@@ -11,7 +11,7 @@ extern "C" {
 
 /// Changes whenever a struct or a function below changes; the loader refuses a module built
 /// with another value.
-#define SCADRAY_OIIO_ABI_VERSION 2
+#define SCADRAY_OIIO_ABI_VERSION 3
 /// The one symbol the module exports.
 #define SCADRAY_OIIO_ENTRY "scadray_oiio_api"
 /// Most channel names a header carries (more channels are counted, not named).
@@ -25,6 +25,7 @@ enum { SCADRAY_OIIO_UINT8 = 0, SCADRAY_OIIO_UINT16 = 1, SCADRAY_OIIO_FLOAT = 2 }
 
 /// What an opened image file declares.
 struct ScadrayOiioHeader {
+    char format[SCADRAY_OIIO_NAME_SIZE];  ///< OpenImageIO's name of the reader ("hdr", "openexr")
     int width, height, channels;
     int integer;  ///< 8- or 16-bit unsigned samples
     int linear;   ///< its colour space is "linear" (any case)

@@ -30,6 +30,7 @@ void *openInput(const char *path, ScadrayOiioHeader *header, char *error, size_t
         }
         const OIIO::ImageSpec &spec = in->spec();
         std::memset(header, 0, sizeof *header);
+        setError(header->format, SCADRAY_OIIO_NAME_SIZE, in->format_name());
         header->width = spec.width;
         header->height = spec.height;
         header->channels = spec.nchannels;

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "core/image/float_image_limits.h"
 #include "core/image/image_io.h"
 
 #include "support/temp_dir_test.h"
@@ -67,14 +68,15 @@ void chunk(std::vector<unsigned char> &png, const char *type,
     putBe32(png, crc32(png.data() + start, png.size() - start));
 }
 
-/// Signature, IHDR (8-bit RGB), an IDAT holding an empty zlib stream and an IEND: 65 bytes
-/// declaring width x height.
-std::vector<unsigned char> pngHeader(uint32_t width, uint32_t height) {
+/// Signature, IHDR (8-bit RGB, or the colour type given), an IDAT holding an empty zlib stream
+/// and an IEND: 65 bytes declaring width x height.
+std::vector<unsigned char> pngHeader(uint32_t width, uint32_t height,
+                                     unsigned char colourType = 2) {
     std::vector<unsigned char> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
     std::vector<unsigned char> ihdr;
     putBe32(ihdr, width);
     putBe32(ihdr, height);
-    for (unsigned char c : {8, 2, 0, 0, 0}) ihdr.push_back(c);
+    for (unsigned char c : {8, int(colourType), 0, 0, 0}) ihdr.push_back(c);
     chunk(png, "IHDR", ihdr);
     chunk(png, "IDAT", {0x78, 0x9C, 0x03, 0x00, 0x00, 0x00, 0x00, 0x01});
     chunk(png, "IEND", {});
@@ -94,6 +96,9 @@ TEST_F(ImageLimits, PngDeclaringTooManyPixelsIsRefused) {
 TEST_F(ImageLimits, PngDeclaringMoreThanItsFileCanHoldIsRefused) {
     // 8000 x 8000 RGB within the limits, but 192 MB cannot inflate from 65 bytes
     std::string msg = readError(write("short.png", pngHeader(8000, 8000)));
+    EXPECT_NE(msg.find("more than its 65 bytes can hold"), std::string::npos) << msg;
+    // The same with alpha, which OpenImageIO decodes (it allocated 1 GB of float pixels)
+    msg = readError(write("alpha.png", pngHeader(8000, 8000, 6)));
     EXPECT_NE(msg.find("more than its 65 bytes can hold"), std::string::npos) << msg;
 }
 
@@ -139,6 +144,44 @@ TEST_F(ImageLimits, ExrDeclaringTooManyPixelsIsRefused) {
         << msg;
     msg = readError(write("wide.exr", exrDeclaring(dir, 40000, 4)));
     EXPECT_NE(msg.find("declares 40000 x 4 pixels, a side longer"), std::string::npos) << msg;
+}
+
+TEST_F(ImageLimits, ExrDeclaringMoreThanItsFileCanHoldIsRefused) {
+    // 8192 x 8192 float RGB (805 MB raw) within the limits, its offset table complete, but zip
+    // (deflate, 1032 : 1) cannot hold them in 4 kB: 805 MB of pixels were allocated
+    std::string path = write("window.exr", exrDeclaring(dir, 8192, 8192));
+    std::string msg = readError(path);
+    EXPECT_NE(msg.find("image '" + path + "' (OpenEXR) declares 8192 x 8192 pixels, which need "
+                       "at least"),
+              std::string::npos)
+        << msg;
+    EXPECT_NE(msg.find("512 chunks of at least 16 bytes with their offsets, and 805306368 bytes "
+                       "of pixels at most 1032 : 1 compressed), more than its " +
+                       std::to_string(fs::file_size(path)) + " bytes"),
+              std::string::npos)
+        << msg;
+    // The offset table alone: 8 bytes a chunk must be there
+    std::vector<unsigned char> cut = exrDeclaring(dir, 4, 4096);
+    cut.resize(cut.size() - 8 * 200);
+    msg = readError(write("cut.exr", cut));
+    EXPECT_NE(msg.find("declares 4 x 4096 pixels, which need at least"), std::string::npos) << msg;
+    // The written 4 x 4 picture reads, its header as OpenImageIO reports it
+    std::ifstream in((dir / "small.exr").string(), std::ios::binary);
+    std::optional<FloatImageHeader> h = readFloatImageHeader(in);
+    ASSERT_TRUE(h);
+    EXPECT_EQ(h->width, 4u);
+    EXPECT_EQ(h->channels, 3);
+    EXPECT_LE(h->minFileBytes, fs::file_size(dir / "small.exr"));
+    EXPECT_EQ(readImage((dir / "small.exr").string()).width(), 4);
+}
+
+TEST_F(ImageLimits, UnreadableExrHeadersAreRefusedBeforeOpenExrReadsThem) {
+    std::vector<unsigned char> exr = exrDeclaring(dir, 4, 4);
+    for (size_t keep : {size_t(6), size_t(20), size_t(60)}) {
+        std::vector<unsigned char> cut(exr.begin(), exr.begin() + static_cast<long>(keep));
+        std::string msg = readError(write("cut" + std::to_string(keep) + ".exr", cut));
+        EXPECT_NE(msg.find("its OpenEXR header ends inside"), std::string::npos) << msg;
+    }
 }
 
 TEST_F(ImageLimits, NonRegularFilesAreRefused) {
