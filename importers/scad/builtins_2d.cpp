@@ -31,6 +31,12 @@ constexpr double kMinAxisScale = 1e-9;
 /// More slices than this are refused: they would only multiply triangles.
 constexpr int kMaxSlices = 100000;
 
+/// Clipper's strictly simple pass (regions()) compares every point of an outline with every
+/// other (Clipper 6.4.2 DoSimplePolygons): this many such pairs are charged as one unit of
+/// geometry work, so a 100,000-point outline (about 10 s of pairs) is what the default
+/// budget allows.
+constexpr double kPointPairsPerWork = 100;
+
 /// Plates drawn for top-level 2D objects, as OpenSCAD's preview draws them (polyset-gl.cc).
 constexpr double kPlateThickness = 1;
 
@@ -172,6 +178,8 @@ ir::NodePtr Evaluator::moduleCircle(const ModuleInstantiation &inst, const Frame
     s.kind = Shape2dKind::Circle;
     s.radius = r;
     s.fragments = currentFragments(inst.loc);
+    // Its points are made whenever the circle is evaluated or extruded
+    chargeGeometryWork(inst.loc, "circle()", static_cast<double>(shapePointCount(s)));
     return shape2dNode(std::move(s), inst);
 }
 
@@ -303,6 +311,8 @@ ir::NodePtr Evaluator::moduleLinearExtrude(const ModuleInstantiation &inst, cons
     spec.scale = scale;
     spec.meshPath = spec.twist != 0 || scale.x != scale.y;
     if (!spec.meshPath) {
+        // A prism per outline: its points at both ends
+        chargeGeometryWork(inst.loc, "linear_extrude()", 2 * pointCount2d(*children));
         if (ir::NodePtr solid = lift2d(*children, spec, Affine2(), 0))
             out->children.push_back(std::move(solid));
         return out;
@@ -331,12 +341,27 @@ ir::NodePtr Evaluator::moduleLinearExtrude(const ModuleInstantiation &inst, cons
                            " slices are too many; using " + std::to_string(kMaxSlices));
         spec.slices = kMaxSlices;
     }
+    // The swept mesh: a ring of the outlines' points at every slice
+    double points = 0;
+    if (evaluated) {
+        for (const Outline &o : evaluated->outlines) points += static_cast<double>(o.size());
+    } else {
+        points = pointCount2d(*children);
+    }
+    chargeGeometryWork(inst.loc, "linear_extrude()", points * (spec.slices + 1));
     ir::NodePtr solid =
         evaluated ? liftRegions(withClipper(inst.loc, [&] { return clipper2d::regions(*evaluated); }),
                                 spec, 0, spec.material, inst.loc)
                   : lift2d(*children, spec, Affine2(), 0);
     if (solid) out->children.push_back(std::move(solid));
     return out;
+}
+
+double Evaluator::pointCount2d(const ir::Node &n) const {
+    if (const Shape2d *s = shape2dOf(n)) return static_cast<double>(shapePointCount(*s));
+    double count = 0;
+    for (const auto &c : n.children) count += pointCount2d(*c);
+    return count;
 }
 
 size_t Evaluator::outlineCount(const ir::Node &n) const {
@@ -493,7 +518,17 @@ ir::NodePtr Evaluator::liftShape(const Shape2d &s, const ExtrudeSpec &spec, cons
     // themselves or each other are sanitized by Clipper first, as OpenSCAD sanitizes every
     // polygon(); an evaluated polygon set (offset) is nested as Clipper nests it.
     std::vector<Region> regions;
+    auto chargePairs = [&] {
+        double pairs = 0;
+        for (const Outline &o : s.outlines)
+            pairs += static_cast<double>(o.size()) * static_cast<double>(o.size());
+        chargeGeometryWork(s.loc, "extruding the outline made here",
+                           pairs / kPointPairsPerWork,
+                           "hundred point pairs (Clipper compares each outline's points with "
+                           "one another)");
+    };
     if (s.kind == Shape2dKind::Polygon && s.evaluated) {
+        chargePairs();
         clipper2d::PolygonSet set{s.outlines, s.sanitized};
         regions = withClipper(s.loc, [&] { return clipper2d::regions(set); });
     } else {
@@ -502,12 +537,14 @@ ir::NodePtr Evaluator::liftShape(const Shape2d &s, const ExtrudeSpec &spec, cons
             o = cleanOutline(o);
             if (!o.empty()) outlines.push_back(std::move(o));
         }
-        if (s.kind == Shape2dKind::Polygon && outlinesIntersect(outlines))
+        if (s.kind == Shape2dKind::Polygon && outlinesIntersect(outlines)) {
+            chargePairs();
             regions = withClipper(s.loc, [&] {
                 return clipper2d::regions(clipper2d::sanitize({s.outlines, false}));
             });
-        else
+        } else {
             regions = evenOddRegions(outlines);
+        }
     }
     // Placed on the mesh path (a mirror turns the outlines over: counter-clockwise again)
     if (!placed.isIdentity()) {

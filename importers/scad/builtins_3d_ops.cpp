@@ -3,12 +3,15 @@
 // geometry of their children (GeometryEvaluator), here computed from the same tessellated
 // points (ir::gatherHullPoints, ir::gatherConvexParts) and Clipper polygon sets.
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
+#include <cstdio>
 #include <limits>
 #include <optional>
 #include <string>
+#include <variant>
 
+#include "core/ir/facets.h"
 #include "core/ir/hull.h"
 #include "importers/scad/clipper2d.h"
 #include "importers/scad/evaluator.h"
@@ -49,11 +52,65 @@ std::array<double, 3> resizeScale(const double newsize[3], const bool autosize[3
 
 }  // namespace
 
-void Evaluator::chargeGeometryWork(const SourceLoc &loc, const std::string &what, int64_t units) {
-    geometryWork_ += units;
-    if (limits_.maxGeometryWork > 0 && geometryWork_ > limits_.maxGeometryWork)
-        throw EvalError(loc, what + ": more geometry work than the evaluation's limit of " +
-                                 std::to_string(limits_.maxGeometryWork) + " allows");
+void Evaluator::chargeGeometryWork(const SourceLoc &loc, const std::string &what, double units,
+                                   const char *noun) {
+    // Estimates may exceed any integer (faces squared of a huge tessellation): compared as
+    // doubles, and the total kept saturated
+    double total = static_cast<double>(geometryWork_) + std::max(units, 0.0);
+    if (limits_.maxGeometryWork > 0 && !(total <= static_cast<double>(limits_.maxGeometryWork))) {
+        char amount[32];
+        std::snprintf(amount, sizeof amount, "%.2g", units);
+        std::string left =
+            geometryWork_ > 0
+                ? " the " + std::to_string(limits_.maxGeometryWork - geometryWork_) + " left of"
+                : "";
+        throw EvalError(loc, what + ": about " + amount + " " + noun + ", more than" + left +
+                                 " the geometry budget of " +
+                                 std::to_string(limits_.maxGeometryWork) +
+                                 " (--max-geometry N raises it; 0 = no cap)");
+    }
+    geometryWork_ = total < 9e18 ? static_cast<int64_t>(total) : std::numeric_limits<int64_t>::max();
+}
+
+double tessellatedFaces(const ir::Node &n, const ir::Scene &scene) {
+    // Only parameters are read: a sphere of $fn = 1e6 would have 5e11 faces to count
+    auto fragments = [&](double r) {
+        return static_cast<double>(ir::openscadFragments(r, n.fragments));
+    };
+    auto meshTriangles = [&](int index) {
+        return index >= 0 && index < static_cast<int>(scene.meshes.size()) && scene.meshes[index]
+                   ? static_cast<double>(scene.meshes[index]->triangles.size())
+                   : 0.0;
+    };
+    // rotate_extrude's mesh: two triangles per profile edge and segment, and the end caps
+    auto revolved = [](double points, int segments) {
+        return 2 * points * std::max(segments, 1) + 2 * points;
+    };
+    if (n.kind != ir::NodeKind::Primitive) {
+        double sum = 0;
+        for (const auto &c : n.children) sum += tessellatedFaces(*c, scene);
+        return sum;
+    }
+    if (std::holds_alternative<ir::BoxPrim>(n.shape)) return 6;
+    if (const auto *s = std::get_if<ir::SpherePrim>(&n.shape)) {
+        double f = fragments(s->radius);
+        return f * std::floor((f + 1) / 2) + 2;
+    }
+    if (const auto *c = std::get_if<ir::CylinderPrim>(&n.shape))
+        return fragments(std::max(c->r1, c->r2)) + 2;
+    if (const auto *m = std::get_if<ir::MeshPrim>(&n.shape)) return meshTriangles(m->mesh);
+    if (const auto *p = std::get_if<ir::PolytopePrim>(&n.shape))
+        return static_cast<double>(p->faces.size());
+    if (const auto *l = std::get_if<ir::LathePrim>(&n.shape)) {
+        double points = 0;
+        for (const auto &o : l->outlines) points += static_cast<double>(o.size());
+        return revolved(points, l->fragments);
+    }
+    if (const auto *t = std::get_if<ir::TorusPrim>(&n.shape))
+        return revolved(static_cast<double>(t->facetOutline.size()), t->fragments);
+    const auto &prism = std::get<ir::PrismPrim>(n.shape);
+    return prism.mesh >= 0 ? meshTriangles(prism.mesh)
+                           : static_cast<double>(prism.outline.size()) + 2;
 }
 
 ir::NodePtr Evaluator::moduleResize(const ModuleInstantiation &inst, const FramePtr &f) {
@@ -96,6 +153,7 @@ ir::NodePtr Evaluator::moduleResize(const ModuleInstantiation &inst, const Frame
             }
     } else {
         warnIgnored2d(*children);
+        chargeGeometryWork(inst.loc, "resize()", tessellatedFaces(*children, scene_));
         std::vector<Vec3> points;
         if (!ir::gatherHullPoints(*children, scene_, diag_, points, "resize()"))
             return newNode(ir::NodeKind::Group, inst.loc);
@@ -142,9 +200,21 @@ ir::NodePtr Evaluator::moduleMinkowski(const ModuleInstantiation &inst, const Fr
             if (std::optional<clipper2d::PolygonSet> set = polygons2d(*c, nullptr))
                 operands.push_back(std::move(*set));
         if (operands.empty()) return newNode(ir::NodeKind::Group, inst.loc);
+        // Every outline point of one operand meets every point of the next (a quad each)
+        double points = 0, quads = 0;
+        for (const clipper2d::PolygonSet &set : operands) {
+            double n = 0;
+            for (const Outline &o : set.outlines) n += static_cast<double>(o.size());
+            quads += points * n;
+            points += n;
+        }
+        chargeGeometryWork(inst.loc, "minkowski()", quads, "quads");
         return polygonSetNode(withClipper(inst.loc, [&] { return clipper2d::minkowski(operands); }),
                               inst);
     }
+
+    // The children as OpenSCAD tessellates them, before any point is gathered
+    chargeGeometryWork(inst.loc, "minkowski()", tessellatedFaces(*children, scene_), "faces");
 
     // 3D: the sum distributes over unions; the sum of two convex parts is the hull of the
     // pairwise sums of their points (OpenSCAD's minkowski3 does the same on its convex parts).
@@ -167,8 +237,9 @@ ir::NodePtr Evaluator::moduleMinkowski(const ModuleInstantiation &inst, const Fr
             Part p;
             p.solid = &n;
             p.placement = m;
+            double faces = tessellatedFaces(n, scene_);
+            chargeGeometryWork(inst.loc, "minkowski()", faces * faces, "face pairs");
             Tessellation tess(n, m, scene_);
-            chargeGeometryWork(inst.loc, "minkowski()", static_cast<int64_t>(tess.faces() * tess.faces()));
             p.pieces = withClipper(n.loc, [&] { return solidBoundary(tess, n); });
             if (!p.pieces.empty()) solids.push_back(std::move(p));
         });
@@ -184,7 +255,7 @@ ir::NodePtr Evaluator::moduleMinkowski(const ModuleInstantiation &inst, const Fr
                                std::to_string(ir::kMaxHullPoints) + " a hull may have; left out");
             return false;
         }
-        chargeGeometryWork(inst.loc, "minkowski()", static_cast<int64_t>(p.size() * q.size()));
+        chargeGeometryWork(inst.loc, "minkowski()", static_cast<double>(p.size() * q.size()));
         std::vector<Vec3> pts;
         pts.reserve(p.size() * q.size());
         for (const Vec3 &a : p)
@@ -273,9 +344,16 @@ ir::NodePtr Evaluator::moduleProjection(const ModuleInstantiation &inst, const F
         warn(inst.loc, "projection(): its 2D children are ignored, as in OpenSCAD, which "
                        "projects 3D geometry only");
     if (!(contentsOf(*children) & 2)) return newNode(ir::NodeKind::Group, inst.loc);
+    // The cut slices each face once; the shadow unites a polygon per face in Clipper, whose
+    // PolyTree pass (FixupFirstLefts) grows with the square of their number (5,000 faces of
+    // a sphere with $fn = 100: about 25 s), as do the sections of a difference or an
+    // intersection, taken in the plane of every face
+    double faces = tessellatedFaces(*children, scene_);
+    if (cut)
+        chargeGeometryWork(inst.loc, "projection(cut = true)", faces, "faces");
+    else
+        chargeGeometryWork(inst.loc, "projection()", faces * faces, "face pairs");
     Tessellation tess(*children, Mat4(), scene_);
-    size_t faces = tess.faces();
-    chargeGeometryWork(inst.loc, "projection()", static_cast<int64_t>(cut ? faces : faces * faces));
     clipper2d::PolygonSet result = withClipper(inst.loc, [&] {
         return cut ? projectCut(tess, *children) : projectShadow(tess, *children);
     });

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: MIT
 // Builtin geometry modules: primitives, transforms, color(), CSG operations, and the
 // modules this importer skips (OpenSCAD 2021.01 primitives.cc, transform.cc, color.cc, csgops.cc).
+#include <algorithm>
 #include <cmath>
 #include <unordered_map>
+#include <variant>
 
+#include "core/ir/facets.h"
 #include "core/ir/hull.h"
 #include "importers/scad/colors.h"
 #include "importers/scad/evaluator.h"
@@ -74,6 +77,14 @@ ir::NodePtr Evaluator::primitive(ir::PrimShape shape, const ModuleInstantiation 
     if (++nodes_ > limits_.maxNodes)
         throw EvalError(inst.loc,
                         "too many geometry nodes: more than " + std::to_string(limits_.maxNodes));
+    // A sphere's or cylinder's fragment count: every tessellation of it starts from rings of
+    // that many points (hull(), projection() and minkowski() charge the whole tessellation)
+    if (const auto *s = std::get_if<ir::SpherePrim>(&shape))
+        chargeGeometryWork(inst.loc, inst.name.str() + "()",
+                           ir::openscadFragments(s->radius, fr), "fragments");
+    if (const auto *c = std::get_if<ir::CylinderPrim>(&shape))
+        chargeGeometryWork(inst.loc, inst.name.str() + "()",
+                           ir::openscadFragments(std::max(c->r1, c->r2), fr), "fragments");
     ir::NodePtr n = ir::Node::makePrimitive(shape, resolveMaterial(inst.loc), inst.loc);
     n->fragments = fr;
     return n;
@@ -402,6 +413,7 @@ ir::NodePtr Evaluator::moduleHull(const ModuleInstantiation &inst, const FramePt
     // dimension's children are ignored with its warnings
     if (dimensionOf(*children) == 2) return hull2d(*children, inst);
     warnIgnored2d(*children);
+    chargeGeometryWork(inst.loc, "hull()", tessellatedFaces(*children, scene_));
     std::vector<Vec3> points;
     if (!ir::gatherHullPoints(*children, scene_, diag_, points))
         return newNode(ir::NodeKind::Group, inst.loc);

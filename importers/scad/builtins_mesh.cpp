@@ -2,10 +2,12 @@
 // Builtin mesh modules: polyhedron() and import() of STL, OFF and glTF files (OpenSCAD 2021.01
 // primitives.cc and import.cc), with each imported file read once per evaluation.
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <unordered_set>
 
 #include "importers/gltf/gltf_importer.h"
 #include "importers/mesh/mesh_reader.h"
@@ -45,6 +47,33 @@ bool hasThreeDistinctPoints(const std::vector<Vec3> &positions,
         }
     }
     return false;
+}
+
+/// Removes the triangles that repeat an earlier one (the same corners in the same cyclic
+/// order; the reverse is another face) and returns how many. A face listed many times costs
+/// the trace as many times over while adding nothing: OpenSCAD's CGAL operations take such
+/// a polyhedron as its distinct faces.
+size_t dropRepeatedTriangles(ir::Mesh &mesh) {
+    struct Hash {
+        size_t operator()(const std::array<uint32_t, 3> &t) const {
+            uint64_t h = t[0];
+            h = h * 0x9E3779B97F4A7C15ull ^ t[1];
+            h = h * 0x9E3779B97F4A7C15ull ^ t[2];
+            return static_cast<size_t>(h ^ (h >> 29));
+        }
+    };
+    std::unordered_set<std::array<uint32_t, 3>, Hash> seen;
+    seen.reserve(mesh.triangles.size());
+    size_t kept = 0;
+    for (const auto &t : mesh.triangles) {
+        // Rotated to start at the smallest index: one key per cyclic order
+        int first = t[0] <= t[1] && t[0] <= t[2] ? 0 : t[1] <= t[2] ? 1 : 2;
+        std::array<uint32_t, 3> key = {t[first], t[(first + 1) % 3], t[(first + 2) % 3]};
+        if (seen.insert(key).second) mesh.triangles[kept++] = t;
+    }
+    size_t dropped = mesh.triangles.size() - kept;
+    mesh.triangles.resize(kept);
+    return dropped;
 }
 
 /// The same file reached by different spellings gets one cache entry.
@@ -117,6 +146,9 @@ ir::NodePtr Evaluator::modulePolyhedron(const ModuleInstantiation &inst, const F
         return emptyPrimitive(
             inst, "faces = " + argText(faces) + " is not a vector of vectors of point indices");
     const SourceLoc &facesLoc = a.loc(facesArg);
+    if (faces.isVector())
+        chargeGeometryWork(inst.loc, "polyhedron()",
+                           static_cast<double>(faces.toVector().size()), "faces");
     int skipped = 0;
     auto skip = [&](const std::string &why) {
         if (++skipped <= kMaxFaceWarnings) warn(facesLoc, why + "; face skipped");
@@ -163,6 +195,10 @@ ir::NodePtr Evaluator::modulePolyhedron(const ModuleInstantiation &inst, const F
         warn(facesLoc, std::to_string(skipped) + " faces skipped in all");
 
     meshio::weldMesh(mesh);
+    if (size_t repeated = dropRepeatedTriangles(mesh))
+        warn(facesLoc, "polyhedron(): " + std::to_string(repeated) +
+                           " triangles repeat earlier faces (the same points in the same "
+                           "order); each is drawn once, as OpenSCAD's CGAL operations take it");
     if (mesh.triangles.empty()) return emptyPrimitive(inst, "no valid faces");
     std::string problem = meshio::solidProblem(mesh);
     if (!problem.empty())

@@ -100,6 +100,9 @@ ir::NodePtr Evaluator::moduleRotateExtrude(const ModuleInstantiation &inst, cons
     bool negativeSide = range.min < 0;
     spec.angle = std::abs(angle);
     spec.segments = revolveFragments(range, angle, spec.fragments);
+    // OpenSCAD's mesh of it: a ring of the profile's points at every segment
+    chargeGeometryWork(inst.loc, "rotate_extrude()",
+                       pointCount2d(*children) * (static_cast<double>(spec.segments) + 1));
     double turn = (angle < 0 ? angle : 0) + (negativeSide ? 180 : 0);
     Affine2 mirror;
     if (negativeSide) mirror.m00 = -1;

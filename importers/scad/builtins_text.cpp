@@ -116,6 +116,7 @@ ir::NodePtr Evaluator::moduleText(const ModuleInstantiation &inst, const FramePt
                                       " outline points, more than " +
                                       std::to_string(text::kMaxTextPoints) + " (" +
                                       std::to_string(p.segments) + " per curve from $fn, $fa, $fs)");
+    chargeGeometryWork(inst.loc, "text()", static_cast<double>(r.points));
     std::vector<clipper2d::PolygonSet> glyphs;
     for (auto &outlines : r.glyphs) glyphs.push_back({std::move(outlines), true});
     if (glyphs.empty()) return empty;

@@ -6,6 +6,7 @@
 
 #include "core/ir/facets.h"
 #include "core/math/degree_trig.h"
+#include "core/math/float_util.h"
 #include "importers/scad/evaluator.h"
 
 namespace rt::scad {
@@ -14,6 +15,41 @@ namespace {
 
 /// OffsetNode's miter limit, fixed high in 2021.01 so that delta never chamfers a corner.
 constexpr double kOffsetMiterLimit = 1000000.0;
+
+/// Clipper's default arc tolerance, in its integer units (clipper.cpp def_arc_tolerance).
+constexpr double kClipperDefaultArcTolerance = 0.25;
+
+/// An upper estimate of the points Clipper 6.4.2's ClipperOffset makes of `input` (DoOffset,
+/// DoRound), from the outlines and the parameters only: a round join steps steps / 2 pi times
+/// per radian the outline turns at a corner, with the step count from the arc tolerance
+/// (both in Clipper's units); each corner gives at most two more points.
+double offsetPoints(const clipper2d::PolygonSet &input, double delta,
+                    clipper2d::JoinType join, double arcTolerance) {
+    double stepsPerRadian = 0;
+    double d = std::abs(delta) * clipper2d::kScale;
+    if (join == clipper2d::JoinType::Round && d > 0) {
+        double y = arcTolerance * clipper2d::kScale;
+        if (!(y > 0))
+            y = kClipperDefaultArcTolerance;
+        else if (y > d * kClipperDefaultArcTolerance)
+            y = d * kClipperDefaultArcTolerance;
+        double steps = kPi / std::acos(1 - y / d);
+        // Clipper's "excessive precision check"
+        if (!(steps <= d * kPi)) steps = d * kPi;
+        stepsPerRadian = steps / (2 * kPi);
+    }
+    double points = 0;
+    for (const Outline &o : input.outlines) {
+        size_t n = o.size();
+        for (size_t i = 0; i < n; ++i) {
+            Vec2 a = o[(i + n - 1) % n], b = o[i], c = o[(i + 1) % n];
+            double ux = b.x - a.x, uy = b.y - a.y, vx = c.x - b.x, vy = c.y - b.y;
+            double turn = std::abs(std::atan2(ux * vy - uy * vx, ux * vx + uy * vy));
+            points += 2 + stepsPerRadian * turn;
+        }
+    }
+    return points;
+}
 
 }  // namespace
 
@@ -114,6 +150,8 @@ ir::NodePtr Evaluator::moduleOffset(const ModuleInstantiation &inst, const Frame
     // sagitta of one of the circle's fragments
     double n = ir::openscadFragments(std::abs(delta), fragments);
     double arcTolerance = std::abs(delta) * (1 - cosDegrees(180 / n));
+    // Charged before Clipper makes them: r = 1e9 with $fn = 1e6 gives a million points
+    chargeGeometryWork(inst.loc, "offset()", offsetPoints(input, delta, join, arcTolerance));
     clipper2d::PolygonSet result = withClipper(inst.loc, [&] {
         return clipper2d::offset(input, delta, join, kOffsetMiterLimit, arcTolerance);
     });

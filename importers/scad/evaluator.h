@@ -42,11 +42,12 @@ struct EvalLimits {
     int maxValueDepth = 100000;
     size_t maxStringLength = 64u << 20;      ///< bytes in one string value
     size_t stackReserveBytes = 1u << 20;     ///< stack kept free below the deepest frame
-    /// Work of the geometry operations on evaluated children (points summed by minkowski(),
-    /// faces times faces examined by projection()), over the whole evaluation; 0 = no cap.
-    /// Realistic models finish in seconds without one; the fuzz target sets it so that no
-    /// input runs long under the sanitizers.
-    int64_t maxGeometryWork = 0;
+    /// Points and faces the geometry operations make or examine (kDefaultMaxGeometry), over
+    /// the whole evaluation; 0 = no cap. Each operation charges its estimate, from its
+    /// parameters, before doing the work (scadray --max-geometry), so the error names the
+    /// option. The fuzz target sets it far lower, so that no input runs long under the
+    /// sanitizers.
+    int64_t maxGeometryWork = kDefaultMaxGeometry;
 };
 
 /// A file taking part in evaluation: the main file or a used library.
@@ -307,6 +308,9 @@ class Evaluator {
                            int material, const SourceLoc &loc);
     /// Number of 2D outlines under `n` (a circle or square is one).
     size_t outlineCount(const ir::Node &n) const;
+    /// Outline points of the 2D shapes under `n` (a circle's fragments), for the geometry
+    /// budget.
+    double pointCount2d(const ir::Node &n) const;
     void extentOf2d(const ir::Node &n, const Affine2 &placed, Vec2 scale, double &rSqr,
                     double &deltaSqr) const;
     /// Draws the 2D subtrees left outside any extrusion as OpenSCAD's preview does.
@@ -470,11 +474,26 @@ class Evaluator {
     double time_ = 0;
     int64_t nodes_ = 0;
     int64_t geometryWork_ = 0;
-    /// Adds `units` to the geometry work; beyond EvalLimits::maxGeometryWork a located error.
-    void chargeGeometryWork(const SourceLoc &loc, const std::string &what, int64_t units);
+
+  public:
+    /// Adds `units` (an estimate, made before the work, of the `noun` it makes or examines:
+    /// "points", "faces", ...) to the geometry work; beyond EvalLimits::maxGeometryWork a
+    /// located error at `loc` naming `what` and the option that raises the budget.
+    void chargeGeometryWork(const SourceLoc &loc, const std::string &what, double units,
+                            const char *noun = "points");
+    /// The geometry work charged so far.
+    int64_t geometryWork() const { return geometryWork_; }
+
+  private:
     uint64_t randomCounter_ = 0;
     const char *stackLow_ = nullptr;
 };
+
+/// Faces of OpenSCAD's tessellation of the primitives under `n` (as ir::openscadPolyhedron
+/// makes them), estimated from their parameters without building any: what the geometry
+/// budget charges before projection(), minkowski(), hull() and resize() tessellate. The
+/// points are of the same order.
+double tessellatedFaces(const ir::Node &n, const ir::Scene &scene);
 
 /// Builtin function by name, or null.
 BuiltinFunction findBuiltinFunction(Symbol name);

@@ -46,6 +46,7 @@ ir::Scene importScadSource(const std::string &source, const std::string &virtual
         EvalLimits limits;
         limits.maxSteps = opts.maxSteps;
         limits.maxLiveElements = opts.maxElements;
+        limits.maxGeometryWork = opts.maxGeometry;
         Evaluator evaluator(diag, limits);
         evaluator.setProgress(opts.progress);
         evaluator.setTime(opts.time);

@@ -18,6 +18,11 @@ constexpr int64_t kDefaultMaxSteps = 30'000'000;
 /// Default cap on vector elements alive at once (about 24 bytes each, so ~200 MB), which also
 /// bounds one comparison's work; --max-elements raises it.
 constexpr int64_t kDefaultMaxElements = 8'000'000;
+/// Default geometry budget: points and faces the geometry operations make or examine (offset()
+/// points, extrusion slices times points, projection() and minkowski() faces, ...), summed
+/// over the evaluation and estimated from the parameters before any work is done. A realistic
+/// model stays far below it; --max-geometry raises it.
+constexpr int64_t kDefaultMaxGeometry = 100'000'000;
 
 struct ImportOptions {
     /// Extra folders searched by include<>/use<> after the including file's folder.
@@ -29,6 +34,8 @@ struct ImportOptions {
     int64_t maxSteps = kDefaultMaxSteps;
     /// Vector elements alive at once (and elements one comparison may visit).
     int64_t maxElements = kDefaultMaxElements;
+    /// Geometry budget (kDefaultMaxGeometry); 0 = no cap.
+    int64_t maxGeometry = kDefaultMaxGeometry;
     /// Called now and then during evaluation with the steps taken so far (on the evaluating
     /// thread); for a progress display.
     std::function<void(int64_t steps)> progress;

@@ -215,8 +215,8 @@ TEST(Recursion, RunawayTailLoopHitsTheStepBudget) {
 }
 
 TEST(Limits, GeometryWorkCapStopsBigProjectionsAndMinkowskiSums) {
-    // Off by default; the fuzz target sets it. A sphere of 50 x 25 fragments has 1,226 faces: its
-    // shadow, or the boundary of a difference cut from it, examines 1.5 M face pairs
+    // The fuzz target sets it far below the default. A sphere of 50 x 25 fragments has 1,252
+    // faces: its shadow, or the boundary of a difference cut from it, examines 1.6 M face pairs
     EvalLimits limits;
     limits.maxGeometryWork = 100'000;
     const char *shadow = "linear_extrude(1)\n projection() sphere(5, $fn=50);";
@@ -224,8 +224,9 @@ TEST(Limits, GeometryWorkCapStopsBigProjectionsAndMinkowskiSums) {
         evaluateWithLimits(shadow, limits);
         FAIL() << "expected EvalError";
     } catch (const EvalError &e) {
-        EXPECT_NE(std::string(e.what()).find("projection(): more geometry work than the "
-                                             "evaluation's limit of 100000 allows"),
+        EXPECT_NE(std::string(e.what()).find("projection(): about 1.6e+06 face pairs, more "
+                                             "than the 99950 left of the geometry budget of "
+                                             "100000 (--max-geometry N raises it"),
                   std::string::npos)
             << e.what();
         EXPECT_EQ(e.loc().toString(), "limits.scad:2:2");
