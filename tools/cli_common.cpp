@@ -80,6 +80,11 @@ void SceneArgs::addTo(CLI::App &cmd, Positional positional) {
               "Cap on .scad vector elements alive at once (about 24 bytes each), which also "
               "bounds one comparison of vectors",
               int64_t{1}, int64_t{1} << 40);
+    addNumber(cmd, "--max-geometry", maxGeometry,
+              "Cap on the points and faces .scad geometry operations make or examine "
+              "(offset, extrusions, hull, minkowski, projection, round fragments), estimated "
+              "before the work; 0 = no cap",
+              decltype(maxGeometry){0}, std::numeric_limits<decltype(maxGeometry)>::max());
     cmd.add_option("-e,--environment", environment,
                    "What rays leaving the scene see: none (the background colour), studio (a "
                    "grey gradient sky) or an equirectangular image file (.exr, .hdr; top row "
@@ -91,8 +96,9 @@ void SceneArgs::addTo(CLI::App &cmd, Positional positional) {
 }
 
 std::vector<std::string> SceneArgs::optionArguments() const {
-    std::vector<std::string> args = {"--max-steps", std::to_string(maxSteps), "--max-elements",
-                                     std::to_string(maxElements)};
+    std::vector<std::string> args = {"--max-steps",    std::to_string(maxSteps),
+                                     "--max-elements", std::to_string(maxElements),
+                                     "--max-geometry", std::to_string(maxGeometry)};
     for (const std::string &d : defines) args.insert(args.end(), {"-D", d});
     for (const std::string &l : libraries) args.insert(args.end(), {"-L", l});
     if (!facets.empty()) args.insert(args.end(), {"--facets", facets});
@@ -112,6 +118,7 @@ LoadOptions SceneArgs::loadOptions(bool quiet) const {
     lo.quiet = quiet;
     lo.maxSteps = maxSteps;
     lo.maxElements = maxElements;
+    lo.maxGeometry = maxGeometry;
     lo.libraryPaths = libraries;
     for (const auto &d : defines) lo.defines.push_back(parseDefine(d));
     auto mode = ir::parseFacetMode(facets.empty() ? "auto" : facets);
@@ -190,6 +197,7 @@ ir::Scene loadScene(const std::string &path, DiagnosticSink &diag, const LoadOpt
         io.defines = opts.defines;
         io.maxSteps = opts.maxSteps;
         io.maxElements = opts.maxElements;
+        io.maxGeometry = opts.maxGeometry;
         io.time = opts.time;
         if (!opts.quiet && isatty(STDERR_FILENO)) io.progress = evaluationProgress();
         struct ClearAtEnd {

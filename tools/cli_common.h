@@ -34,6 +34,7 @@ struct LoadOptions {
     ir::FacetMode facets = ir::FacetMode::Auto;
     int64_t maxSteps = scad::kDefaultMaxSteps;  ///< .scad evaluation step cap; 0 = none
     int64_t maxElements = scad::kDefaultMaxElements;  ///< .scad vector elements alive at once
+    int64_t maxGeometry = scad::kDefaultMaxGeometry;  ///< .scad geometry budget; 0 = none
     /// `-e`: empty (the file type's default: the studio sky for glTF, none otherwise), "none",
     /// "studio" or an equirectangular image file; `--env-rotate` degrees about +Z.
     std::string environment;
@@ -53,6 +54,7 @@ struct SceneArgs {
     std::string facets;  ///< as given; empty when not given (auto)
     int64_t maxSteps = scad::kDefaultMaxSteps;
     int64_t maxElements = scad::kDefaultMaxElements;
+    int64_t maxGeometry = scad::kDefaultMaxGeometry;
     std::string environment;  ///< -e as given
     double environmentRotate = 0;
 
