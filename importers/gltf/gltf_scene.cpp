@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <set>
 #include <tuple>
 
 #include "core/math/float_util.h"
@@ -325,13 +326,22 @@ class SceneBuilder {
         return out;
     }
 
-    /// One Primitive child per glTF primitive that has triangles to show.
+    /// One Primitive child per glTF primitive that has triangles to show. Primitives that
+    /// draw the same IR mesh in the same glTF material (built from the same accessors, indices
+    /// and mode) are one surface drawn again in the same place: it is placed once, since each
+    /// copy would cost every ray that reaches it (500,000 copies of a triangle: minutes).
     void addPrimitives(ir::Node &parent, int meshIndex, const Pose &pose,
-                       const std::string &) {
+                       const std::string &path) {
         const tinygltf::Mesh &mesh = model_.meshes[static_cast<size_t>(meshIndex)];
+        std::set<std::pair<int, int>> placed;
+        size_t repeated = 0;
         for (size_t p = 0; p < mesh.primitives.size(); ++p) {
             int id = meshFor(static_cast<size_t>(meshIndex), p, pose);
             if (id < 0) continue;
+            if (!placed.emplace(id, mesh.primitives[p].material).second) {
+                ++repeated;
+                continue;
+            }
             std::string primPath =
                 jsonPath("meshes", static_cast<size_t>(meshIndex)) + jsonPath(".primitives", p);
             int material;
@@ -348,6 +358,11 @@ class SceneBuilder {
             prim->label = "mesh '" + scene_.meshes[static_cast<size_t>(id)]->name + "'";
             parent.children.push_back(std::move(prim));
         }
+        if (repeated > 0 && repeatedReported_.insert(meshIndex).second)
+            ctx_.warning(path + ": " + jsonPath("meshes", static_cast<size_t>(meshIndex)) +
+                         " has " + std::to_string(repeated) +
+                         " primitive(s) repeating an earlier one (the same accessors, indices, "
+                         "mode and material); each surface is drawn once");
     }
 
     /// The IR mesh of a glTF (mesh, primitive) in a pose, loaded on first use and shared by
@@ -768,6 +783,7 @@ class SceneBuilder {
     std::vector<char> visited_;
     std::vector<std::vector<int>> meshIds_;  ///< IR mesh per (mesh, primitive); -1 = none
     std::map<PrimitiveKey, int> sharedMeshes_;
+    std::set<int> repeatedReported_;  ///< glTF meshes whose repeated primitives were reported
     /// IR mesh per (mesh, primitive, morph weights, skin) for posed meshes
     std::map<std::tuple<size_t, size_t, std::vector<double>, int>, int> posedMeshes_;
     Poser poser_{ctx_};
