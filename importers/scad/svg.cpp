@@ -31,6 +31,11 @@ constexpr double kOpenPathDistance = 0.1;
 constexpr double kInchToMm = 25.4;
 
 struct TooManyPoints {};
+/// A stroked line whose coordinates or width, scaled for Clipper, leave its integer range.
+struct StrokeOutOfRange {};
+
+/// Clipper's range for exact arithmetic (hiRange, 2^62 - 1).
+constexpr double kClipperRange = 4611686018427387903.0;
 
 using Path = std::vector<Vec2>;
 using PathList = std::vector<Path>;
@@ -300,14 +305,23 @@ class Attrs {
 
 /// A line widened by the element's stroke: libsvg's offset_path.
 void strokePath(PathList &out, const Path &path, const Attrs &attrs) {
+    // Scaled coordinates (and the widened line) must stay in Clipper's range: converting a
+    // larger double to its integers is undefined
+    double halfWidth = attrs.strokeWidth() * kStrokeScale / 2;
+    auto inRange = [](double v) { return std::abs(v) <= kClipperRange / 4; };
+    if (!inRange(halfWidth)) throw StrokeOutOfRange{};
     ClipperLib::Path line;
-    for (Vec2 v : path)
+    for (Vec2 v : path) {
+        if (!inRange(v.x * kStrokeScale + halfWidth) || !inRange(v.y * kStrokeScale + halfWidth) ||
+            !inRange(v.x * kStrokeScale - halfWidth) || !inRange(v.y * kStrokeScale - halfWidth))
+            throw StrokeOutOfRange{};
         line.emplace_back(static_cast<ClipperLib::cInt>(v.x * kStrokeScale),
                           static_cast<ClipperLib::cInt>(v.y * kStrokeScale));
+    }
     ClipperLib::ClipperOffset co;
     co.AddPath(line, ClipperLib::jtMiter, attrs.lineCap());
     ClipperLib::Paths result;
-    co.Execute(result, attrs.strokeWidth() * kStrokeScale / 2);
+    co.Execute(result, halfWidth);
     for (const auto &p : result) {
         Path q;
         for (const auto &pt : p) q.push_back({pt.X / kStrokeScale, pt.Y / kStrokeScale});
@@ -790,6 +804,9 @@ bool read(const std::string &bytes, const std::string &path, const Options &opts
         reader.visit(xmlDocGetRootElement(doc), Matrix(), true);
     } catch (const TooManyPoints &) {
         error = "more than " + std::to_string(kMaxPoints) + " points in '" + path + "'";
+        return false;
+    } catch (const StrokeOutOfRange &) {
+        error = "a stroked line of '" + path + "' reaches beyond the range of 2D geometry";
         return false;
     }
 

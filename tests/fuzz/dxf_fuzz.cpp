@@ -15,7 +15,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         rt::scad::dxf::read(bytes, "in.dxf", opts, d, [](const std::string &) {});
         for (const auto &path : d.paths)
             for (auto i : path.indices)
-                if (i >= d.points.size()) rt::fuzz::fail("path index out of range");
+                if (i < 0 || static_cast<size_t>(i) >= d.points.size())
+                    rt::fuzz::fail("path index out of range");
         std::vector<rt::scad::Outline> outlines = rt::scad::dxf::outlines(d);
         double value = 0, x = 0, y = 0;
         bool unsupported = false;

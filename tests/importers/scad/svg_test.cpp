@@ -123,6 +123,21 @@ TEST_F(Svg, TextAndUseAreLeftOutAndNamed) {
     EXPECT_EQ(d.skipped[1].first, "use");
 }
 
+TEST_F(Svg, StrokesBeyondClipperRangeAreErrors) {
+    // Scaled for Clipper's integers, 1e92 leaves their range: its conversion was undefined
+    for (const char *body :
+         {"<path d=\"M1e92,45 L100,45\" style=\"stroke-width:2\"/>",
+          "<path d=\"M0,0 L1,0\" style=\"stroke-width:1e300\"/>"}) {
+        SCOPED_TRACE(body);
+        svg::Drawing d;
+        std::string error;
+        std::string text = std::string("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"72\" "
+                                       "height=\"72\">") + body + "</svg>";
+        EXPECT_FALSE(svg::read(text, "big.svg", {}, d, error));
+        EXPECT_NE(error.find("beyond the range of 2D geometry"), std::string::npos) << error;
+    }
+}
+
 TEST_F(Svg, BrokenFilesAreErrors) {
     svg::Drawing d;
     std::string error;
