@@ -32,15 +32,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// Output folder (created, or one that holds earlier output) and the path of one output file
-/// in it, named by the scene's safe file stem.
+/// Output folder (created; requireOutputFolder has accepted it) and the path of one output
+/// file in it, named by the scene's safe file stem.
 struct CheckFiles {
     std::string stem;
     std::filesystem::path dir;
     explicit CheckFiles(const CheckArgs &a) {
         stem = safeFileStem(a.scene.input);
         dir = checkDir(a);
-        requireOutputFolder(dir.string(), "_check.json", "-o");
         fs::create_directories(dir);
     }
     std::string operator()(const std::string &suffix) const { return (dir / (stem + suffix)).string(); }
@@ -337,30 +336,37 @@ CheckResult runOneCheck(const CheckArgs &a, CsvRow &csv) {
     return a.openscad ? checkGeometry(a, csv) : checkPovray(a, csv);
 }
 
-/// `check`: the JSON figures of an earlier run go first, so a check that fails leaves its
-/// error there instead (what `report --from` shows), never stale figures.
-int runCheck(const CheckArgs &a) {
+/// Accepts the output folder (requireOutputFolder) and replaces the JSON figures of an earlier
+/// run by the record of a check that has not finished, which it returns: a check that fails or
+/// is interrupted never leaves stale figures (what `report --from` shows), and the folder keeps
+/// the mark of a check's output.
+CheckResult startCheck(const CheckArgs &a) {
     std::string dir = checkDir(a);
-    // Before anything is written there, the failure's figures included
     requireOutputFolder(dir, "_check.json", "-o");
-    std::string json = checkJsonPath(dir, a.scene.input, a.openscad);
-    std::error_code ec;
-    fs::remove(json, ec);
+    CheckResult failed;
+    failed.scene = a.scene.input;
+    failed.referee = a.openscad ? "openscad" : "povray";
+    failed.error = "the check did not finish";
+    failed.width = a.width;
+    failed.height = a.height;
+    failed.dir = dir;
+    fs::create_directories(dir);
+    pov::writeTextFile(checkJsonPath(dir, a.scene.input, a.openscad), checkResultJson(failed));
+    return failed;
+}
+
+int runCheck(const CheckArgs &a) {
+    CheckResult failed = startCheck(a);
+    std::string json = checkJsonPath(failed.dir, a.scene.input, a.openscad);
     CsvRow csv;
     CheckResult r;
     try {
         r = runOneCheck(a, csv);
     } catch (const std::exception &e) {
-        CheckResult failed;
-        failed.scene = a.scene.input;
-        failed.referee = a.openscad ? "openscad" : "povray";
         failed.error = errorMessage(e);
-        failed.width = a.width;
-        failed.height = a.height;
-        failed.dir = dir;
         // Best effort: the error itself is what the user must see
         try {
-            if (fs::is_directory(dir)) pov::writeTextFile(json, checkResultJson(failed));
+            pov::writeTextFile(json, checkResultJson(failed));
         } catch (const std::exception &) {
         }
         throw;
@@ -397,6 +403,7 @@ std::string checkDir(const CheckArgs &a) {
 }
 
 CheckResult checkScene(const CheckArgs &a) {
+    startCheck(a);
     CsvRow unused;
     return runOneCheck(a, unused);
 }

@@ -80,7 +80,9 @@ if ! command -v povray >/dev/null; then
 else
     # Two small scenes, and one of them under names that a shell, a list or POV-Ray could
     # misread: a space, a '#' and a leading '-'
-    for name in "my part" "a#b" "-x"; do cp "$src/scenes/crosscheck/primitives.scad" "$work/$name.scad"; done
+    for name in "my part" "a#b" "-x"; do
+        printf 'sphere(4, $fn=24);\ntranslate([7, 0, 0]) cube(5, center=true);\n' >"$work/$name.scad"
+    done
     printf '%s\n' "# small scenes" "$src/scenes/crosscheck/primitives.scad" "" \
         "$src/scenes/crosscheck/csg_union.scad" "my part.scad" "  a#b.scad" "-x.scad" >"$work/scenes.txt"
     # The report exits 1 when a scene differs: the summary's lines are what is checked here
