@@ -255,18 +255,29 @@ PovReference renderPovReference(const ir::Scene &scene, const std::string &dir,
     ini.height = height;
     ini.supersample = supersample;
     ini.threads = threads;
-    pov::exportPov(scene, (r / (stem + ".pov")).string(), sceneName, ini);
+    // Kept beside the check's other files: the export, the picture, the log (also when POV-Ray
+    // failed, whose log the error points to). The run's own povray.conf goes with the folder.
+    auto keepFiles = [&] {
+        for (const auto &entry : fs::directory_iterator(r)) {
+            if (!entry.is_regular_file()) continue;
+            fs::path target = fs::path(dir) / entry.path().filename();
+            refuseOverwritingInput(target.string());
+            fs::rename(entry.path(), target);
+        }
+    };
     PovReference ref;
-    ref.run = pov::runPovRay(run.path(), stem + ".ini", threads, timeout);
-    ref.image = downsample(readImage((r / ini.outputFile).string()), supersample);
-    // Kept beside the check's other files: the export, the picture, the log. The run's own
-    // povray.conf goes with the folder.
-    for (const auto &entry : fs::directory_iterator(r)) {
-        if (!entry.is_regular_file()) continue;
-        fs::path target = fs::path(dir) / entry.path().filename();
-        refuseOverwritingInput(target.string());
-        fs::rename(entry.path(), target);
+    try {
+        pov::exportPov(scene, (r / (stem + ".pov")).string(), sceneName, ini);
+        ref.run = pov::runPovRay(run.path(), stem + ".ini", threads, timeout);
+    } catch (...) {
+        try {
+            keepFiles();
+        } catch (const std::exception &) {
+        }
+        throw;
     }
+    ref.image = downsample(readImage((r / ini.outputFile).string()), supersample);
+    keepFiles();
     return ref;
 }
 
