@@ -34,8 +34,7 @@ constexpr size_t kMaxSegments = 500'000;
 class Grid {
   public:
     std::vector<int> &align(double &x, double &y) {
-        int64_t ix = static_cast<int64_t>(std::round(x / kGridCoarse));
-        int64_t iy = static_cast<int64_t>(std::round(y / kGridCoarse));
+        int64_t ix = index(x), iy = index(y);
         if (db_.find(Key{ix, iy}) == db_.end()) {
             int dist = 10;
             // ix/iy move as closer points are found, and the scan's bounds and later
@@ -63,6 +62,14 @@ class Grid {
     }
 
   private:
+    /// The grid index of a coordinate. One beyond 2^62 grid steps (or NaN) is clamped: its
+    /// conversion would be undefined, and such a point cannot meet another anyway.
+    static int64_t index(double v) {
+        constexpr double kMaxIndex = 4611686018427387904.0;  // 2^62
+        double g = std::round(v / kGridCoarse);
+        if (std::isnan(g)) return 0;
+        return static_cast<int64_t>(std::clamp(g, -kMaxIndex, kMaxIndex));
+    }
     struct Key {
         int64_t x, y;
         bool operator==(const Key &o) const { return x == o.x && y == o.y; }
