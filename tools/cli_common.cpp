@@ -221,7 +221,7 @@ ir::Scene loadScene(const std::string &path, DiagnosticSink &diag, const LoadOpt
     }
     scene.settings.environment = std::move(env);
     // Facets first: the automatic camera frames the solids as they will be drawn
-    ir::applyFacets(scene, opts.facets, diag);
+    meshing::applyFacets(scene, opts.facets, diag);
     ir::CompleteOptions co;
     co.framing = ext != ".scad" ? ir::Framing::Viewer : ir::Framing::OpenScad;
     co.aspect = opts.aspect;

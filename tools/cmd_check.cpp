@@ -13,7 +13,7 @@
 
 #include "core/image/image_compare.h"
 #include "core/image/image_io.h"
-#include "core/ir/facets.h"
+#include "core/ir/facet_mode.h"
 #include "core/materials/pbr_material.h"
 #include "core/render/geometry_buffer.h"
 #include "core/render/render_scene.h"

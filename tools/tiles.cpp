@@ -9,7 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "core/ir/facets.h"
+#include "core/ir/facet_mode.h"
 #include "core/ir/ir_dump.h"
 
 namespace rt::cli {

@@ -192,7 +192,7 @@ ObjectSurface Cone::surface(const Vec3 &p, int face) const {
 
 ConvexPolytope::ConvexPolytope(const ir::PolytopePrim &p) {
     std::vector<int> faceOfPlane;
-    planes_ = ir::polytopePlanes(p, &faceOfPlane);
+    planes_ = meshing::polytopePlanes(p, &faceOfPlane);
     for (const Vec3 &v : p.vertices) bounds_ = unionBounds(bounds_, v);
     if (planes_.size() < kPolytopeFaceBvhMin) return;
     // Each face is convex and planar: a fan of triangles, wound as the face (outward)
@@ -242,7 +242,7 @@ bool ConvexPolytope::intersectFaces(const Ray &r, PrimitiveSpan *span) const {
     return true;
 }
 
-bool ConvexPolytope::planeCrossing(const ir::FacePlane &pl, const Ray &r, double *dist,
+bool ConvexPolytope::planeCrossing(const meshing::FacePlane &pl, const Ray &r, double *dist,
                                    double *rate) {
     // Signed distance of the origin outside the plane, and the rate the ray closes on it; an
     // axis plane reads its coordinate directly, as Box does
@@ -291,7 +291,7 @@ bool ConvexPolytope::inside(const Vec3 &p) const {
 }
 
 ObjectSurface ConvexPolytope::surface(const Vec3 &p, int face) const {
-    const ir::FacePlane &pl = planes_[face];
+    const meshing::FacePlane &pl = planes_[face];
     if (pl.axis >= 0) {
         // The face coordinate is exact; the others carry the error of o + t d
         Vec3 refined = p;

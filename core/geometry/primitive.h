@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-#include "core/ir/facets.h"
+#include "core/meshing/facets.h"
 #include "core/ir/node.h"
 #include "core/math/bounds3.h"
 #include "core/math/float_util.h"
@@ -162,11 +162,11 @@ class ConvexPolytope final : public Primitive {
   private:
     /// Signed distance of the ray's origin outside the plane and the rate the ray closes on
     /// it; false when the ray runs parallel to it.
-    static bool planeCrossing(const ir::FacePlane &pl, const Ray &r, double *dist, double *rate);
+    static bool planeCrossing(const meshing::FacePlane &pl, const Ray &r, double *dist, double *rate);
     bool intersectPlanes(const Ray &r, PrimitiveSpan *span) const;
     bool intersectFaces(const Ray &r, PrimitiveSpan *span) const;
 
-    std::vector<ir::FacePlane> planes_;
+    std::vector<meshing::FacePlane> planes_;
     Bounds3 bounds_;
     /// Large polytopes (hulls of thousands of faces): the faces as a closed triangle mesh with
     /// its BVH, and the plane of each triangle.

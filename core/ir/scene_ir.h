@@ -15,7 +15,7 @@
 
 #include "core/ir/camera.h"
 #include "core/ir/environment.h"
-#include "core/ir/facets.h"
+#include "core/ir/facet_mode.h"
 #include "core/ir/light.h"
 #include "core/ir/material.h"
 #include "core/ir/mesh.h"

@@ -2,15 +2,17 @@
 // OpenSCAD 2021.01's tessellation of spheres, cylinders and cones (primitives.cc,
 // calc.cc), and the pass that swaps them (and rotate_extrude's solids) in for the analytic
 // primitives.
-#include "core/ir/facets.h"
+#include "core/meshing/facets.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "core/ir/revolved_mesh.h"
+#include "core/meshing/revolved_mesh.h"
 #include "core/ir/scene_ir.h"
 
-namespace rt::ir {
+namespace rt::meshing {
+
+using namespace ir;
 
 namespace {
 
@@ -31,21 +33,6 @@ std::vector<int> ring(int first, int n, bool reversed) {
 }
 
 }  // namespace
-
-const char *facetModeName(FacetMode mode) {
-    switch (mode) {
-        case FacetMode::Smooth: return "smooth";
-        case FacetMode::OpenScad: return "openscad";
-        case FacetMode::Auto: return "auto";
-    }
-    return "?";
-}
-
-std::optional<FacetMode> parseFacetMode(std::string_view text) {
-    for (FacetMode m : {FacetMode::Smooth, FacetMode::OpenScad, FacetMode::Auto})
-        if (text == facetModeName(m)) return m;
-    return std::nullopt;
-}
 
 int openscadFragments(double r, const Fragments &f) {
     if (r < kGridFine || !std::isfinite(f.fn)) return 3;
@@ -160,20 +147,6 @@ bool drawsFaceted(FacetMode mode, const Fragments &f, int fragments) {
     return false;
 }
 
-std::string FacetStats::describe() const {
-    std::string s = std::string(facetModeName(mode)) + ": ";
-    switch (mode) {
-        case FacetMode::Smooth: s += "every round solid exactly round"; break;
-        case FacetMode::OpenScad: s += "round solids as OpenSCAD tessellates them"; break;
-        case FacetMode::Auto:
-            s += "OpenSCAD's polygons where $fn gives at most " +
-                 std::to_string(kAutoFacetMaxFragments) + " fragments, round otherwise";
-            break;
-    }
-    return s + " (" + std::to_string(faceted) + " faceted, " + std::to_string(smooth) +
-           " round)";
-}
-
 namespace {
 
 /// A solid of revolution drawn as OpenSCAD's rotate_extrude mesh, added to the scene.
@@ -247,4 +220,4 @@ void applyFacets(Scene &scene, FacetMode mode, DiagnosticSink &diag) {
     scene.stats.facets = stats;
 }
 
-}  // namespace rt::ir
+}  // namespace rt::meshing

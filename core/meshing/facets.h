@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // OpenSCAD 2021.01's tessellation of spheres, cylinders and cones as exact convex polytopes,
-// and the `--facets` pass that decides which primitives are drawn faceted.
+// and the `--facets` pass that decides which primitives are drawn faceted (core/ir/facet_mode.h).
 #pragma once
 
 #include <optional>
@@ -8,24 +8,20 @@
 #include <string_view>
 
 #include "core/ir/diagnostics.h"
+#include "core/ir/facet_mode.h"
 #include "core/ir/node.h"
 
 namespace rt::ir {
-
 struct Scene;
+}
 
-/// How round primitives are drawn.
-enum class FacetMode {
-    Smooth,    ///< exactly round (analytic sphere, cylinder, cone)
-    OpenScad,  ///< as OpenSCAD 2021.01 tessellates them, from $fn/$fa/$fs
-    Auto,      ///< OpenSCAD's polygon where a small $fn was given, else smooth
-};
+namespace rt::meshing {
 
-/// `auto` draws a primitive faceted when `$fn` was set (it is 0 unless the file sets it) and
-/// gives at most this many fragments: hexagonal nut traps, square and octagonal holes and the
-/// like are meant as polygons, while `$fn=32` and above, or the $fa/$fs defaults (5 fragments
-/// for a sphere of radius 1), only approximate a round shape.
-constexpr int kAutoFacetMaxFragments = 12;
+using ir::FacetMode;
+using ir::Fragments;
+using ir::PolytopePrim;
+using ir::CylinderPrim;
+using ir::Scene;
 
 /// OpenSCAD's GRID_FINE (2^-20): circles smaller than this get 3 fragments, and extrusions of
 /// outlines smaller than this the fewest slices.
@@ -34,9 +30,6 @@ constexpr double kGridFine = 1.0 / (1 << 20);
 /// A polytope larger than this (faces) stays smooth, with a warning: `$fn=100000` would
 /// otherwise make a sphere of 5e9 faces.
 constexpr size_t kMaxPolytopeFaces = 1'000'000;
-
-const char *facetModeName(FacetMode mode);
-std::optional<FacetMode> parseFacetMode(std::string_view text);
 
 /// OpenSCAD 2021.01's fragment count for a circle of radius r (Calc::get_fragments_from_r):
 /// 3 below 2^-20; max(trunc($fn), 3) when $fn > 0; else ceil(max(min(360/$fa, 2 pi r/$fs), 5)).
@@ -65,18 +58,10 @@ std::vector<FacePlane> polytopePlanes(const PolytopePrim &p,
 /// Whether `mode` draws a primitive with these $-values and fragment count faceted.
 bool drawsFaceted(FacetMode mode, const Fragments &f, int fragments);
 
-/// What the pass did, for the render plan.
-struct FacetStats {
-    FacetMode mode = FacetMode::Auto;
-    int faceted = 0;  ///< spheres, cylinders, tori and lathes drawn as OpenSCAD's polygons
-    int smooth = 0;   ///< the same drawn round
-    std::string describe() const;
-};
-
 /// Replaces the spheres and cylinders of `scene` that `mode` draws faceted by OpenSCAD's
 /// polytopes, and its tori and lathes (rotate_extrude) by OpenSCAD's meshes added to
 /// scene.meshes; records the counts in scene.stats.facets. A torus or lathe is faceted with
 /// its own `fragments` (never when 0); `auto` asks for $fn at the rotate_extrude.
 void applyFacets(Scene &scene, FacetMode mode, DiagnosticSink &diag);
 
-}  // namespace rt::ir
+}  // namespace rt::meshing

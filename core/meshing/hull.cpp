@@ -2,7 +2,7 @@
 // Quickhull (Barber, Dobkin and Huhdanpaa 1996) in 3D with a distance tolerance scaled to the
 // input, and the point gathering for OpenSCAD 2021.01's hull() (GeometryEvaluator::applyHull,
 // CGALUtils::applyHull: the vertices of every child's geometry, hulled together).
-#include "core/ir/hull.h"
+#include "core/meshing/hull.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -13,12 +13,14 @@
 #include <optional>
 #include <unordered_map>
 
-#include "core/ir/facets.h"
+#include "core/meshing/facets.h"
 #include "core/ir/prism.h"
-#include "core/ir/revolved_mesh.h"
+#include "core/meshing/revolved_mesh.h"
 #include "core/ir/scene_ir.h"
 
-namespace rt::ir {
+namespace rt::meshing {
+
+using namespace ir;
 
 const char *hullKindName(HullKind kind) {
     switch (kind) {
@@ -802,4 +804,4 @@ bool gatherConvexParts(const Node &node, const Scene &scene, DiagnosticSink &dia
     return ConvexPartGatherer(scene, diag, op, solid).gather(node, Mat4(), out);
 }
 
-}  // namespace rt::ir
+}  // namespace rt::meshing

@@ -9,8 +9,14 @@
 #include "core/ir/node.h"
 
 namespace rt::ir {
-
 struct Scene;
+}
+
+namespace rt::meshing {
+
+using ir::Node;
+using ir::PolytopePrim;
+using ir::Scene;
 
 /// Points closer than this many units in the last place of the input's coordinate scale
 /// (max|x| + max|y| + max|z|, as in Barber et al.'s qhull and Lloyd's quickhull3d) count as
@@ -80,4 +86,4 @@ bool gatherConvexParts(const Node &node, const Scene &scene, DiagnosticSink &dia
                        const std::function<void(const Node &, const Mat4 &)> &solid,
                        const char *op = "minkowski()");
 
-}  // namespace rt::ir
+}  // namespace rt::meshing

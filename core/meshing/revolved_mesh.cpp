@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // OpenSCAD's rotate_extrude tessellation (GeometryEvaluator.cc rotatePolygon, 2021.01) and the
 // triangulation of a profile with holes for the end faces of a partial turn.
-#include "core/ir/revolved_mesh.h"
+#include "core/meshing/revolved_mesh.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,9 @@
 
 #include "core/math/degree_trig.h"
 
-namespace rt::ir {
+namespace rt::meshing {
+
+using namespace ir;
 
 namespace {
 
@@ -250,4 +252,4 @@ std::vector<Vec3> openscadRevolvePoints(const std::vector<ProfileOutline> &outli
     return openscadRevolve(outlines, angle, fragments).positions;
 }
 
-}  // namespace rt::ir
+}  // namespace rt::meshing

@@ -7,7 +7,10 @@
 #include "core/ir/mesh.h"
 #include "core/ir/node.h"
 
-namespace rt::ir {
+namespace rt::meshing {
+
+using ir::Mesh;
+using ir::ProfileOutline;
 
 /// OpenSCAD 2021.01's rotate_extrude of profile outlines (GeometryEvaluator.cc rotatePolygon):
 /// each outline's vertices form rings, a point (r, z) at ring angle a going to
@@ -32,4 +35,4 @@ std::vector<int> profileParents(const std::vector<ProfileOutline> &outlines);
 std::vector<std::array<std::pair<int, int>, 3>> triangulateProfile(
     const std::vector<ProfileOutline> &outlines);
 
-}  // namespace rt::ir
+}  // namespace rt::meshing

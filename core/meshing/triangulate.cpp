@@ -4,13 +4,13 @@
 // a monotone-region triangulation, then edge flips towards the constrained Delaunay
 // triangulation (libtess2 with TESS_CONSTRAINED_DELAUNAY_TRIANGLES, called from
 // PolysetUtils::tessellate_faces / GeometryUtils::tessellatePolygonWithHoles).
+#include "core/meshing/triangulate.h"
+
 #include <cmath>
 #include <cstdint>
 #include <unordered_map>
 
-#include "importers/mesh/mesh_reader.h"
-
-namespace rt::meshio {
+namespace rt::meshing {
 
 namespace {
 
@@ -294,4 +294,4 @@ bool triangulatePolygon(const std::vector<Vec3> &positions, const std::vector<ui
     return true;
 }
 
-}  // namespace rt::meshio
+}  // namespace rt::meshing

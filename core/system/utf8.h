@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
-// UTF-8 helpers: OpenSCAD strings are indexed, iterated and measured in code points.
+// UTF-8 helpers: OpenSCAD strings are indexed, iterated and measured in code points, and glTF
+// URIs decode %-escapes to them.
 #pragma once
 
 #include <cstddef>
 #include <string>
 #include <vector>
 
-namespace rt::scad {
+namespace rt {
 
 /// Byte length of the code point starting with byte `c` (1 for stray continuation bytes).
 inline size_t utf8SequenceLength(unsigned char c) {
@@ -51,4 +52,23 @@ inline long utf8Decode(const std::string &ch) {
     return cp;
 }
 
-}  // namespace rt::scad
+/// Appends the UTF-8 encoding of a code point.
+inline void appendUtf8(std::string &out, unsigned cp) {
+    if (cp < 0x80) {
+        out += static_cast<char>(cp);
+    } else if (cp < 0x800) {
+        out += static_cast<char>(0xC0 | (cp >> 6));
+        out += static_cast<char>(0x80 | (cp & 0x3F));
+    } else if (cp < 0x10000) {
+        out += static_cast<char>(0xE0 | (cp >> 12));
+        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (cp & 0x3F));
+    } else {
+        out += static_cast<char>(0xF0 | (cp >> 18));
+        out += static_cast<char>(0x80 | ((cp >> 12) & 0x3F));
+        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (cp & 0x3F));
+    }
+}
+
+}  // namespace rt

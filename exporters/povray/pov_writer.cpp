@@ -14,7 +14,8 @@
 #include <stdexcept>
 
 #include "core/image/image_io.h"
-#include "core/ir/revolved_mesh.h"
+#include "core/meshing/facets.h"
+#include "core/meshing/revolved_mesh.h"
 #include "core/materials/pbr_material.h"
 #include "core/materials/texture_sampler.h"
 #include "core/math/degree_trig.h"
@@ -107,7 +108,7 @@ std::string revolvedShape(const ir::PrimShape &shape, const std::string &pad) {
         solid = "torus { " + num(t->major) + ", " + num(t->minor) + " sturm rotate x*90";
         if (!full) solid += " }";
     } else {
-        std::vector<int> parents = ir::profileParents(l->outlines);
+        std::vector<int> parents = meshing::profileParents(l->outlines);
         std::vector<std::string> regions;
         for (size_t k = 0; k < l->outlines.size(); ++k)
             if (parents[k] < 0)
@@ -603,7 +604,7 @@ class Writer {
                 // solid in CSG with no mesh parity tests
                 shape = "intersection {";
                 std::string pad(4 * (indent + 1), ' ');
-                for (const auto &pl : ir::polytopePlanes(*p))
+                for (const auto &pl : meshing::polytopePlanes(*p))
                     shape += "\n" + pad + "plane { " + vec(pl.normal) + ", " + num(pl.offset) + " }";
                 shape += "\n" + pad;
             }

@@ -10,7 +10,7 @@
 
 #include "core/system/input_file.h"
 #include "importers/gltf/gltf_internal.h"
-#include "importers/scad/lexer.h"  // appendUtf8
+#include "core/system/utf8.h"
 
 namespace rt::gltf::detail {
 
@@ -72,7 +72,7 @@ size_t readString(std::string_view text, size_t at, std::string &out) {
                     int h = hexValue(text[i]);
                     cp = cp * 16 + static_cast<uint32_t>(h < 0 ? 0 : h);
                 }
-                scad::appendUtf8(out, cp);  // surrogate pairs are left as they are (only compared)
+                appendUtf8(out, cp);  // surrogate pairs are left as they are (only compared)
                 break;
             }
             default:

@@ -26,12 +26,6 @@ ir::Mesh readOff(const std::string &path, DiagnosticSink &diag);
 /// Dispatches on the extension (.stl, .off, case-insensitive).
 ir::Mesh readMeshFile(const std::string &path, DiagnosticSink &diag);
 
-/// Triangulates a planar (or nearly planar) simple polygon given by vertex indices into
-/// `positions`, keeping its orientation; ear clipping in the plane of its Newell normal.
-/// Returns false (and leaves `out` unchanged) for degenerate polygons.
-bool triangulatePolygon(const std::vector<Vec3> &positions, const std::vector<uint32_t> &polygon,
-                        std::vector<std::array<uint32_t, 3>> &out);
-
 /// Merges vertices at identical positions (exact comparison, -0 equal to +0), drops positions
 /// no triangle uses and triangles left with a repeated corner; normals and texture coordinates
 /// of the first merged vertex are kept. Returns the number of triangles dropped.

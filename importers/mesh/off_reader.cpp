@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "importers/mesh/mesh_reader.h"
+#include "core/meshing/triangulate.h"
 #include "importers/mesh/reader_support.h"
 
 namespace rt::meshio {
@@ -222,7 +223,7 @@ class OffParser {
             mesh.triangles.push_back({polygon[0], polygon[1], polygon[2]});
             return true;
         }
-        return triangulatePolygon(mesh.positions, polygon, mesh.triangles);
+        return meshing::triangulatePolygon(mesh.positions, polygon, mesh.triangles);
     }
 
     const std::string &path_;

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/ir/facets.h"
+#include "core/meshing/facets.h"
 #include "importers/scad/clipper2d.h"
 #include "importers/scad/evaluator.h"
 #include "importers/scad/extrude.h"
@@ -640,11 +640,11 @@ ir::NodePtr Evaluator::hull2d(const ir::Node &children, const ModuleInstantiatio
     if (!hullPoints2d(children, Affine2(), points)) return newNode(ir::NodeKind::Group, inst.loc);
     size_t count = points.size();
     Hull2d h = convexHull2d(std::move(points));
-    if (h.kind != ir::HullKind::Solid) {
+    if (h.kind != meshing::HullKind::Solid) {
         // OpenSCAD keeps an outline without area, which extrudes and draws as nothing
-        if (h.kind != ir::HullKind::Empty && backgroundDepth_ == 0)
+        if (h.kind != meshing::HullKind::Empty && backgroundDepth_ == 0)
             warn(inst.loc, "hull(): the children's " + std::to_string(count) + " 2D points are " +
-                               ir::hullKindName(h.kind) + ", so the hull has no area; left out");
+                               meshing::hullKindName(h.kind) + ", so the hull has no area; left out");
         return newNode(ir::NodeKind::Group, inst.loc);
     }
     Shape2d s;
@@ -657,9 +657,9 @@ ir::NodePtr Evaluator::hull2d(const ir::Node &children, const ModuleInstantiatio
 bool Evaluator::hullPoints2d(const ir::Node &n, const Affine2 &placed, std::vector<Vec2> &out) {
     if (const Shape2d *s = shape2dOf(n)) {
         size_t count = shapePointCount(*s);
-        if (out.size() + count > ir::kMaxHullPoints) {
+        if (out.size() + count > meshing::kMaxHullPoints) {
             warn(s->loc, "hull(): this part gives " + std::to_string(count) +
-                             " points, more than the " + std::to_string(ir::kMaxHullPoints) +
+                             " points, more than the " + std::to_string(meshing::kMaxHullPoints) +
                              " a hull may have; the hull is left out");
             return false;
         }
@@ -682,9 +682,9 @@ bool Evaluator::hullPoints2d(const ir::Node &n, const Affine2 &placed, std::vect
         if (!p) return true;
         size_t count = 0;
         for (const Outline &o : p->outlines) count += o.size();
-        if (out.size() + count > ir::kMaxHullPoints) {
+        if (out.size() + count > meshing::kMaxHullPoints) {
             warn(n.loc, "hull(): this part gives " + std::to_string(count) +
-                            " points, more than the " + std::to_string(ir::kMaxHullPoints) +
+                            " points, more than the " + std::to_string(meshing::kMaxHullPoints) +
                             " a hull may have; the hull is left out");
             return false;
         }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // resize(), minkowski() and projection(): operations OpenSCAD 2021.01 applies to the evaluated
 // geometry of their children (GeometryEvaluator), here computed from the same tessellated
-// points (ir::gatherHullPoints, ir::gatherConvexParts) and Clipper polygon sets.
+// points (meshing::gatherHullPoints, meshing::gatherConvexParts) and Clipper polygon sets.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -11,8 +11,8 @@
 #include <string>
 #include <variant>
 
-#include "core/ir/facets.h"
-#include "core/ir/hull.h"
+#include "core/meshing/facets.h"
+#include "core/meshing/hull.h"
 #include "importers/scad/clipper2d.h"
 #include "importers/scad/evaluator.h"
 #include "importers/scad/projection.h"
@@ -75,7 +75,7 @@ void Evaluator::chargeGeometryWork(const SourceLoc &loc, const std::string &what
 double tessellatedFaces(const ir::Node &n, const ir::Scene &scene) {
     // Only parameters are read: a sphere of $fn = 1e6 would have 5e11 faces to count
     auto fragments = [&](double r) {
-        return static_cast<double>(ir::openscadFragments(r, n.fragments));
+        return static_cast<double>(meshing::openscadFragments(r, n.fragments));
     };
     auto meshTriangles = [&](int index) {
         return index >= 0 && index < static_cast<int>(scene.meshes.size()) && scene.meshes[index]
@@ -155,7 +155,7 @@ ir::NodePtr Evaluator::moduleResize(const ModuleInstantiation &inst, const Frame
         warnIgnored2d(*children);
         chargeGeometryWork(inst.loc, "resize()", tessellatedFaces(*children, scene_));
         std::vector<Vec3> points;
-        if (!ir::gatherHullPoints(*children, scene_, diag_, points, "resize()"))
+        if (!meshing::gatherHullPoints(*children, scene_, diag_, points, "resize()"))
             return newNode(ir::NodeKind::Group, inst.loc);
         if (points.empty()) return children;
         Bounds3 b;
@@ -233,7 +233,7 @@ ir::NodePtr Evaluator::moduleMinkowski(const ModuleInstantiation &inst, const Fr
     auto partsOf = [&](const ir::Node &c, std::vector<Part> &out) {
         std::vector<std::vector<Vec3>> convex;
         std::vector<Part> solids;
-        bool ok = ir::gatherConvexParts(c, scene_, diag_, convex, [&](const ir::Node &n, const Mat4 &m) {
+        bool ok = meshing::gatherConvexParts(c, scene_, diag_, convex, [&](const ir::Node &n, const Mat4 &m) {
             Part p;
             p.solid = &n;
             p.placement = m;
@@ -249,10 +249,10 @@ ir::NodePtr Evaluator::moduleMinkowski(const ModuleInstantiation &inst, const Fr
     };
     auto hullOfSums = [&](const std::vector<Vec3> &p, const std::vector<Vec3> &q,
                           std::vector<Part> &out) {
-        if (p.size() * q.size() > ir::kMaxHullPoints) {
+        if (p.size() * q.size() > meshing::kMaxHullPoints) {
             warn(inst.loc, "minkowski(): a sum of " + std::to_string(p.size()) + " and " +
                                std::to_string(q.size()) + " points is more than the " +
-                               std::to_string(ir::kMaxHullPoints) + " a hull may have; left out");
+                               std::to_string(meshing::kMaxHullPoints) + " a hull may have; left out");
             return false;
         }
         chargeGeometryWork(inst.loc, "minkowski()", static_cast<double>(p.size() * q.size()));
@@ -260,8 +260,8 @@ ir::NodePtr Evaluator::moduleMinkowski(const ModuleInstantiation &inst, const Fr
         pts.reserve(p.size() * q.size());
         for (const Vec3 &a : p)
             for (const Vec3 &b : q) pts.push_back(a + b);
-        ir::HullResult h = ir::convexHull(pts);
-        if (h.kind == ir::HullKind::Solid) out.push_back(Part{nullptr, Mat4(), {std::move(h.polytope.vertices)}});
+        meshing::HullResult h = meshing::convexHull(pts);
+        if (h.kind == meshing::HullKind::Solid) out.push_back(Part{nullptr, Mat4(), {std::move(h.polytope.vertices)}});
         return true;
     };
     auto moved = [](const Part &s, const Vec3 &by) {
@@ -322,8 +322,8 @@ ir::NodePtr Evaluator::moduleMinkowski(const ModuleInstantiation &inst, const Fr
             continue;
         }
         // A single part may still be flat (a sum of flat children): no volume to draw
-        ir::HullResult h = ir::convexHull(p.pieces[0]);
-        if (h.kind != ir::HullKind::Solid) continue;
+        meshing::HullResult h = meshing::convexHull(p.pieces[0]);
+        if (h.kind != meshing::HullKind::Solid) continue;
         ir::NodePtr n = primitive(std::move(h.polytope), inst, f);
         n->fragments = ir::Fragments{};  // fixed points: no $fn/$fa/$fs (nor --facets) applies
         result->children.push_back(std::move(n));

@@ -9,7 +9,7 @@
 #include "core/math/degree_trig.h"
 #include "importers/scad/evaluator.h"
 #include "importers/scad/lexer.h"
-#include "importers/scad/utf8.h"
+#include "core/system/utf8.h"
 
 namespace rt::scad {
 

@@ -6,8 +6,8 @@
 #include <unordered_map>
 #include <variant>
 
-#include "core/ir/facets.h"
-#include "core/ir/hull.h"
+#include "core/meshing/facets.h"
+#include "core/meshing/hull.h"
 #include "importers/scad/colors.h"
 #include "importers/scad/evaluator.h"
 
@@ -81,10 +81,10 @@ ir::NodePtr Evaluator::primitive(ir::PrimShape shape, const ModuleInstantiation 
     // that many points (hull(), projection() and minkowski() charge the whole tessellation)
     if (const auto *s = std::get_if<ir::SpherePrim>(&shape))
         chargeGeometryWork(inst.loc, inst.name.str() + "()",
-                           ir::openscadFragments(s->radius, fr), "fragments");
+                           meshing::openscadFragments(s->radius, fr), "fragments");
     if (const auto *c = std::get_if<ir::CylinderPrim>(&shape))
         chargeGeometryWork(inst.loc, inst.name.str() + "()",
-                           ir::openscadFragments(std::max(c->r1, c->r2), fr), "fragments");
+                           meshing::openscadFragments(std::max(c->r1, c->r2), fr), "fragments");
     ir::NodePtr n = ir::Node::makePrimitive(shape, resolveMaterial(inst.loc), inst.loc);
     n->fragments = fr;
     return n;
@@ -415,23 +415,23 @@ ir::NodePtr Evaluator::moduleHull(const ModuleInstantiation &inst, const FramePt
     warnIgnored2d(*children);
     chargeGeometryWork(inst.loc, "hull()", tessellatedFaces(*children, scene_));
     std::vector<Vec3> points;
-    if (!ir::gatherHullPoints(*children, scene_, diag_, points))
+    if (!meshing::gatherHullPoints(*children, scene_, diag_, points))
         return newNode(ir::NodeKind::Group, inst.loc);
-    ir::HullResult hull = ir::convexHull(points);
+    meshing::HullResult hull = meshing::convexHull(points);
     if (hull.unsettledPoints > 0)
         warn(inst.loc, "hull(): " + std::to_string(hull.unsettledPoints) +
                            " points too close to the hull's surface for the arithmetic to place "
                            "were left out; they lie within rounding of it");
-    if (hull.kind == ir::HullKind::Solid) {
+    if (hull.kind == meshing::HullKind::Solid) {
         ir::NodePtr n = primitive(std::move(hull.polytope), inst, f);
         // Its points are fixed: no $fn/$fa/$fs applies to a hull (nor does --facets)
         n->fragments = ir::Fragments{};
         return n;
     }
     // OpenSCAD makes a flat or empty result; a solid renderer has nothing to draw
-    if (hull.kind != ir::HullKind::Empty && backgroundDepth_ == 0)
+    if (hull.kind != meshing::HullKind::Empty && backgroundDepth_ == 0)
         warn(inst.loc, "hull(): the children's " + std::to_string(points.size()) +
-                           " points are " + ir::hullKindName(hull.kind) +
+                           " points are " + meshing::hullKindName(hull.kind) +
                            ", so the hull has no volume; left out");
     return newNode(ir::NodeKind::Group, inst.loc);
 }

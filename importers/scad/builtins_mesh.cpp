@@ -10,6 +10,7 @@
 #include <unordered_set>
 
 #include "importers/gltf/gltf_importer.h"
+#include "core/meshing/triangulate.h"
 #include "importers/mesh/mesh_reader.h"
 #include "importers/scad/evaluator.h"
 
@@ -188,7 +189,7 @@ ir::NodePtr Evaluator::modulePolyhedron(const ModuleInstantiation &inst, const F
         std::reverse(polygon.begin(), polygon.end());
         if (polygon.size() == 3)
             mesh.triangles.push_back({polygon[0], polygon[1], polygon[2]});
-        else if (!meshio::triangulatePolygon(mesh.positions, polygon, mesh.triangles))
+        else if (!meshing::triangulatePolygon(mesh.positions, polygon, mesh.triangles))
             skip(name + " is degenerate (its points enclose no area)");
     }
     if (skipped > kMaxFaceWarnings)

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/ir/facets.h"
+#include "core/ir/facet_mode.h"
 #include "importers/scad/evaluator.h"
 #include "importers/scad/revolve.h"
 

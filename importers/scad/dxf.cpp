@@ -15,7 +15,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include "core/ir/facets.h"
+#include "core/meshing/facets.h"
 #include "core/math/degree_trig.h"
 #include "importers/scad/value.h"
 
@@ -197,7 +197,7 @@ void Reader::addLine(double x1, double y1, double x2, double y2) {
 }
 
 int Reader::segments(double r, double sweep, double turn) {
-    double n = openscadFragments(r, opts_.fragments);
+    double n = meshing::openscadFragments(r, opts_.fragments);
     // n * sweep / turn in OpenSCAD's order: 13 * 2 pi / (2 pi) rounds up to 14
     double total = std::ceil(n * sweep / turn);
     if (!std::isfinite(total) || total > kMaxEntitySegments) {

@@ -4,7 +4,7 @@
 // offset() module (offset.cc), whose result is such a polygon set.
 #include <cmath>
 
-#include "core/ir/facets.h"
+#include "core/meshing/facets.h"
 #include "core/math/degree_trig.h"
 #include "core/math/float_util.h"
 #include "importers/scad/evaluator.h"
@@ -148,7 +148,7 @@ ir::NodePtr Evaluator::moduleOffset(const ModuleInstantiation &inst, const Frame
 
     // Round joins follow the circle of radius |delta|: Clipper's arc tolerance is the
     // sagitta of one of the circle's fragments
-    double n = ir::openscadFragments(std::abs(delta), fragments);
+    double n = meshing::openscadFragments(std::abs(delta), fragments);
     double arcTolerance = std::abs(delta) * (1 - cosDegrees(180 / n));
     // Charged before Clipper makes them: r = 1e9 with $fn = 1e6 gives a million points
     chargeGeometryWork(inst.loc, "offset()", offsetPoints(input, delta, join, arcTolerance));

@@ -11,7 +11,7 @@
 #include <limits>
 
 #include "core/ir/ir_validate.h"
-#include "importers/scad/utf8.h"
+#include "core/system/utf8.h"
 
 namespace rt::scad {
 

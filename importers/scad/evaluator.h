@@ -297,7 +297,7 @@ class Evaluator {
     /// hull() of 2D children (the first child with geometry is 2D): a convex polygon shape.
     ir::NodePtr hull2d(const ir::Node &children, const ModuleInstantiation &inst);
     /// The points whose convex hull is OpenSCAD's hull of the 2D subtree n placed by
-    /// `placed`; false (after a warning) when there are more than ir::kMaxHullPoints.
+    /// `placed`; false (after a warning) when there are more than meshing::kMaxHullPoints.
     bool hullPoints2d(const ir::Node &n, const Affine2 &placed, std::vector<Vec2> &out);
     /// The 3D solid of a 2D subtree swept as `spec` says; null when nothing is left.
     ir::NodePtr lift2d(const ir::Node &n, const ExtrudeSpec &spec, const Affine2 &placed,
@@ -489,7 +489,7 @@ class Evaluator {
     const char *stackLow_ = nullptr;
 };
 
-/// Faces of OpenSCAD's tessellation of the primitives under `n` (as ir::openscadPolyhedron
+/// Faces of OpenSCAD's tessellation of the primitives under `n` (as meshing::openscadPolyhedron
 /// makes them), estimated from their parameters without building any: what the geometry
 /// budget charges before projection(), minkowski(), hull() and resize() tessellate. The
 /// points are of the same order.

@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
 // Swept solids of linear_extrude, with OpenSCAD 2021.01's rings, side triangles and slices.
 #include "importers/scad/extrude.h"
+#include "core/meshing/triangulate.h"
 
 #include <algorithm>
 #include <climits>
 #include <cmath>
 
-#include "core/ir/facets.h"
+#include "core/meshing/facets.h"
 #include "core/math/degree_trig.h"
 #include "importers/mesh/mesh_reader.h"
 
@@ -41,7 +42,7 @@ int ceilCount(double x) {
 int helixSlices(double rSqr, double height, double twist, const ir::Fragments &f) {
     twist = std::abs(twist);
     int minSlices = std::max(ceilCount(twist / 120.0), 1);
-    if (std::sqrt(rSqr) < ir::kGridFine) return minSlices;
+    if (std::sqrt(rSqr) < meshing::kGridFine) return minSlices;
     if (f.fn > 0) return std::max(ceilCount(twist / 360.0 * f.fn), minSlices);
     // Helix length T sqrt(r^2 + c^2) with pitch c = height / T
     double t = twist * M_PI / 180, c = height / t;
@@ -59,7 +60,7 @@ int conicalHelixSlices(double rSqr, double height, double twist, double scale,
     twist = std::abs(twist);
     double r = std::sqrt(rSqr);
     int minSlices = std::max(ceilCount(twist / 120.0), 1);
-    if (r < ir::kGridFine) return minSlices;
+    if (r < meshing::kGridFine) return minSlices;
     if (f.fn > 0) return std::max(ceilCount(twist * f.fn / 360), minSlices);
     // The path of the farthest point projects to a piece of an Archimedes spiral that would
     // reach the origin where the scale reaches 0
@@ -75,7 +76,7 @@ int conicalHelixSlices(double rSqr, double height, double twist, double scale,
 }
 
 int diagonalSlices(double deltaSqr, double height, const ir::Fragments &f) {
-    if (std::sqrt(deltaSqr) < ir::kGridFine) return 1;
+    if (std::sqrt(deltaSqr) < meshing::kGridFine) return 1;
     if (f.fn > 0) return f.fn >= static_cast<double>(INT_MAX) ? INT_MAX : std::max(static_cast<int>(f.fn), 1);
     return std::max(ceilCount(std::sqrt(deltaSqr + height * height) / f.fs), 1);
 }
@@ -156,7 +157,7 @@ bool sweepMesh(const Outline &ccw, const Sweep &s, ir::Mesh &out) {
         if (ring.size() > 1 && ring[0] == ring[1]) return true;
         std::vector<uint32_t> poly = ring;
         if (down) std::reverse(poly.begin(), poly.end());
-        return meshio::triangulatePolygon(out.positions, poly, out.triangles);
+        return meshing::triangulatePolygon(out.positions, poly, out.triangles);
     };
     bool ok = cap(rings[0], true);
     ok = cap(rings[slices], false) && ok;

@@ -41,7 +41,4 @@ class Lexer {
     int col_ = 1;
 };
 
-/// Appends the UTF-8 encoding of a code point.
-void appendUtf8(std::string &out, unsigned codePoint);
-
 }  // namespace rt::scad

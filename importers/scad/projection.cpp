@@ -10,8 +10,8 @@
 #include <unordered_map>
 #include <vector>
 
-#include "core/ir/hull.h"
-#include "core/ir/revolved_mesh.h"
+#include "core/meshing/hull.h"
+#include "core/meshing/revolved_mesh.h"
 #include "core/ir/scene_ir.h"
 #include "core/math/bounds3.h"
 
@@ -300,7 +300,7 @@ std::vector<std::vector<std::pair<int, int>>> convexPieces(const std::vector<ir:
         return (q.r - p.r) * (r.z - q.z) - (q.z - p.z) * (r.r - q.r);
     };
     std::vector<std::vector<Ref>> polys;
-    for (const auto &t : ir::triangulateProfile(outlines)) polys.push_back({t[0], t[1], t[2]});
+    for (const auto &t : meshing::triangulateProfile(outlines)) polys.push_back({t[0], t[1], t[2]});
     std::vector<int> parent(polys.size());
     for (size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
     auto find = [&](int i) {
@@ -354,7 +354,7 @@ void Tessellation::add(const ir::Node &n, const Mat4 &rootFromNode, const ir::Sc
     if (n.kind == ir::NodeKind::Primitive) {
         Leaf leaf;
         leaf.node = &n;
-        leaf.mesh = ir::openscadPolyhedron(n, scene);
+        leaf.mesh = meshing::openscadPolyhedron(n, scene);
         for (Vec3 &v : leaf.mesh.vertices) {
             v = rootFromNode.transformPoint(v);
             leaf.bounds = unionBounds(leaf.bounds, v);

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "core/ir/facets.h"
+#include "core/meshing/facets.h"
 
 namespace rt::scad {
 
@@ -24,7 +24,7 @@ double revolveAngle(double given) {
 int revolveFragments(const XRange &x, double angle, const ir::Fragments &f) {
     // rotatePolygon starts its range at 0, so max_x - min_x is the largest |x|
     double reach = x.empty ? 0 : std::max(x.max, 0.0) - std::min(x.min, 0.0);
-    double n = ir::openscadFragments(reach, f) * std::abs(angle) / 360;
+    double n = meshing::openscadFragments(reach, f) * std::abs(angle) / 360;
     return static_cast<int>(std::max(n, 1.0));
 }
 

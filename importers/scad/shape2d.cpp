@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/ir/facets.h"
+#include "core/meshing/facets.h"
 #include "core/math/degree_trig.h"
 
 namespace rt::scad {
@@ -73,7 +73,7 @@ std::vector<Outline> shapeOutlines(const Shape2d &s) {
             return {{s.min, {s.max.x, s.min.y}, s.max, {s.min.x, s.max.y}}};
         case Shape2dKind::Circle: {
             // Vertices on the circle, the first on +X, counter-clockwise
-            int n = ir::openscadFragments(s.radius, s.fragments);
+            int n = meshing::openscadFragments(s.radius, s.fragments);
             Outline o(n);
             for (int i = 0; i < n; ++i) {
                 double phi = 360.0 * i / n;
@@ -91,7 +91,7 @@ size_t shapePointCount(const Shape2d &s) {
     switch (s.kind) {
         case Shape2dKind::Square: return 4;
         case Shape2dKind::Circle:
-            return static_cast<size_t>(ir::openscadFragments(s.radius, s.fragments));
+            return static_cast<size_t>(meshing::openscadFragments(s.radius, s.fragments));
         case Shape2dKind::Polygon: {
             size_t n = 0;
             for (const Outline &o : s.outlines) n += o.size();
@@ -160,7 +160,7 @@ Hull2d convexHull2d(std::vector<Vec2> points) {
               [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
     points.erase(std::unique(points.begin(), points.end()), points.end());
     if (points.empty()) return h;
-    h.kind = points.size() == 1 ? ir::HullKind::Point : ir::HullKind::Line;
+    h.kind = points.size() == 1 ? meshing::HullKind::Point : meshing::HullKind::Line;
     if (points.size() < 3) return h;
     Outline chain;
     chain.reserve(points.size() + 1);
@@ -174,7 +174,7 @@ Hull2d convexHull2d(std::vector<Vec2> points) {
     for (size_t i = points.size() - 1; i-- > 0;) add(points[i], lower);
     chain.pop_back();  // the leftmost point again
     if (chain.size() < 3) return h;
-    h.kind = ir::HullKind::Solid;
+    h.kind = meshing::HullKind::Solid;
     h.ccw = std::move(chain);
     return h;
 }

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "core/ir/hull.h"
+#include "core/meshing/hull.h"
 #include "core/ir/node.h"
 #include "core/ir/source_loc.h"
 
@@ -75,7 +75,7 @@ bool isConvex(const Outline &ccw);
 /// tolerance, as cleanOutline). `kind` says what the points span: Empty, Point, Line (no
 /// area; `ccw` is then empty) or Solid.
 struct Hull2d {
-    ir::HullKind kind = ir::HullKind::Empty;
+    meshing::HullKind kind = meshing::HullKind::Empty;
     Outline ccw;
 };
 Hull2d convexHull2d(std::vector<Vec2> points);

@@ -5,7 +5,7 @@
 #include "importers/scad/text_render.h"
 
 #include "importers/scad/lexer.h"
-#include "importers/scad/utf8.h"
+#include "core/system/utf8.h"
 
 #include <fontconfig/fontconfig.h>
 #include <ft2build.h>

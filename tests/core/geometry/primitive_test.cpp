@@ -32,12 +32,12 @@ std::vector<Case> cases() {
         {"cone_up", ir::CylinderPrim{-0.5, 1, 0, 1.2}},
         {"frustum", ir::CylinderPrim{0, 1.5, 1.5, 0.4}},
         // OpenSCAD's faceted solids (--facets openscad): convex polytopes
-        {"polytope_sphere", ir::openscadSphere(1.5, 7)},
-        {"polytope_hexagon", ir::openscadCylinder(ir::CylinderPrim{-1, 1, 0.8, 0.8}, 6)},
-        {"polytope_pyramid", ir::openscadCylinder(ir::CylinderPrim{0, 2, 1, 0}, 4)},
-        {"polytope_frustum", ir::openscadCylinder(ir::CylinderPrim{0, 1.5, 1.5, 0.4}, 5)},
+        {"polytope_sphere", meshing::openscadSphere(1.5, 7)},
+        {"polytope_hexagon", meshing::openscadCylinder(ir::CylinderPrim{-1, 1, 0.8, 0.8}, 6)},
+        {"polytope_pyramid", meshing::openscadCylinder(ir::CylinderPrim{0, 2, 1, 0}, 4)},
+        {"polytope_frustum", meshing::openscadCylinder(ir::CylinderPrim{0, 1.5, 1.5, 0.4}, 5)},
         // 422 faces: entry and exit found through the BVH over its faces
-        {"polytope_many_faces", ir::openscadSphere(1.5, 30)},
+        {"polytope_many_faces", meshing::openscadSphere(1.5, 30)},
     };
     for (auto &[n, s] : shapes) {
         out.push_back({n, s, Mat4()});

@@ -7,8 +7,8 @@
 
 #include <map>
 
-#include "core/ir/facets.h"
-#include "core/ir/hull.h"
+#include "core/meshing/facets.h"
+#include "core/meshing/hull.h"
 #include "core/ir/scene_ir.h"
 
 namespace rt::ir {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // OpenSCAD's fragment counts and tessellation, the polytope planes, and the --facets rule.
-#include "core/ir/facets.h"
+#include "core/meshing/facets.h"
 
 #include <gtest/gtest.h>
 

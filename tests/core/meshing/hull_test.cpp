@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Quickhull: invariants on random and degenerate point sets, and OpenSCAD's hull points of
 // IR trees (transforms, tessellated round primitives, intersections, differences).
-#include "core/ir/hull.h"
+#include "core/meshing/hull.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <map>
 #include <set>
 
-#include "core/ir/facets.h"
+#include "core/meshing/facets.h"
 #include "core/ir/scene_ir.h"
 #include "core/math/rng.h"
 

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
 // OpenSCAD's rotate_extrude mesh (closed, outward, OpenSCAD's vertices), the --facets rule for
 // tori and lathes, and their dump, validation and bounds.
-#include "core/ir/revolved_mesh.h"
+#include "core/meshing/revolved_mesh.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "core/ir/facets.h"
-#include "core/ir/hull.h"
+#include "core/meshing/facets.h"
+#include "core/meshing/hull.h"
 #include "core/ir/ir_dump.h"
 #include "core/ir/ir_validate.h"
 #include "core/ir/scene_ir.h"

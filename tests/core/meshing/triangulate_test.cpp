@@ -8,6 +8,7 @@
 #include <random>
 
 #include "core/math/mat4.h"
+#include "core/meshing/triangulate.h"
 #include "importers/mesh/mesh_reader.h"
 #include "importers/mesh/mesh_test_support.h"
 

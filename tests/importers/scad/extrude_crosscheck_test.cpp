@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/ir/facets.h"
+#include "core/meshing/facets.h"
 #include "core/ir/prism.h"
 #include "core/math/bounds3.h"
 #include "importers/mesh/mesh_reader.h"
@@ -137,7 +137,7 @@ TEST_P(ExtrudeCrossCheck, BoundsVolumeAndVertices) {
 
     DiagnosticSink diag;
     ir::Scene scene = importScad(in, diag);
-    ir::applyFacets(scene, ir::FacetMode::OpenScad, diag);
+    meshing::applyFacets(scene, ir::FacetMode::OpenScad, diag);
     auto prims = primitives(*scene.root);
     ASSERT_FALSE(prims.empty());
 

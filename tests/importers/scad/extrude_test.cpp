@@ -3,7 +3,7 @@
 #include <cmath>
 #include <functional>
 
-#include "core/ir/facets.h"
+#include "core/meshing/facets.h"
 #include "core/ir/mesh.h"
 #include "core/ir/prism.h"
 #include "importers/scad/extrude.h"
@@ -76,7 +76,7 @@ TEST(Extrude, CircleBecomesCylinderWithItsFragments) {
     const auto &cone = std::get<ir::CylinderPrim>(p[0].node->shape);
     EXPECT_EQ(cone.r2, 10);
     EXPECT_EQ(p[0].node->fragments.fn, 0);
-    EXPECT_EQ(ir::openscadFragments(cone.r2, p[0].node->fragments), 16);
+    EXPECT_EQ(meshing::openscadFragments(cone.r2, p[0].node->fragments), 16);
 }
 
 TEST(Extrude, ScaleZeroMakesPyramidAndCone) {

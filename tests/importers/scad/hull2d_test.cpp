@@ -40,13 +40,13 @@ void expectBounds(const ir::PolytopePrim &p, Vec3 min, Vec3 max) {
 
 TEST(ScadHull2dGeometry, MonotoneChainDropsInnerDuplicateAndCollinearPoints) {
     Hull2d h = convexHull2d({{0, 0}, {2, 0}, {1, 0}, {2, 2}, {1, 1}, {0, 2}, {0, 2}, {0, 1}});
-    EXPECT_EQ(h.kind, ir::HullKind::Solid);
+    EXPECT_EQ(h.kind, meshing::HullKind::Solid);
     EXPECT_EQ(h.ccw, (Outline{{0, 0}, {2, 0}, {2, 2}, {0, 2}}));
     EXPECT_GT(twiceSignedArea(h.ccw), 0);
-    EXPECT_EQ(convexHull2d({}).kind, ir::HullKind::Empty);
-    EXPECT_EQ(convexHull2d({{1, 1}, {1, 1}}).kind, ir::HullKind::Point);
+    EXPECT_EQ(convexHull2d({}).kind, meshing::HullKind::Empty);
+    EXPECT_EQ(convexHull2d({{1, 1}, {1, 1}}).kind, meshing::HullKind::Point);
     Hull2d line = convexHull2d({{0, 0}, {1, 1}, {3, 3}, {2, 2}});
-    EXPECT_EQ(line.kind, ir::HullKind::Line);
+    EXPECT_EQ(line.kind, meshing::HullKind::Line);
     EXPECT_TRUE(line.ccw.empty());
 }
 

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "core/ir/facets.h"
+#include "core/meshing/facets.h"
 #include "core/ir/material.h"
 #include "importers/scad/test_support.h"
 
@@ -64,7 +64,7 @@ TEST(ScadHull, FacetsModeLeavesHullsAlone) {
     Imported r = importText("hull() sphere(5, $fn = 40);");
     ir::PolytopePrim before = onlyPolytope(r);
     for (ir::FacetMode mode : {ir::FacetMode::Smooth, ir::FacetMode::OpenScad}) {
-        ir::applyFacets(r.scene, mode, r.diag);
+        meshing::applyFacets(r.scene, mode, r.diag);
         EXPECT_EQ(onlyPolytope(r).vertices, before.vertices);
         EXPECT_EQ(r.scene.stats.facets->faceted + r.scene.stats.facets->smooth, 0);
     }

@@ -497,7 +497,7 @@ TEST(OpenScadCrossCheck, FacetedPrimitivesHaveOpenScadsVertices) {
         DiagnosticSink diag;
         ir::Mesh theirs = meshio::readMeshFile(off, diag);
         Imported ours = importText(src);
-        ir::applyFacets(ours.scene, ir::FacetMode::OpenScad, ours.diag);
+        meshing::applyFacets(ours.scene, ir::FacetMode::OpenScad, ours.diag);
         const ir::Node *prim = onlyPrimitive(*ours.scene.root);
         ASSERT_TRUE(prim);
         const auto *poly = std::get_if<ir::PolytopePrim>(&prim->shape);

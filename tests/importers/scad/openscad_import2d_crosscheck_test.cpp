@@ -38,7 +38,7 @@ void expectSamePoints(const std::string &src, bool flatten) {
     // The file forms of the extrusions are deprecated: OpenSCAD says so too
     for (const std::string &w : ours.warnings())
         EXPECT_EQ(w.rfind("DEPRECATED: ", 0), 0u) << w;
-    ir::applyFacets(ours.scene, ir::FacetMode::OpenScad, ours.diag);
+    meshing::applyFacets(ours.scene, ir::FacetMode::OpenScad, ours.diag);
     std::vector<Vec3> mine = worldPoints(ours.scene), ref = theirs.positions;
     if (flatten) {
         for (Vec3 &v : mine) v.z = 0;

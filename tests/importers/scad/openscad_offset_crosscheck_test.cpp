@@ -8,7 +8,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "core/ir/facets.h"
+#include "core/meshing/facets.h"
 #include "core/ir/prism.h"
 #include "importers/scad/openscad_support.h"
 
@@ -36,7 +36,7 @@ TEST_P(OffsetCrossCheck, PointsMatchOpenScad) {
 
     Imported ours = importText(c.src);
     EXPECT_TRUE(ours.warnings().empty()) << ours.warnings().front();
-    ir::applyFacets(ours.scene, ir::FacetMode::OpenScad, ours.diag);
+    meshing::applyFacets(ours.scene, ir::FacetMode::OpenScad, ours.diag);
     std::vector<Vec3> mine = worldPoints(ours.scene), ref = theirs.positions;
     if (!c.allPoints) {
         // Subtrahends reach beyond the caps: compare where the points stand in the plane

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "core/ir/facets.h"
+#include "core/meshing/facets.h"
 #include "importers/scad/openscad_support.h"
 
 namespace rt::scad::test {
@@ -38,7 +38,7 @@ std::vector<Vec3> ourPoints(const std::string &src, bool expectQuiet = true) {
     if (expectQuiet) {
         EXPECT_TRUE(ours.warnings().empty()) << ours.warnings().front();
     }
-    ir::applyFacets(ours.scene, ir::FacetMode::OpenScad, ours.diag);
+    meshing::applyFacets(ours.scene, ir::FacetMode::OpenScad, ours.diag);
     return worldPoints(ours.scene);
 }
 

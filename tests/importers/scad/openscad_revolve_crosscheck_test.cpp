@@ -8,7 +8,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "core/ir/revolved_mesh.h"
+#include "core/meshing/revolved_mesh.h"
 #include "importers/scad/openscad_support.h"
 
 namespace rt::scad::test {
@@ -57,7 +57,7 @@ TEST(OpenScadRevolveCrossCheck, VerticesAndVolumeMatch) {
     all.insert(all.end(), std::begin(tori), std::end(tori));
     for (const RevolveCase &c : all) {
         SCOPED_TRACE(c.src);
-        ir::Mesh ours = ir::openscadRevolve(c.outlines, c.angle, c.fragments);
+        ir::Mesh ours = meshing::openscadRevolve(c.outlines, c.angle, c.fragments);
         ir::Mesh theirs = openscadOff(c.src, tmp);
         ASSERT_FALSE(theirs.positions.empty());
         expectCovered(ours.positions, theirs.positions, "ours");

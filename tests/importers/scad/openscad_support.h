@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "core/ir/diagnostics.h"
-#include "core/ir/facets.h"
+#include "core/meshing/facets.h"
 #include "core/ir/mesh.h"
 #include "core/ir/prism.h"
 #include "core/math/float_util.h"
@@ -116,7 +116,7 @@ inline ir::PolytopePrim worldPolytope(const ir::Scene &scene) {
 
 /// Every point of `a` lies on the surface of the polytope.
 inline void expectOnSurface(const std::vector<Vec3> &a, const ir::PolytopePrim &p) {
-    std::vector<ir::FacePlane> planes = ir::polytopePlanes(p);
+    std::vector<meshing::FacePlane> planes = meshing::polytopePlanes(p);
     for (const Vec3 &v : a) {
         double outside = -kInfinity;
         for (const auto &pl : planes) outside = std::max(outside, dot(pl.normal, v) - pl.offset);

@@ -7,7 +7,7 @@
 
 #include <filesystem>
 
-#include "core/ir/facets.h"
+#include "core/meshing/facets.h"
 #include "importers/scad/openscad_support.h"
 #include "importers/scad/text_support.h"
 
@@ -38,7 +38,7 @@ TEST_P(TextCrossCheck, PointsMatchOpenScad) {
     ASSERT_FALSE(theirs.positions.empty());
 
     EXPECT_EQ(ours.warnings().empty(), !c.warns) << (c.warns ? "" : ours.warnings().front());
-    ir::applyFacets(ours.scene, ir::FacetMode::OpenScad, ours.diag);
+    meshing::applyFacets(ours.scene, ir::FacetMode::OpenScad, ours.diag);
     std::vector<Vec3> mine = distinctPoints(worldPoints(ours.scene), !c.allPoints);
     std::vector<Vec3> ref = distinctPoints(theirs.positions, !c.allPoints);
     EXPECT_EQ(mine.size(), ref.size());

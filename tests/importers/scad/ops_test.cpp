@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "core/ir/facets.h"
+#include "core/ir/facet_mode.h"
 #include "core/ir/material.h"
 #include "importers/scad/test_support.h"
 

@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/ir/facets.h"
+#include "core/meshing/facets.h"
 #include "importers/mesh/mesh_reader.h"
 #include "importers/scad/openscad_support.h"
 
@@ -34,7 +34,7 @@ TEST_P(RevolveCrossCheck, FacetedMeshIsOpenScads) {
 
     DiagnosticSink diag;
     ir::Scene scene = importScad((dir / "case.scad").string(), diag);
-    ir::applyFacets(scene, ir::FacetMode::OpenScad, diag);
+    meshing::applyFacets(scene, ir::FacetMode::OpenScad, diag);
     auto prims = primitives(*scene.root);
     ASSERT_EQ(prims.size(), 1u);
     const auto *mp = std::get_if<ir::MeshPrim>(&prims[0].node->shape);

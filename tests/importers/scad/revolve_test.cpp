@@ -3,7 +3,7 @@
 // the axis, segment count, its error for profiles across the axis, the DXF form).
 #include <cmath>
 
-#include "core/ir/facets.h"
+#include "core/ir/facet_mode.h"
 #include "importers/scad/revolve.h"
 #include "importers/scad/test_support.h"
 
