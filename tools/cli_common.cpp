@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Scene loading and diagnostic printing for the CLI.
+// The scene options, diagnostic printing and POV-Ray reference of the CLI.
 #include "tools/cli_common.h"
 
 #include <CLI/CLI.hpp>
@@ -14,17 +14,13 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 
 #include "core/image/image_io.h"
-#include "core/ir/scene_defaults.h"
-#include "core/render/environment.h"
 #include "core/system/input_file.h"
 #include "core/system/temp_file.h"
 #include "exporters/povray/pov_writer.h"
-#include "importers/gltf/gltf_importer.h"
-#include "importers/mesh/mesh_reader.h"
-#include "importers/scad/scad_importer.h"
 #include "tools/check.h"
 
 namespace rt::cli {
@@ -44,17 +40,30 @@ void clearProgressLine() {
     if (progressLineShown.exchange(false)) std::fputs("\r\033[K", stderr);
 }
 
-/// An ImportOptions::progress that prints the step count once the evaluation is slow.
-std::function<void(int64_t)> evaluationProgress() {
-    auto start = std::chrono::steady_clock::now();
-    auto next = start + kProgressDelay;
-    return [next](int64_t steps) mutable {
+/// Shows the step count of a .scad evaluation on the terminal once it has run for
+/// kProgressDelay, and clears the line when it ends; one per command, reset after each
+/// evaluation (an animation evaluates once per frame).
+void showEvaluationProgress(LoadOptions &lo) {
+    struct State {
+        bool started = false;
+        std::chrono::steady_clock::time_point next;
+    };
+    auto state = std::make_shared<State>();
+    lo.progress = [state](int64_t steps) {
         auto now = std::chrono::steady_clock::now();
-        if (now < next) return;
-        next = now + kProgressInterval;
+        if (!state->started) {
+            state->started = true;
+            state->next = now + kProgressDelay;
+        }
+        if (now < state->next) return;
+        state->next = now + kProgressInterval;
         std::fprintf(stderr, "\revaluating: %.1f M steps", static_cast<double>(steps) / 1e6);
         std::fflush(stderr);
         progressLineShown = true;
+    };
+    lo.progressDone = [state] {
+        state->started = false;
+        clearProgressLine();
     };
 }
 
@@ -115,7 +124,7 @@ std::vector<std::string> SceneArgs::optionArguments() const {
 
 LoadOptions SceneArgs::loadOptions(bool quiet) const {
     LoadOptions lo;
-    lo.quiet = quiet;
+    if (!quiet && isatty(STDERR_FILENO)) showEvaluationProgress(lo);
     lo.maxSteps = maxSteps;
     lo.maxElements = maxElements;
     lo.maxGeometry = maxGeometry;
@@ -152,81 +161,6 @@ void requireOutputFile(const std::string &path, const std::string &option) {
     fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
     if (!fs::is_directory(dir, ec))
         throw std::invalid_argument(option + ": the folder of '" + path + "' does not exist");
-}
-
-void requireRegularFile(const std::string &path) {
-    if (path.empty()) throw std::invalid_argument("an empty file name was given");
-    struct stat st {};
-    if (::stat(path.c_str(), &st) != 0)
-        throw std::runtime_error(path + ": " + (errno == ENOENT ? "no such file" : std::strerror(errno)));
-    if (S_ISDIR(st.st_mode)) throw std::runtime_error(path + ": is a folder, not a file");
-    if (!S_ISREG(st.st_mode))
-        throw std::runtime_error(path + ": is not a regular file (a FIFO, device or socket); "
-                                        "scadray reads only regular files");
-    // No output of this run may replace it
-    noteInputFile(path);
-}
-
-ir::Scene loadScene(const std::string &path, DiagnosticSink &diag, const LoadOptions &opts) {
-    namespace fs = std::filesystem;
-    // Checked before anything opens it: a FIFO would block, /dev/zero never end
-    requireRegularFile(path);
-    std::string ext = fs::path(path).extension().string();
-    for (auto &ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-    // The environment first, so a bad -e image fails before a long evaluation: glTF models
-    // get the studio sky unless -e says otherwise
-    std::string envName = opts.environment.empty()
-                              ? (ext == ".gltf" || ext == ".glb" ? "studio" : "none")
-                              : opts.environment;
-    ir::Environment env;
-    if (envName == "studio") {
-        env = ir::studioEnvironment();
-        env.rotateDegrees = opts.environmentRotate;
-    } else if (envName != "none") {
-        try {
-            requireRegularFile(envName);
-        } catch (const std::exception &e) {
-            throw std::runtime_error(std::string("environment image (-e) ") + e.what());
-        }
-        env = loadEnvironmentImage(envName, opts.environmentRotate, diag);
-    }
-    ir::Scene scene;
-    if (ext == ".scad") {
-        scad::ImportOptions io;
-        io.libraryPaths = opts.libraryPaths;
-        io.defines = opts.defines;
-        io.maxSteps = opts.maxSteps;
-        io.maxElements = opts.maxElements;
-        io.maxGeometry = opts.maxGeometry;
-        io.time = opts.time;
-        if (!opts.quiet && isatty(STDERR_FILENO)) io.progress = evaluationProgress();
-        struct ClearAtEnd {
-            ~ClearAtEnd() { clearProgressLine(); }
-        } clearAtEnd;
-        scene = scad::importScad(path, diag, io);
-    } else if (ext == ".gltf" || ext == ".glb") {
-        scene = gltf::importGltf(path, diag);
-    } else if (ext == ".stl" || ext == ".off") {
-        // A bare mesh file: one mesh in OpenSCAD's default colour; a file without triangles
-        // is an empty scene, as an empty .scad is
-        auto mesh = std::make_shared<ir::Mesh>(meshio::readMeshFile(path, diag));
-        if (!mesh->triangles.empty()) {
-            scene.meshes.push_back(mesh);
-            scene.root->children.push_back(ir::Node::makePrimitive(
-                ir::MeshPrim{0}, scene.addMaterial(ir::Material()), mesh->loc));
-        }
-    } else {
-        throw std::runtime_error(path + ": unknown scene type '" + ext +
-                                 "' (scadray reads .scad, .gltf, .glb, .stl and .off)");
-    }
-    scene.settings.environment = std::move(env);
-    // Facets first: the automatic camera frames the solids as they will be drawn
-    meshing::applyFacets(scene, opts.facets, diag);
-    ir::CompleteOptions co;
-    co.framing = ext != ".scad" ? ir::Framing::Viewer : ir::Framing::OpenScad;
-    co.aspect = opts.aspect;
-    ir::completeScene(scene, diag, co);
-    return scene;
 }
 
 std::pair<std::string, std::string> parseDefine(const std::string &text) {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Shared pieces of the scadray command line: loading a scene by file type, printing
-// diagnostics, and the exit codes.
+// Shared pieces of the scadray command line: the scene options, printing diagnostics, and the
+// exit codes.
 #pragma once
 
 #include <cstdint>
@@ -11,8 +11,9 @@
 #include "core/image/image.h"
 #include "core/ir/diagnostics.h"
 #include "core/ir/scene_ir.h"
+#include "core/system/input_file.h"
 #include "exporters/povray/pov_runner.h"
-#include "importers/scad/scad_importer.h"
+#include "importers/loader/scene_loader.h"
 
 namespace CLI {
 class App;
@@ -25,26 +26,6 @@ namespace rt::cli {
 constexpr int kExitOk = 0;
 constexpr int kExitInputError = 1;
 constexpr int kExitUsage = 2;
-
-struct LoadOptions {
-    std::vector<std::string> libraryPaths;
-    std::vector<std::pair<std::string, std::string>> defines;
-    bool quiet = false;  ///< no progress line while a long .scad evaluates
-    /// How spheres, cylinders, tori and lathes are drawn (`--facets`).
-    ir::FacetMode facets = ir::FacetMode::Auto;
-    int64_t maxSteps = scad::kDefaultMaxSteps;  ///< .scad evaluation step cap; 0 = none
-    int64_t maxElements = scad::kDefaultMaxElements;  ///< .scad vector elements alive at once
-    int64_t maxGeometry = scad::kDefaultMaxGeometry;  ///< .scad geometry budget; 0 = none
-    /// `-e`: empty (the file type's default: the studio sky for glTF, none otherwise), "none",
-    /// "studio" or an equirectangular image file; `--env-rotate` degrees about +Z.
-    std::string environment;
-    double environmentRotate = 0;
-    /// Picture width / height when the command knows it (the automatic camera of glTF, STL
-    /// and OFF files fits the smaller side); 0 when unknown.
-    double aspect = 0;
-    /// `$t` of a .scad scene (animation frames); other scene types have no time.
-    double time = 0;
-};
 
 /// The scene argument and the options every scene-reading subcommand takes (-D, -L,
 /// --max-steps, --facets).
@@ -110,19 +91,6 @@ CLI::Option *addNumber(CLI::App &cmd, const std::string &names, double &value,
 /// Throws std::invalid_argument, naming `option`, when `path` cannot be an output file: an
 /// existing folder, or a name in a folder that does not exist. Checked before any work.
 void requireOutputFile(const std::string &path, const std::string &option);
-
-/// Throws std::runtime_error naming `path` unless it is a regular file (or a link to one):
-/// a folder, a FIFO, a device such as /dev/zero or a socket could block or never end.
-void requireRegularFile(const std::string &path);
-
-/// Reads a scene by extension (.scad) and completes it (automatic camera, default lights), with
-/// the environment opts.environment names (an image that cannot be read is a
-/// std::runtime_error naming it, raised before anything is written).
-/// The path must be a regular file (requireRegularFile).
-/// Throws LocatedError for problems in the file, std::runtime_error for others. A .scad
-/// evaluation that takes over a second shows an `evaluating: N M steps` line on a terminal
-/// stderr (unless opts.quiet), cleared when it ends.
-ir::Scene loadScene(const std::string &path, DiagnosticSink &diag, const LoadOptions &opts);
 
 /// POV-Ray's picture of a scene, as `check` and `converge` take it: exported to
 /// `dir/stem.pov` (+ .ini), rendered supersample times larger without antialiasing and

@@ -4,7 +4,7 @@
 
 #include <span>
 
-#include "core/csg/span.h"
+#include "core/geometry/span.h"
 
 namespace rt {
 

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <memory>
 
-#include "core/csg/span.h"
 #include "core/geometry/hit.h"
 #include "core/geometry/primitive.h"
+#include "core/geometry/span.h"
 #include "core/ir/source_loc.h"
 #include "core/math/float_util.h"
 #include "core/math/transform.h"

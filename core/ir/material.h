@@ -10,11 +10,9 @@
 #include "core/ir/source_loc.h"
 #include "core/math/rgb.h"
 
-namespace rt {
-struct PbrMaterial;  // core/materials/pbr_material.h
-}
-
 namespace rt::ir {
+
+struct PbrMaterial;  // core/ir/pbr_material.h
 
 /// OpenSCAD's default face colour (Cornfield scheme front colour #f9d72c), as linear values of
 /// the 8-bit sRGB-less integers divided by 255, exactly as OpenSCAD treats colours.
@@ -80,7 +78,7 @@ struct TextureRef {
 };
 
 /// A glTF material's per-texel description (factors plus texture slots), shared and immutable;
-/// compared, ordered and hashed by value (core/materials/pbr_material.cpp). Empty = none.
+/// compared, ordered and hashed by value. Empty = none.
 struct TexelMaterial {
     std::shared_ptr<const PbrMaterial> pbr;
 

@@ -304,28 +304,3 @@ TexelShading shadeTexel(const ir::Material &m, const TexelImages &images,
 }
 
 }  // namespace rt
-
-namespace rt::ir {
-
-bool TexelMaterial::operator==(const TexelMaterial &o) const {
-    if (pbr == o.pbr) return true;
-    if (!pbr || !o.pbr) return false;
-    return *pbr == *o.pbr;
-}
-
-bool TexelMaterial::operator<(const TexelMaterial &o) const {
-    if (!pbr || !o.pbr) return !pbr && o.pbr;
-    return pbr->key() < o.pbr->key();
-}
-
-bool TexelMaterial::seeThrough() const { return pbr->mayBeSeeThrough(); }
-
-size_t TexelMaterial::hash() const {
-    if (!pbr) return 0;
-    size_t h = 1;
-    std::apply([&h](auto... v) { ((h = h * 1000003 ^ std::hash<decltype(v)>()(v)), ...); },
-               pbr->key());
-    return h;
-}
-
-}  // namespace rt::ir

@@ -32,10 +32,4 @@ void environmentUv(double rotateDegrees, const Vec3 &d, double *u, double *v);
 /// Mean radiance over the sphere of directions (gradient: exact; image: solid-angle weighted).
 Rgb environmentMean(const ir::Environment &env);
 
-/// An image environment read from `path` (any format readImage takes: .exr and .hdr through
-/// OpenImageIO, loaded only now). Throws std::runtime_error naming the file when it cannot be
-/// read or holds NaN or infinite values; negative values are clamped to 0 with a warning.
-ir::Environment loadEnvironmentImage(const std::string &path, double rotateDegrees,
-                                     DiagnosticSink &diag);
-
 }  // namespace rt

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <mutex>
 #include <set>
+#include <stdexcept>
 #include <tuple>
 
 namespace rt {
@@ -171,6 +172,19 @@ std::string printable(const std::string &text, bool keepNewlines) {
         }
     }
     return out;
+}
+
+void requireRegularFile(const std::string &path) {
+    if (path.empty()) throw std::invalid_argument("an empty file name was given");
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0)
+        throw std::runtime_error(path + ": " + (errno == ENOENT ? "no such file" : std::strerror(errno)));
+    if (S_ISDIR(st.st_mode)) throw std::runtime_error(path + ": is a folder, not a file");
+    if (!S_ISREG(st.st_mode))
+        throw std::runtime_error(path + ": is not a regular file (a FIFO, device or socket); "
+                                        "scadray reads only regular files");
+    // No output of this run may replace it
+    noteInputFile(path);
 }
 
 }  // namespace rt

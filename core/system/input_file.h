@@ -69,4 +69,8 @@ void forgetInputFiles();
 /// `\xNN`; newlines are kept when `keepNewlines`, else escaped too. Other bytes pass unchanged.
 std::string printable(const std::string &text, bool keepNewlines = false);
 
+/// Throws std::runtime_error naming `path` unless it is a regular file (or a link to one):
+/// a folder, a FIFO, a device such as /dev/zero or a socket could block or never end.
+void requireRegularFile(const std::string &path);
+
 }  // namespace rt

@@ -12,6 +12,7 @@
 #include "core/render/render_plan.h"
 #include "core/render/render_scene.h"
 #include "core/render/renderer.h"
+#include "importers/loader/scene_loader.h"
 #include "importers/scad/scad_importer.h"
 
 namespace rt {
@@ -42,9 +43,12 @@ scad::ImportOptions libraryOptions() {
     return io;
 }
 
+/// A scene file loaded as the command line loads it.
 ir::Scene load(const std::string &path) {
     DiagnosticSink diag;
-    return scad::importScad(path, diag, libraryOptions());
+    LoadOptions lo;
+    lo.libraryPaths = libraryOptions().libraryPaths;
+    return loadScene(path, diag, lo);
 }
 
 ir::Scene loadText(const std::string &text) {

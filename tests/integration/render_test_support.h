@@ -11,6 +11,7 @@
 #include "core/ir/scene_defaults.h"
 #include "core/render/render_scene.h"
 #include "core/render/renderer.h"
+#include "importers/loader/scene_loader.h"
 #include "importers/scad/scad_importer.h"
 
 namespace rt::test {
@@ -37,11 +38,16 @@ inline Compiled compile(ir::Scene scene) {
     return c;
 }
 
-/// scenes/`name` imported and compiled.
+/// scenes/`name` loaded as the command line loads it (its defaults: --facets auto, the
+/// automatic camera and lights) and compiled.
 inline Compiled loadScene(const std::string &name) {
     DiagnosticSink diag;
-    return compile(scad::importScad(std::string(SCADRAY_SOURCE_DIR) + "/scenes/" + name, diag,
-                                    libraryOptions()));
+    LoadOptions lo;
+    lo.libraryPaths = libraryOptions().libraryPaths;
+    Compiled c{rt::loadScene(std::string(SCADRAY_SOURCE_DIR) + "/scenes/" + name, diag, lo),
+               nullptr};
+    c.rs = RenderScene::compile(c.scene, diag);
+    return c;
 }
 
 /// A `w` x `h` picture on two threads, every other option at its default.

@@ -11,7 +11,7 @@
 #include "core/ir/scene_defaults.h"
 #include "core/render/render_scene.h"
 #include "core/render/renderer.h"
-#include "importers/scad/scad_importer.h"
+#include "importers/loader/scene_loader.h"
 
 namespace rt {
 namespace {
@@ -20,11 +20,10 @@ using Defines = std::vector<std::pair<std::string, std::string>>;
 
 RenderResult renderFile(const std::string &path, const Defines &defines = {}, int spp = 1) {
     DiagnosticSink diag;
-    scad::ImportOptions io;
-    io.libraryPaths = {std::string(SCADRAY_SOURCE_DIR) + "/scenes"};
-    io.defines = defines;
-    ir::Scene scene = scad::importScad(path, diag, io);
-    ir::completeScene(scene, diag);
+    LoadOptions lo;
+    lo.libraryPaths = {std::string(SCADRAY_SOURCE_DIR) + "/scenes"};
+    lo.defines = defines;
+    ir::Scene scene = loadScene(path, diag, lo);
     auto rs = RenderScene::compile(scene, diag);
     RenderOptions o;
     o.width = 160;

@@ -14,6 +14,8 @@
 namespace rt::ir {
 namespace {
 
+using namespace meshing;
+
 /// Volume by the divergence theorem over fan-triangulated faces.
 double volume(const PolytopePrim &p) {
     double v = 0;

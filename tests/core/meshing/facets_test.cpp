@@ -10,7 +10,8 @@
 #include "core/ir/scene_ir.h"
 #include "core/math/rng.h"
 
-namespace rt::ir {
+namespace rt::meshing {
+using namespace ir;
 namespace {
 
 Fragments fn(double n) { return Fragments{n, 12, 2}; }
@@ -211,4 +212,4 @@ TEST(Facets, ModeNamesRoundTrip) {
 }
 
 }  // namespace
-}  // namespace rt::ir
+}  // namespace rt::meshing

@@ -13,7 +13,8 @@
 #include "core/ir/scene_ir.h"
 #include "core/math/rng.h"
 
-namespace rt::ir {
+namespace rt::meshing {
+using namespace ir;
 namespace {
 
 /// Volume by the divergence theorem over fan-triangulated faces, about the first vertex so
@@ -236,4 +237,4 @@ TEST(HullPoints, DifferenceIsExactOnlyWhenCornersSurvive) {
 }
 
 }  // namespace
-}  // namespace rt::ir
+}  // namespace rt::meshing

@@ -13,7 +13,8 @@
 #include "core/ir/ir_validate.h"
 #include "core/ir/scene_ir.h"
 
-namespace rt::ir {
+namespace rt::meshing {
+using namespace ir;
 namespace {
 
 ProfileOutline rect(double r0, double r1, double z0, double z1) {
@@ -222,4 +223,4 @@ TEST(RevolvedMesh, HullUsesTheFacetedVertices) {
 }
 
 }  // namespace
-}  // namespace rt::ir
+}  // namespace rt::meshing

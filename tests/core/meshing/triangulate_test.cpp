@@ -9,13 +9,20 @@
 
 #include "core/math/mat4.h"
 #include "core/meshing/triangulate.h"
-#include "importers/mesh/mesh_reader.h"
-#include "importers/mesh/mesh_test_support.h"
 
-namespace rt::meshio::test {
+namespace rt::meshing::test {
 namespace {
 
 using Tris = std::vector<std::array<uint32_t, 3>>;
+
+/// Sum of the triangles' areas, each signed by how its normal faces `n`.
+double projectedArea(const std::vector<Vec3> &pos,
+                     const std::vector<std::array<uint32_t, 3>> &tris, const Vec3 &n) {
+    double sum = 0;
+    for (const auto &t : tris)
+        sum += dot(cross(pos[t[1]] - pos[t[0]], pos[t[2]] - pos[t[0]]), n) / 2;
+    return sum;
+}
 
 /// Twice the signed area of a 2D polygon (shoelace).
 double shoelace(const std::vector<std::array<double, 2>> &p) {
@@ -233,4 +240,4 @@ TEST(Triangulate, RandomStarShapedPolygonsProperty) {
 }
 
 }  // namespace
-}  // namespace rt::meshio::test
+}  // namespace rt::meshing::test

@@ -99,15 +99,6 @@ inline std::string binaryStl(const std::vector<Triangle> &tris, const std::strin
     return s;
 }
 
-/// Sum of the triangles' areas, each signed by how its normal faces `n`.
-inline double projectedArea(const std::vector<Vec3> &pos,
-                            const std::vector<std::array<uint32_t, 3>> &tris, const Vec3 &n) {
-    double sum = 0;
-    for (const auto &t : tris)
-        sum += dot(cross(pos[t[1]] - pos[t[0]], pos[t[2]] - pos[t[0]]), n) / 2;
-    return sum;
-}
-
 /// The message and location of the ParseError `fn` throws (fails the test if none).
 template <typename Fn>
 ParseError parseErrorOf(Fn &&fn) {
