@@ -9,7 +9,7 @@
 
 #include "core/system/subprocess.h"
 #include "core/system/temp_file.h"
-#include "importers/scad/parser.h"
+#include "importers/scad/lang/parser.h"
 
 namespace rt::cli {
 

@@ -8,9 +8,9 @@
 
 #include "core/system/large_stack.h"
 #include "core/ir/diagnostics.h"
-#include "importers/scad/evaluator.h"
-#include "importers/scad/lexer.h"
-#include "importers/scad/parser.h"
+#include "importers/scad/lang/evaluator.h"
+#include "importers/scad/lang/lexer.h"
+#include "importers/scad/lang/parser.h"
 
 namespace rt::scad {
 

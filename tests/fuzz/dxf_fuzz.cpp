@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <string>
 
-#include "importers/scad/dxf.h"
+#include "importers/scad/formats/dxf.h"
 #include "tests/fuzz/fuzz_support.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {

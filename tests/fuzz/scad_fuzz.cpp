@@ -11,8 +11,8 @@
 #include <string>
 #include <string_view>
 
-#include "importers/scad/evaluator.h"
-#include "importers/scad/parser.h"
+#include "importers/scad/lang/evaluator.h"
+#include "importers/scad/lang/parser.h"
 #include "tests/fuzz/fuzz_support.h"
 
 namespace {

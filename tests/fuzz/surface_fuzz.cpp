@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string>
 
-#include "importers/scad/surface.h"
+#include "importers/scad/formats/surface.h"
 #include "tests/fuzz/fuzz_support.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-#include "importers/scad/svg.h"
+#include "importers/scad/formats/svg.h"
 #include "tests/fuzz/fuzz_support.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {

@@ -9,7 +9,7 @@
 #include <regex>
 
 #include "exporters/povray/pov_writer.h"
-#include "importers/scad/extrude.h"
+#include "importers/scad/geometry2d/extrude.h"
 #include "support/pov_pictures.h"
 #include "support/scene_builder.h"
 

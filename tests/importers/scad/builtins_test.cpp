@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "importers/scad/test_support.h"
-#include "importers/scad/value.h"
+#include "importers/scad/lang/value.h"
 
 namespace rt::scad::test {
 namespace {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // OpenSCAD 2021.01's Clipper conventions: fixed-point scaling by 2^16 with truncation,
 // even-odd sanitizing, non-zero booleans, offsets and the regions of a polygon set.
-#include "importers/scad/clipper2d.h"
+#include "importers/scad/geometry2d/clipper2d.h"
 
 #include <gtest/gtest.h>
 

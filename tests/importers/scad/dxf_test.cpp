@@ -9,7 +9,7 @@
 #include <fstream>
 
 #include "core/system/input_file.h"
-#include "importers/scad/dxf.h"
+#include "importers/scad/formats/dxf.h"
 #include "importers/scad/test_support.h"
 #include "support/temp_dir_test.h"
 

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
 // Evaluator tests: OpenSCAD 2021.01 scoping rules (openscad-subset.md sections 4 and 7),
 // recursion, comprehensions, include/use, and the limits on runaway programs.
-#include "importers/scad/evaluator.h"
+#include "importers/scad/lang/evaluator.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 
 #include "importers/mesh/mesh_test_support.h"
-#include "importers/scad/parser.h"
+#include "importers/scad/lang/parser.h"
 #include "importers/scad/test_support.h"
 
 namespace rt::scad::test {

@@ -6,7 +6,7 @@
 #include "core/meshing/facets.h"
 #include "core/ir/mesh.h"
 #include "core/ir/prism.h"
-#include "importers/scad/extrude.h"
+#include "importers/scad/geometry2d/extrude.h"
 #include "importers/scad/test_support.h"
 
 namespace rt::scad::test {

@@ -9,8 +9,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "importers/scad/evaluator.h"
-#include "importers/scad/surface.h"
+#include "importers/scad/lang/evaluator.h"
+#include "importers/scad/formats/surface.h"
 #include "importers/scad/test_support.h"
 
 namespace rt::scad::test {

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "core/ir/prism.h"
-#include "importers/scad/shape2d.h"
+#include "importers/scad/geometry2d/shape2d.h"
 #include "importers/scad/test_support.h"
 
 namespace rt::scad::test {

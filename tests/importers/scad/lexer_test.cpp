@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Lexer tests: longest-match identifiers/numbers, strings, comments, include/use, locations.
-#include "importers/scad/lexer.h"
+#include "importers/scad/lang/lexer.h"
 
 #include <gtest/gtest.h>
 

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/meshing/facets.h"
 #include "importers/mesh/mesh_reader.h"
 #include "importers/scad/test_support.h"
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Parser tests: precedence and associativity, statements, scopes, definitions, syntax errors.
-#include "importers/scad/parser.h"
+#include "importers/scad/lang/parser.h"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/ir/facet_mode.h"
-#include "importers/scad/revolve.h"
+#include "importers/scad/geometry2d/revolve.h"
 #include "importers/scad/test_support.h"
 
 namespace rt::scad::test {

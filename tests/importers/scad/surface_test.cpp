@@ -10,7 +10,7 @@
 
 #include "core/image/png_io.h"
 #include "importers/mesh/mesh_reader.h"
-#include "importers/scad/surface.h"
+#include "importers/scad/formats/surface.h"
 #include "importers/scad/test_support.h"
 #include "support/temp_dir_test.h"
 

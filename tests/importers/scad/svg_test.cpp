@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "core/system/input_file.h"
-#include "importers/scad/svg.h"
+#include "importers/scad/formats/svg.h"
 #include "importers/scad/test_support.h"
 #include "support/temp_dir_test.h"
 

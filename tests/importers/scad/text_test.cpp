@@ -10,9 +10,9 @@
 #include <fstream>
 
 #include "core/ir/diagnostics.h"
-#include "importers/scad/clipper2d.h"
+#include "importers/scad/geometry2d/clipper2d.h"
 #include "importers/scad/openscad_support.h"
-#include "importers/scad/text_render.h"
+#include "importers/scad/geometry2d/text_render.h"
 #include "importers/scad/text_support.h"
 
 namespace rt::scad::test {
