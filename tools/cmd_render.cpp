@@ -93,15 +93,14 @@ int renderOne(const RenderArgs &a, double time, const std::string &outputName) {
     co.threads = a.threads;
     auto rs = RenderScene::compile(scene, diag, co);
     RenderPlan plan = makePlan(*rs);
-    if (!a.samplesGiven) {
-        ro.samplesPerPixel = plan.defaultSamples;
-        ro.adaptive = (plan.adaptive || a.aaGiven) && !a.noAa;
-        // Monte Carlo scenes: sampling adaptive to their noise, with a tolerance of its own
-        ro.adaptiveNoise = ro.adaptive && plan.monteCarlo;
-        if (ro.adaptiveNoise && !a.aaToleranceGiven) ro.adaptiveTolerance = kAdaptiveNoiseTolerance;
-    }
-    bool chosen = !a.samplesGiven && !a.aaGiven;  // else the user chose
-    if (a.plan) std::fputs(describePlan(*rs, scene.stats, plan, ro, chosen).c_str(), stderr);
+    SamplingRequest sampling;
+    sampling.samplesGiven = a.samplesGiven;
+    sampling.adaptiveGiven = a.aaGiven;
+    sampling.toleranceGiven = a.aaToleranceGiven;
+    sampling.noAdaptive = a.noAa;
+    chooseSampling(plan, sampling, ro);
+    if (a.plan)
+        std::fputs(describePlan(*rs, scene.stats, plan, ro, sampling.planChooses()).c_str(), stderr);
 
     bool tty = !a.quiet && isatty(STDERR_FILENO);
     if (tty)

@@ -145,4 +145,13 @@ std::string describePlan(const RenderScene &scene, const ir::ImportStats &import
     return os.str();
 }
 
+void chooseSampling(const RenderPlan &plan, const SamplingRequest &request, RenderOptions &ro) {
+    if (request.samplesGiven) return;
+    ro.samplesPerPixel = plan.defaultSamples;
+    ro.adaptive = (plan.adaptive || request.adaptiveGiven) && !request.noAdaptive;
+    // Monte Carlo scenes: sampling adaptive to their noise, with a tolerance of its own
+    ro.adaptiveNoise = ro.adaptive && plan.monteCarlo;
+    if (ro.adaptiveNoise && !request.toleranceGiven) ro.adaptiveTolerance = kAdaptiveNoiseTolerance;
+}
+
 }  // namespace rt

@@ -28,6 +28,22 @@ struct RenderPlan {
 
 RenderPlan makePlan(const RenderScene &scene);
 
+/// The sampling a caller asked for; whatever it leaves open, the plan decides (chooseSampling).
+struct SamplingRequest {
+    bool samplesGiven = false;    ///< a uniform count (RenderOptions::samplesPerPixel) was given
+    bool adaptiveGiven = false;   ///< an adaptive setting was given: adaptive even where the
+                                  ///< plan would sample uniformly
+    bool toleranceGiven = false;  ///< RenderOptions::adaptiveTolerance was given
+    bool noAdaptive = false;      ///< adaptive antialiasing refused
+    /// Whether the plan chose the sampling (for describePlan): nothing about it was given.
+    bool planChooses() const { return !samplesGiven && !adaptiveGiven; }
+};
+
+/// Fills in the samples per pixel and the adaptive settings of `ro` that `request` leaves
+/// open, as the plan says: sharp scenes adaptive from one sample, Monte Carlo scenes a few
+/// samples everywhere, or adaptive to their noise with its own tolerance when asked.
+void chooseSampling(const RenderPlan &plan, const SamplingRequest &request, RenderOptions &ro);
+
 /// The plan as text, a few lines: features in use and why, objects kept and dropped, the
 /// acceleration structure, the sampling of `render` (uniform or adaptive, chosen by the plan
 /// when `chosen`).
