@@ -133,7 +133,7 @@ void encodeVideo(const std::string &output, int n, double fps, const std::string
     }
     if (!programOnPath("ffmpeg"))
         throw std::runtime_error("cannot encode " + video +
-                                 ": ffmpeg is not installed (tools/setup.sh installs it)");
+                                 ": ffmpeg is not installed (scripts/setup.sh installs it)");
 
     // Written beside the target under a temporary name and renamed when ffmpeg succeeds
     std::string vext = lowerExtension(video);
@@ -200,7 +200,7 @@ int runAnimation(const AnimationArgs &a, const std::string &scene, const std::st
         if (!programOnPath("ffmpeg")) {
             std::fprintf(stderr,
                          "scadray: warning: ffmpeg is not installed: %d frames written, no video "
-                         "%s (tools/setup.sh installs ffmpeg)\n",
+                         "%s (scripts/setup.sh installs ffmpeg)\n",
                          a.frames, video.c_str());
             return kExitOk;
         }

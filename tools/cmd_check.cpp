@@ -84,7 +84,7 @@ CheckResult checkGeometry(const CheckArgs &a, CsvRow &csv) {
                                     a.scene.facets + " cannot be used with it");
 
     if (!openscadAvailable())
-        throw std::invalid_argument("OpenSCAD (openscad) is not installed; tools/setup.sh installs it");
+        throw std::invalid_argument("OpenSCAD (openscad) is not installed; scripts/setup.sh installs it");
     CheckFiles file(a);
     LoadOptions lo = a.scene.loadOptions(true);
     lo.aspect = double(a.width) / a.height;
@@ -173,7 +173,7 @@ CheckResult checkPovray(const CheckArgs &a, CsvRow &csv) {
     ro.sampleClamp = a.compare.clampMax;  // POV-Ray's PNG clips every sub-sample at 1
     validateRenderOptions(ro);
     if (!pov::povrayAvailable())
-        throw std::invalid_argument("POV-Ray (povray) is not installed; tools/setup.sh installs it");
+        throw std::invalid_argument("POV-Ray (povray) is not installed; scripts/setup.sh installs it");
 
     CheckFiles file(a);
     const std::string &stem = file.stem;

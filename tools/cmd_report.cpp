@@ -242,10 +242,10 @@ int runReport(const ReportArgs &ra) {
         throw std::invalid_argument("report: no scenes and no check figures (*_check.json) found");
     if (!scenes.empty() && !pov::povrayAvailable())
         throw std::invalid_argument(
-            "POV-Ray (povray) is not installed; tools/setup.sh installs it");
+            "POV-Ray (povray) is not installed; scripts/setup.sh installs it");
     if (!scenes.empty() && ra.openscad && !openscadAvailable())
         throw std::invalid_argument(
-            "OpenSCAD (openscad) is not installed; tools/setup.sh installs it");
+            "OpenSCAD (openscad) is not installed; scripts/setup.sh installs it");
     // Fail on a bad -D before any work
     (void)ra.check.scene.loadOptions(true);
 

@@ -27,7 +27,7 @@ OpenScadRun exportWithOpenScad(const std::string &scene, const std::string &mesh
                                const std::vector<std::string> &libraryPaths, int timeoutSeconds) {
     namespace fs = std::filesystem;
     if (!openscadAvailable())
-        throw std::invalid_argument("OpenSCAD (openscad) is not installed; tools/setup.sh installs it");
+        throw std::invalid_argument("OpenSCAD (openscad) is not installed; scripts/setup.sh installs it");
     // Written under a short temporary name beside it and renamed on success: never a
     // half-written mesh, and removed on an interrupt
     TempFile partialFile(meshFile, ".stl");

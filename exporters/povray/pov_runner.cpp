@@ -78,7 +78,7 @@ void vetExportedScene(const fs::path &dir, const std::string &iniFile) {
 PovRunResult runPovRay(const std::string &dir, const std::string &iniFile, int threads,
                        int timeoutSeconds) {
     if (!povrayAvailable())
-        throw std::runtime_error("POV-Ray (povray) is not installed; tools/setup.sh installs it");
+        throw std::runtime_error("POV-Ray (povray) is not installed; scripts/setup.sh installs it");
     vetExportedScene(dir.empty() ? "." : dir, iniFile);
     std::vector<std::string> args = {"povray", iniFile};
     if (threads > 0) args.push_back("+WT" + std::to_string(threads));

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Writes a subdivided icosahedron of 20 * 4^levels triangles as a binary STL, for the mesh
-// benchmark script (tools/bench_mesh.sh). Usage: icosphere_stl OUT.stl LEVELS
+// benchmark script (scripts/bench_mesh.sh). Usage: icosphere_stl OUT.stl LEVELS
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>

@@ -1,4 +1,4 @@
-// Benchmark (tools/bench_vs_openscad.sh): a plate with 16 bores rounded by a Minkowski sum
+// Benchmark (scripts/bench_vs_openscad.sh): a plate with 16 bores rounded by a Minkowski sum
 // with a sphere: the plate is not convex, so it is summed as itself moved plus a hull of the
 // sphere with each convex piece of its boundary.
 minkowski() {

@@ -1,4 +1,4 @@
-// Benchmark (tools/bench_vs_openscad.sh): the shadow of a finely faceted ball drilled twice,
+// Benchmark (scripts/bench_vs_openscad.sh): the shadow of a finely faceted ball drilled twice,
 // seen at an angle (5,000 sphere faces, each cut to the part on the result's boundary), and
 // its section, extruded into plates.
 module drilled() rotate([30, 20, 0]) difference() {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Shared pieces of the libFuzzer targets (issue 14): a private scratch folder for the readers
+// Shared pieces of the libFuzzer targets: a private scratch folder for the readers
 // that take a path, and the one rule every target checks: bad input ends in a located error
 // (rt::LocatedError) or a documented std::exception, never a crash, a hang or an unlocated
 // surprise.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Adaptive antialiasing (issue 15): the same picture as uniform 64 samples per pixel within
+// Adaptive antialiasing: the same picture as uniform 64 samples per pixel within
 // `compare`, with a fraction of the samples; refined pixels are exactly uniform sampling's; the
 // picture is the same for any thread count and tile size; pixels that differ from a neighbour
 // (edges, shadow boundaries) are the ones refined.

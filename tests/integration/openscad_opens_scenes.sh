@@ -6,7 +6,7 @@
 set -uo pipefail
 scenes_dir=$1
 if ! command -v openscad >/dev/null 2>&1; then
-    echo "SKIPPED: openscad is not installed (tools/setup.sh installs it)"
+    echo "SKIPPED: openscad is not installed (scripts/setup.sh installs it)"
     exit 77
 fi
 tmp=$(mktemp -d)

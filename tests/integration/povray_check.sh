@@ -5,7 +5,7 @@
 set -uo pipefail
 scadray=$1 scene=$2 out=$3
 if ! command -v povray >/dev/null 2>&1; then
-    echo "SKIPPED: POV-Ray (povray) is not installed; tools/setup.sh installs it"
+    echo "SKIPPED: POV-Ray (povray) is not installed; scripts/setup.sh installs it"
     exit 77
 fi
 "$scadray" check "$scene" -o "$out"

@@ -9,11 +9,11 @@ set -uo pipefail
 scadray=$1 scenes=$2 out=$(realpath -m "$3")
 chromium=$(command -v chromium || command -v chromium-browser || true)
 if [ -z "$chromium" ]; then
-    echo "SKIPPED: Chromium (chromium) is not installed; tools/setup.sh installs it"
+    echo "SKIPPED: Chromium (chromium) is not installed; scripts/setup.sh installs it"
     exit 77
 fi
 if ! command -v povray >/dev/null 2>&1; then
-    echo "SKIPPED: POV-Ray (povray) is not installed; tools/setup.sh installs it"
+    echo "SKIPPED: POV-Ray (povray) is not installed; scripts/setup.sh installs it"
     exit 77
 fi
 rm -rf "$out"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Rendering a picture in horizontal bands (issue 18, `render --tile`): every band's pixels,
+// Rendering a picture in horizontal bands (`render --tile`): every band's pixels,
 // ties and adaptive levels are bit for bit those of the whole picture, for uniform sampling,
 // sampling adaptive to edges (whose decisions read the neighbours' centres across a band's
 // border) and sampling adaptive to Monte Carlo noise.

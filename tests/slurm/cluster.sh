@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# A private single-node Slurm cluster on this machine, for the tests of tools/slurm/ and for
-# measuring them (issue 18). Its own munge key and socket, its own ports, configuration, state
+# A private single-node Slurm cluster on this machine, for the tests of scripts/slurm/ and for
+# measuring them. Its own munge key and socket, its own ports, configuration, state
 # and logs, all in one temporary folder: a system Slurm or munge, if any, is neither used nor
 # touched. Every daemon it starts is stopped when it ends, also on failure or interrupt.
 #

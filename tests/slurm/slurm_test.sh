@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# tools/slurm/ on a real Slurm cluster (issue 18): brings up a private single-node cluster
-# (cluster.sh), submits with tools/slurm/submit.sh a 4-tile render, a 3-frame animation and a
+# scripts/slurm/ on a real Slurm cluster: brings up a private single-node cluster
+# (cluster.sh), submits with scripts/slurm/submit.sh a 4-tile render, a 3-frame animation and a
 # check of five scenes (three under awkward names), waits for them, and checks the merged picture and the frames against one
 # process's bit for bit, and the check summary's lines. Stops every daemon it started, also on
 # failure. Skipped (77) without Slurm, munge or root; the animation without ffmpeg and the check
@@ -24,7 +24,7 @@ trap 'exit 130' INT TERM
 rm -rf "$work"
 mkdir -p "$work"
 start_cluster || exit 1
-submit="$src/tools/slurm/submit.sh"
+submit="$src/scripts/slurm/submit.sh"
 # Seconds a submission may take before the test gives up on it (3 of them within ctest's 900)
 limit=240
 failures=0

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Hostile input to the command line and its diagnostics (issue 14): a flood of warnings stays
+// Hostile input to the command line and its diagnostics: a flood of warnings stays
 // bounded in memory and output, every numeric option refuses out-of-range values, NaN and
 // infinities before converting them, a FIFO or a device as a scene is refused before it is
 // opened, and neither an interrupt nor a long output name leaves a temporary file behind.

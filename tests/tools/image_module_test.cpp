@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// OpenImageIO stays out of start-up (issue 15): neither scadray nor a binary linking rt_core
+// OpenImageIO stays out of start-up: neither scadray nor a binary linking the core
 // needs libOpenImageIO; it comes with the module scadray_oiio.so, loaded for non-PNG images only,
 // and a missing module is a clear error naming it, the paths tried and the file.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// `scadray render --tile K/N` and `scadray merge` (issue 18): the merged picture is the single
+// `scadray render --tile K/N` and `scadray merge`: the merged picture is the single
 // render's, bit for bit, as PNG and as EXR; merge refuses tiles of other scenes, sizes, seeds or
 // options, overlapping tiles, and names the tiles missing from a partial set.
 #include <gtest/gtest.h>

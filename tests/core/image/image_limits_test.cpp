@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Image headers declaring more than the file can hold or than the limits allow (issue 14): the
+// Image headers declaring more than the file can hold or than the limits allow: the
 // reader refuses them before allocating the declared pixels.
 #include "core/image/image_limits.h"
 

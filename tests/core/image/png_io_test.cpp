@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// PNG through libpng gives exactly what OpenImageIO gave (issue 15): every kind of PNG (grey,
+// PNG through libpng gives exactly what OpenImageIO gave: every kind of PNG (grey,
 // palette, RGB, alpha; 1 to 16 bits; sRGB, gAMA 1.0, gAMA 2.2 or nothing; interlaced) reads to the
 // same floats both ways, and PNGs written both ways decode to the same pixels.
 #include "core/image/png_io.h"

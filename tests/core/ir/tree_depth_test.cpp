@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Deep scene trees (issue 14): freeing any tree never recurses; a tree deeper than
+// Deep scene trees: freeing any tree never recurses; a tree deeper than
 // ir::kMaxTreeDepth is a located error before any recursive walk; a tree exactly that deep
 // validates, compiles and renders on the stacks the CLI and the render workers have.
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // glTF geometry as a viewer shows it: vertex colours, second UV set, tangents, quantized
-// attributes, Draco and meshopt compression, skins, morph targets and GPU instancing (issue 17).
+// attributes, Draco and meshopt compression, skins, morph targets and GPU instancing.
 #include <draco/compression/decode.h>
 #include <draco/compression/encode.h>
 #include <draco/mesh/triangle_soup_mesh_builder.h>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// glTF files written to harm (issue 14): URIs reaching outside the model's folder, non-regular
+// glTF files written to harm: URIs reaching outside the model's folder, non-regular
 // files, JSON that recursion or regular expressions choke on, headers declaring huge textures,
 // GLB buffers that multiply the BIN chunk. Each is a located error or a warning, read nothing
 // it should not and allocate nothing it declares before checking it.

@@ -346,7 +346,7 @@ TEST(GltfImport, GlbDecodesItsEmbeddedPngAndCamera) {
 }
 
 TEST(GltfImport, MetalRoughSpheresImportsAMillionInstancedTriangles) {
-    // Speed is measured by tools/bench_mesh.sh, not asserted here
+    // Speed is measured by scripts/bench_mesh.sh, not asserted here
     REQUIRE_GLTF_SAMPLE("MetalRoughSpheresNoTextures.glb");
     DiagnosticSink diag;
     ir::Scene scene = importGltf(sample("MetalRoughSpheresNoTextures.glb"), diag);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// glTF materials evaluated per texel (issue 17): known-answer renders of generated models. A
+// glTF materials evaluated per texel: known-answer renders of generated models. A
 // normal-mapped flat quad shades like the faceted relief it encodes, a roughness texture like
 // quads of constant roughness, alpha MASK cuts holes that rays and shadow rays pass, BLEND
 // alpha from a texture equals the factor's, occlusion scales only the ambient term; and the

@@ -313,7 +313,7 @@ TEST(Text, UsedFontFileIsFound) {
     fs::create_directories(dir);
     if (!writeRenamedFont("Scadraytsu", dir / "renamed.ttf")) {
         fs::remove_all(dir);
-        GTEST_SKIP() << kLiberationSans << " is missing (tools/setup.sh installs fonts-liberation)";
+        GTEST_SKIP() << kLiberationSans << " is missing (scripts/setup.sh installs fonts-liberation)";
     }
     // Without use<> the family is not installed; with it the text is Liberation Sans' shape
     std::string scene = "linear_extrude(1) text(\"Ag\", font=\"Scadraytsu Sans\");";

@@ -7,7 +7,7 @@
 #   scadray render of a one-cube scene at 1x1 to PNG (libpng, no OpenImageIO)
 #   the same to EXR (loads the OpenImageIO module, scadray_oiio.so)
 #   POV-Ray rendering scadray's export of the same scene at 1x1 (skipped where povray is absent)
-# Usage: tools/bench_startup.sh [build-dir] [runs]
+# Usage: scripts/bench_startup.sh [build-dir] [runs]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}
@@ -65,5 +65,5 @@ if command -v povray >/dev/null 2>&1; then
     # POV-Ray as `scadray check` runs it: in the scene's folder, HOME there (no user povray.conf)
     best "povray 1x1 (scadray's export)" env -C "$tmp" HOME="$tmp" povray cube.ini -D -V +WT1
 else
-    echo "povray is not installed: POV-Ray's start-up skipped (tools/setup.sh installs it)"
+    echo "povray is not installed: POV-Ray's start-up skipped (scripts/setup.sh installs it)"
 fi

@@ -6,7 +6,7 @@
 # Whole processes are timed (parse, build, trace, write): CPU seconds (user + system) and wall
 # seconds, best of RUNS. Prints a Markdown table with POV-Ray's time over scadray's: CPU time
 # for one thread, wall time for two.
-# Usage: tools/bench_povray.sh [-b BUILD_DIR] [-r RUNS] [-k "3 4"] [-t "1 2"] [SCENE ...]
+# Usage: scripts/bench_povray.sh [-b BUILD_DIR] [-r RUNS] [-k "3 4"] [-t "1 2"] [SCENE ...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=build runs=1 ks="3 4" threads="1 2"
@@ -25,9 +25,9 @@ scenes=("$@")
     scenes=(scenes/default.scad scenes/lecture_csg.scad scenes/csg_part.scad scenes/print_plate.scad
         scenes/mirrors.scad scenes/glass.scad scenes/crosscheck/meshes.scad)
 bin=$build/tools/scadray
-[[ -x $bin ]] || { echo "bench_povray: $bin is not built (tools/build.sh)" >&2; exit 1; }
+[[ -x $bin ]] || { echo "bench_povray: $bin is not built (scripts/build.sh)" >&2; exit 1; }
 if ! command -v povray >/dev/null; then
-    echo "bench_povray: povray is not installed (tools/setup.sh installs it); nothing to compare" >&2
+    echo "bench_povray: povray is not installed (scripts/setup.sh installs it); nothing to compare" >&2
     exit 0
 fi
 width=640 height=480

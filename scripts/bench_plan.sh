@@ -5,12 +5,12 @@
 # naive ray tracer casts them), best of N runs each, at the same size and sample count. Prints
 # a Markdown table: time, rays, shadow rays, span merges, pruned subtrees, solids, and whether
 # the two pictures are identical. A benchmark, not a test.
-# Usage: tools/bench_plan.sh [WIDTH HEIGHT RUNS]   (default 640 480 3)
+# Usage: scripts/bench_plan.sh [WIDTH HEIGHT RUNS]   (default 640 480 3)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 width=${1:-640} height=${2:-480} runs=${3:-3}
 bin=./build/tools/scadray
-[[ -x $bin ]] || ./tools/build.sh
+[[ -x $bin ]] || ./scripts/build.sh
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Benchmark (not a test) of CSG with many operands, issue 15's plate: a 2 mm plate
+# Benchmark (not a test) of CSG with many operands: a 2 mm plate
 # difference() { cube(...); for (...) translate(...) cylinder(...); } with N round holes on a
 # 1 mm grid, N = 100, 1,000, 10,000 and 100,000, rendered whole at 640x480 by `scadray render`.
 # Prints a Markdown table: the render time scadray reports (tracing), the whole run's wall time
@@ -9,7 +9,7 @@
 # to N = 1,000: its cost grows with N per ray (438 s at 10,000 holes on this machine).
 # Then the Google Benchmark of the CSG nodes alone (build/tests/csg_bench): time per ray that
 # hits and per ray that misses for plates, unions and intersections of N = 10 ... 100,000.
-# Usage: tools/bench_csg.sh [build-dir] [threads] [csg_bench options...]
+# Usage: scripts/bench_csg.sh [build-dir] [threads] [csg_bench options...]
 #   threads: 1 by default (0 = all cores); e.g. --benchmark_filter=ray for csg_bench
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -24,7 +24,7 @@ plate() {  # N: writes $tmp/plate_N.scad, a side x side grid cut to N holes
     local n=$1 side
     side=$(awk -v n="$n" 'BEGIN { s = int(sqrt(n)); if (s * s < n) s++; print s }')
     cat >"$tmp/plate_$n.scad" <<EOF
-// issue 15: a plate with $n holes
+// a plate with $n holes
 n = $n;
 side = $side;
 difference() {

@@ -5,11 +5,11 @@
 # unsupported-feature warning; that is decided here, at run time, so the list grows with the
 # importer.
 #
-#   tools/openscad_coverage.sh [-b SCADRAY] [-o OUTDIR] [-W W] [-H H] [FILE...]
+#   scripts/openscad_coverage.sh [-b SCADRAY] [-o OUTDIR] [-W W] [-H H] [FILE...]
 #       prints a table (file, covered or the unsupported features, result, differing pixels,
 #       OpenSCAD time, scadray time) and the counts. Without FILEs: every example installed with
 #       OpenSCAD (/usr/share/openscad/examples, read in place) and every scene under scenes/.
-#   tools/openscad_coverage.sh --test -b SCADRAY -o OUTDIR FILE
+#   scripts/openscad_coverage.sh --test -b SCADRAY -o OUTDIR FILE
 #       one file as a test: exit 0 agrees, 1 differs or fails, 77 skipped (no openscad, not
 #       covered, or no 3D geometry to compare).
 set -uo pipefail
@@ -30,7 +30,7 @@ while [ $# -gt 0 ]; do
     esac
 done
 if ! command -v openscad >/dev/null 2>&1; then
-    echo "SKIPPED: openscad is not installed (tools/setup.sh installs it)"
+    echo "SKIPPED: openscad is not installed (scripts/setup.sh installs it)"
     exit 77
 fi
 if [ ! -x "$scadray" ]; then

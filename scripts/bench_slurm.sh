@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Benchmark (not a test) of rendering across machines: one scene rendered by one process on
-# every core, then in TILES tiles through Slurm (tools/slurm/submit.sh, one core a tile) on the
+# every core, then in TILES tiles through Slurm (scripts/slurm/submit.sh, one core a tile) on the
 # private single-node cluster of tests/slurm/cluster.sh; prints both wall times, the tiles'
 # CPU seconds, and whether the two pictures are the same bit for bit. On one machine the cluster
 # cannot be faster than one multi-threaded process: the figure is the cost of the scheduling,
 # the scene read once per tile and the bordering rows each tile traces again.
 # Needs root, slurm-wlm and munge (as the test). Usage:
-#   tools/bench_slurm.sh [build-dir] [scene] [width] [height] [tiles] [render options...]
+#   scripts/bench_slurm.sh [build-dir] [scene] [width] [height] [tiles] [render options...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}
@@ -34,7 +34,7 @@ single=$(ms "$start" "$(now)")
 cat >"$tmp/in_cluster.sh" <<EOF
 set -e
 start=\$(date +%s%N)
-tools/slurm/submit.sh render --wait -n $tiles --scadray "$scadray" -o "$tmp/tiled.png" "$scene" \
+scripts/slurm/submit.sh render --wait -n $tiles --scadray "$scadray" -o "$tmp/tiled.png" "$scene" \
     -W $width -H $height ${options[*]} >/dev/null
 echo "\$(((\$(date +%s%N) - start) / 1000000))" >"$tmp/tiled_ms"
 EOF

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: MIT
 # Runs `scadray check` on every scene one after another (so timings are not disturbed by a
 # parallel test) and prints a Markdown table of error against run time for the README.
-# Usage: tools/crosscheck.sh [build-dir] [extra check options...]
+# Usage: scripts/crosscheck.sh [build-dir] [extra check options...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}

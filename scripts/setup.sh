@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Installs the Debian 12 packages scadray needs to build, test and compare renders; installs only what is missing.
-# clang and libclang-rt-14-dev (libFuzzer and the sanitizer runtimes) serve tools/sanitize.sh and tools/fuzz.sh.
+# clang and libclang-rt-14-dev (libFuzzer and the sanitizer runtimes) serve scripts/sanitize.sh and scripts/fuzz.sh.
 # openscad-mcad is OpenSCAD's MCAD library (LGPL, read in place), which examples/Old/example023.scad uses.
 set -euo pipefail
 
@@ -19,7 +19,7 @@ packages=(
     libembree-dev
     libjs-chart.js  # Chart.js, embedded into `scadray report` pages for the converge plots
     chromium  # the headless browser of the report's test (tests/integration/report_browser.sh)
-    slurm-wlm munge  # the private Slurm cluster of the tests of tools/slurm/ (tests/slurm/cluster.sh)
+    slurm-wlm munge  # the private Slurm cluster of the tests of scripts/slurm/ (tests/slurm/cluster.sh)
 )
 
 missing=()

@@ -5,14 +5,14 @@
 # triggered it. Each suite runs as one process; SANITIZE_GTEST_FILTER replaces the default
 # filter (which leaves out the OpenSCAD cross-checks).
 #
-#   ./tools/sanitize.sh                 configure, build, run the core/scad/gltf/meshio/cli/exporter tests
-#   ./tools/sanitize.sh --build T...    only configure build-asan/ and build targets T (tools/fuzz.sh)
+#   ./scripts/sanitize.sh                 configure, build, run the core/scad/gltf/meshio/cli/exporter tests
+#   ./scripts/sanitize.sh --build T...    only configure build-asan/ and build targets T (scripts/fuzz.sh)
 #
 # The same build holds the libFuzzer targets (SCADRAY_FUZZ instruments everything for coverage;
 # the unit tests run unaffected), so the CI compiles the project once with clang, not twice.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-./tools/setup.sh
+./scripts/setup.sh
 launcher=()
 if command -v ccache >/dev/null; then
     launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
@@ -37,7 +37,7 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$(pwd)/tests/fuzz/lsan.supp:print_suppressions=0"
 # Each suite runs as one process (ctest starts one per test, ~5 s each under ASan): two at a
 # time, in the build's tests folder as ctest would. OpenSCAD cross-checks run OpenSCAD itself,
-# unsanitized and slow, and test geometry, not memory safety: left to tools/test.sh.
+# unsanitized and slow, and test geometry, not memory safety: left to scripts/test.sh.
 filter=${SANITIZE_GTEST_FILTER:-"-OpenScad*CrossCheck.*"}
 mkdir -p build-asan/sanitize
 run_suite() {

@@ -4,7 +4,7 @@
 # default scene to out/default.png (pass another scene and output to render those instead).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-./tools/build.sh
+./scripts/build.sh
 scene=${1:-scenes/default.scad}
 output=${2:-out/default.png}
 mkdir -p "$(dirname "$output")"

@@ -8,7 +8,7 @@
 #   build-asan/tests/fuzz/<target>_fuzz -minimize_crash=1 -runs=10000 <input>
 # and keep it under tests/fuzz/regressions/<target>/, which every later run replays first.
 #
-#   ./tools/fuzz.sh [seconds] [target...]    seconds per target (default 60); targets:
+#   ./scripts/fuzz.sh [seconds] [target...]    seconds per target (default 60); targets:
 #                                            scad gltf glb stl off image pov dxf svg surface
 #                                            report cli (default: all)
 # The corpus grows in build-asan/fuzz/corpus/<target>/ between runs on one machine.
@@ -24,7 +24,7 @@ for t in "${targets[@]}"; do
     if [[ ! " ${all[*]} " =~ " $t " ]]; then echo "fuzz: unknown target '$t' (${all[*]})" >&2; exit 2; fi
 done
 
-./tools/sanitize.sh --build "${targets[@]/%/_fuzz}"
+./scripts/sanitize.sh --build "${targets[@]/%/_fuzz}"
 
 work=$root/build-asan/fuzz
 mkdir -p "$work"

@@ -4,15 +4,15 @@
 # (ctest --output-junit). Skips are ctest's "notrun" tests: exit code 77 (SKIP_RETURN_CODE) and
 # GTEST_SKIP (gtest_discover_tests gives every gtest SKIP_REGULAR_EXPRESSION "[  SKIPPED ]").
 #
-#   tools/check_skips.sh [--strict] JUNIT.xml [ALLOWED]
+#   scripts/check_skips.sh [--strict] JUNIT.xml [ALLOWED]
 #
-# --strict (tools/test.sh passes it when CI=true): exits 1 when a skipped test's message matches
+# --strict (scripts/test.sh passes it when CI=true): exits 1 when a skipped test's message matches
 # no line of ALLOWED (default tests/ci_allowed_skips.txt: extended regular expressions, '#'
 # comments), that is when a test skipped for a reason CI could have met.
 set -euo pipefail
 strict=0
 if [[ ${1:-} == --strict ]]; then strict=1; shift; fi
-junit=${1:?usage: tools/check_skips.sh [--strict] JUNIT.xml [ALLOWED]}
+junit=${1:?usage: scripts/check_skips.sh [--strict] JUNIT.xml [ALLOWED]}
 allowed=${2:-$(dirname "$0")/../tests/ci_allowed_skips.txt}
 if [[ ! -f $junit ]]; then
     echo "check_skips: no test results in $junit (did ctest run?)" >&2

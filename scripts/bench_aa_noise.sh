@@ -1,13 +1,13 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
-# Sampling adaptive to Monte Carlo noise against uniform sampling (issue 15): renders each Monte
+# Sampling adaptive to Monte Carlo noise against uniform sampling: renders each Monte
 # Carlo scene at uniform 4, 16 and 64 spp and adaptive to noise (`--aa-max 64 --aa-tolerance T`)
 # for each T of TOLS, and prints per render the mean samples per pixel, the render CPU seconds
 # and the error against uniform REF spp: the RMSE over every pixel and the RMSE on the edge
 # pixels `compare` masks (both in linear units, from `scadray compare`). Prints figures; it is
 # not a test.
 #
-#   tools/bench_aa_noise.sh [scadray] [scene.scad ...]
+#   scripts/bench_aa_noise.sh [scadray] [scene.scad ...]
 #   env: W=240 H=180 REF=256 THREADS=2 TOLS="0.05 0.02 0.01"
 set -eu
 here=$(cd "$(dirname "$0")/.." && pwd)

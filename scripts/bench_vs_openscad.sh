@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: MIT
 # Benchmark (not a test): for each .scad file (default: tests/bench/*.scad), the wall time of
 # scadray's parse + build + render at 640x480 and of `openscad -o x.stl` on the same file.
-# Usage: tools/bench_vs_openscad.sh [-b BUILD_DIR] [FILE.scad ...]
+# Usage: scripts/bench_vs_openscad.sh [-b BUILD_DIR] [FILE.scad ...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=build

@@ -1,6 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
-# Adaptive antialiasing against uniform sampling (issue 15): renders every scene at today's old
+# Adaptive antialiasing against uniform sampling: renders every scene at today's old
 # default (-s 1), the adaptive default and uniform -s REF, and prints per scene the render time
 # (CPU seconds of the render, all threads, without start-up, the best of REPEAT runs; CPU time
 # because other processes inflate wall time), the ratio of adaptive to 1 spp,
@@ -9,7 +9,7 @@
 # 1 spp against uniform REF spp (PASS/FAIL and the RMSE on the edge pixels compare masks, where
 # antialiasing shows). Prints figures; it is not a test.
 #
-#   tools/bench_aa.sh [scadray] [scene.scad ...]
+#   scripts/bench_aa.sh [scadray] [scene.scad ...]
 #   env: W=640 H=480 REF=64 THREADS=2 REPEAT=3 AA="--aa-max 64" (extra options of the adaptive run)
 set -eu
 here=$(cd "$(dirname "$0")/.." && pwd)

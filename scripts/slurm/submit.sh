@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Submits a scadray job array and the job that finishes it, with one command (issue 18):
+# Submits a scadray job array and the job that finishes it, with one command:
 #
 #   submit.sh render [-n TILES] [-o OUT.png] [common options] SCENE [render options]
 #       TILES array tasks (render_tile.sbatch, tile K/N) and a merge (merge.sbatch) into OUT

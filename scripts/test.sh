@@ -6,12 +6,12 @@
 # fails the run unless tests/ci_allowed_skips.txt names its reason as one CI cannot meet.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-./tools/build.sh
+./scripts/build.sh
 results=$PWD/build/ctest-results.xml
 rm -f "$results"
 rc=0
 ctest --test-dir build --output-on-failure -j "$(nproc)" --output-junit "$results" "$@" || rc=$?
 strict=()
 if [[ ${CI:-} == true ]]; then strict=(--strict); fi
-./tools/check_skips.sh "${strict[@]}" "$results" tests/ci_allowed_skips.txt || rc=1
+./scripts/check_skips.sh "${strict[@]}" "$results" tests/ci_allowed_skips.txt || rc=1
 exit $rc
