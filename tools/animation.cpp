@@ -51,8 +51,9 @@ std::string videoFile(const AnimationArgs &a, const std::string &output) {
 /// Usage errors (exit 2) found before any frame is rendered.
 void checkUsage(const AnimationArgs &a, const std::string &scene, const std::string &output) {
     if (output.empty())
-        throw std::invalid_argument("--encode-only needs -o, the image name the frames derive from "
-                                    "(name.png for name_0000.png ...)");
+        throw std::invalid_argument(
+            "--encode-only needs -o, the image name the frames derive from "
+            "(name.png for name_0000.png ...)");
     if (!a.encodeOnly && lowerExtension(scene) != ".scad")
         throw std::invalid_argument("--frames animates a .scad scene through $t; '" + scene +
                                     "' is a static scene (glTF animations are not read)");
@@ -118,8 +119,8 @@ std::string framePattern(const std::string &output, int n) {
     };
     fs::path p(output);
     std::string folder = p.has_parent_path() ? p.parent_path().string() + "/" : "";
-    return "file:" + literal(folder + p.stem().string()) + "_%0" +
-           std::to_string(frameDigits(n)) + "d" + literal(p.extension().string());
+    return "file:" + literal(folder + p.stem().string()) + "_%0" + std::to_string(frameDigits(n)) +
+           "d" + literal(p.extension().string());
 }
 
 void encodeVideo(const std::string &output, int n, double fps, const std::string &video) {
@@ -144,9 +145,9 @@ void encodeVideo(const std::string &output, int n, double fps, const std::string
     std::vector<std::string> args = {"ffmpeg", "-nostdin", "-hide_banner", "-y"};
     // EXR frames hold linear values: shown through the sRGB curve, as a PNG frame is
     if (lowerExtension(output) == ".exr") args.insert(args.end(), {"-apply_trc", "iec61966_2_1"});
-    args.insert(args.end(), {"-f", "image2", "-pattern_type", "sequence", "-framerate", rate,
-                             "-start_number", "0", "-i", framePattern(output, n), "-frames:v",
-                             std::to_string(n)});
+    args.insert(args.end(),
+                {"-f", "image2", "-pattern_type", "sequence", "-framerate", rate, "-start_number",
+                 "0", "-i", framePattern(output, n), "-frames:v", std::to_string(n)});
     if (vext == ".gif") {
         // One palette made from all frames, looping forever
         args.insert(args.end(),
@@ -208,8 +209,8 @@ int runAnimation(const AnimationArgs &a, const std::string &scene, const std::st
     auto t0 = clock::now();
     encodeVideo(output, a.frames, a.fps, video);
     if (!quiet)
-        std::fprintf(stderr, "scadray: %s: %d frames at %s fps, %.3f s\n", video.c_str(),
-                     a.frames, exactText(a.fps).c_str(),
+        std::fprintf(stderr, "scadray: %s: %d frames at %s fps, %.3f s\n", video.c_str(), a.frames,
+                     exactText(a.fps).c_str(),
                      std::chrono::duration<double>(clock::now() - t0).count());
     return kExitOk;
 }

@@ -22,7 +22,7 @@ constexpr int kMaxFrames = 1'000'000;
 
 /// The animation options of `render`.
 struct AnimationArgs {
-    int frames = 0;     ///< --frames N; 0 = one still picture
+    int frames = 0;  ///< --frames N; 0 = one still picture
     double fps = kDefaultFps;
     int frame = -1;     ///< --frame I: only this frame (a job array's share); -1 = all
     std::string video;  ///< --video; empty = <output stem>.mp4
@@ -53,7 +53,8 @@ std::string framePattern(const std::string &output, int n);
 /// --encode-only; `output` the image name the frame names derive from. A failing frame ends
 /// the run with a line naming it, its exception passed on.
 int runAnimation(const AnimationArgs &args, const std::string &scene, const std::string &output,
-                 bool quiet, const std::function<void(double time, const std::string &path)> &renderFrame);
+                 bool quiet,
+                 const std::function<void(double time, const std::string &path)> &renderFrame);
 
 /// Encodes frames 0..n-1 of `output` (frameFileName) into `video` (.mp4: H.264, yuv420p, an odd
 /// width or height padded by one black line; .gif: a palette made for the frames) at `fps`.

@@ -2,9 +2,9 @@
 // The scene options, diagnostic printing and POV-Ray reference of the CLI.
 #include "tools/cli_common.h"
 
-#include <CLI/CLI.hpp>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <CLI/CLI.hpp>
 
 #include <atomic>
 #include <cerrno>

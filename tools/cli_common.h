@@ -18,7 +18,7 @@
 namespace CLI {
 class App;
 class Option;
-}
+}  // namespace CLI
 
 namespace rt::cli {
 
@@ -77,8 +77,8 @@ constexpr int kMaxTimeoutSeconds = 7 * 24 * 3600;
 /// of range, text, NaN or an infinity) is a usage error naming the option and the range,
 /// raised before the value is converted, so nothing downstream sees an overflowed number.
 /// The range shows in --help. `loOpen` excludes lo itself.
-CLI::Option *addNumber(CLI::App &cmd, const std::string &names, int &value,
-                       const std::string &help, int lo, int hi);
+CLI::Option *addNumber(CLI::App &cmd, const std::string &names, int &value, const std::string &help,
+                       int lo, int hi);
 CLI::Option *addNumber(CLI::App &cmd, const std::string &names, long &value,
                        const std::string &help, long lo, long hi);
 CLI::Option *addNumber(CLI::App &cmd, const std::string &names, long long &value,

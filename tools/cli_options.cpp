@@ -69,8 +69,10 @@ CLI::Option *addRanged(CLI::App &cmd, const std::string &names, T &value, const 
     CLI::Validator check(
         [lo, hi, loOpen, range, kind](std::string &text) -> std::string {
             T v{};
-            if (!parseNumber(text, v)) return "must be " + std::string(kind) + " " + range + ", not '" + text + "'";
-            if (v < lo || (loOpen && v == lo) || v > hi) return "must be " + range + ", not " + text;
+            if (!parseNumber(text, v))
+                return "must be " + std::string(kind) + " " + range + ", not '" + text + "'";
+            if (v < lo || (loOpen && v == lo) || v > hi)
+                return "must be " + range + ", not " + text;
             return {};
         },
         range);
@@ -79,8 +81,8 @@ CLI::Option *addRanged(CLI::App &cmd, const std::string &names, T &value, const 
 
 }  // namespace
 
-CLI::Option *addNumber(CLI::App &cmd, const std::string &names, int &value,
-                       const std::string &help, int lo, int hi) {
+CLI::Option *addNumber(CLI::App &cmd, const std::string &names, int &value, const std::string &help,
+                       int lo, int hi) {
     return addRanged(cmd, names, value, help, lo, hi, false);
 }
 CLI::Option *addNumber(CLI::App &cmd, const std::string &names, long &value,

@@ -42,7 +42,9 @@ struct CheckFiles {
         dir = checkDir(a);
         fs::create_directories(dir);
     }
-    std::string operator()(const std::string &suffix) const { return (dir / (stem + suffix)).string(); }
+    std::string operator()(const std::string &suffix) const {
+        return (dir / (stem + suffix)).string();
+    }
 };
 
 /// A check's row for --csv, and the header of such rows.
@@ -84,7 +86,8 @@ CheckResult checkGeometry(const CheckArgs &a, CsvRow &csv) {
                                     a.scene.facets + " cannot be used with it");
 
     if (!openscadAvailable())
-        throw std::invalid_argument("OpenSCAD (openscad) is not installed; scripts/setup.sh installs it");
+        throw std::invalid_argument(
+            "OpenSCAD (openscad) is not installed; scripts/setup.sh installs it");
     CheckFiles file(a);
     LoadOptions lo = a.scene.loadOptions(true);
     lo.aspect = double(a.width) / a.height;
@@ -132,9 +135,10 @@ CheckResult checkGeometry(const CheckArgs &a, CsvRow &csv) {
                   a.scene.input.c_str(), cr.pass ? "pass" : "different", cr.differing(),
                   cr.coverageDiffer, cr.depthDiffer, cr.normalDiffer, cr.silhouette, cr.tied,
                   run.wallSeconds, run.renderSeconds, ourSeconds);
-    csv = {"scene,verdict,differing,coverage,depth,normal,silhouette,tied,"
-           "openscad_wall_s,openscad_render_s,scadray_s",
-           buf};
+    csv = {
+        "scene,verdict,differing,coverage,depth,normal,silhouette,tied,"
+        "openscad_wall_s,openscad_render_s,scadray_s",
+        buf};
 
     CheckResult r;
     r.scene = a.scene.input;
@@ -173,7 +177,8 @@ CheckResult checkPovray(const CheckArgs &a, CsvRow &csv) {
     ro.sampleClamp = a.compare.clampMax;  // POV-Ray's PNG clips every sub-sample at 1
     validateRenderOptions(ro);
     if (!pov::povrayAvailable())
-        throw std::invalid_argument("POV-Ray (povray) is not installed; scripts/setup.sh installs it");
+        throw std::invalid_argument(
+            "POV-Ray (povray) is not installed; scripts/setup.sh installs it");
 
     CheckFiles file(a);
     const std::string &stem = file.stem;
@@ -202,9 +207,9 @@ CheckResult checkPovray(const CheckArgs &a, CsvRow &csv) {
                      "clearcoat, sheen, specular or thickness maps)\n";
 
     // POV-Ray: export, render k times larger without antialiasing, box-downsample
-    PovReference pov = renderPovReference(scene, dir.string(), stem,
-                                          fs::path(a.scene.input).filename().string(), a.width,
-                                          a.height, a.supersample, a.threads, a.timeout);
+    PovReference pov =
+        renderPovReference(scene, dir.string(), stem, fs::path(a.scene.input).filename().string(),
+                           a.width, a.height, a.supersample, a.threads, a.timeout);
     const pov::PovRunResult &pr = pov.run;
     ImageEstimate reference = pov.image;
     // Texture detail spreads a supersampled pixel's sub-samples as a silhouette does, so with
@@ -240,14 +245,14 @@ CheckResult checkPovray(const CheckArgs &a, CsvRow &csv) {
         // Geometry's edges from that picture (the usual sub-sample range), texture detail
         // from the textured one where it is not smooth at the sub-sample scale: texel edges
         // and detail finer than a pixel, which the reference's k x k grid cannot average
-        Image textureEdges = planeResidualSpread(
-            readImage((dir / (stem + "_povray.png")).string()), a.supersample);
+        Image textureEdges =
+            planeResidualSpread(readImage((dir / (stem + "_povray.png")).string()), a.supersample);
         reference.spread = edges.image.spread;
         for (int y = 0; y < reference.spread.height(); ++y)
             for (int x = 0; x < reference.spread.width(); ++x) {
                 Rgb g = reference.spread.at(x, y), t = textureEdges.at(x, y);
-                reference.spread.set(x, y, Rgb(std::max(g.r, t.r), std::max(g.g, t.g),
-                                               std::max(g.b, t.b)));
+                reference.spread.set(
+                    x, y, Rgb(std::max(g.r, t.r), std::max(g.g, t.g), std::max(g.b, t.b)));
             }
         edgeSeconds = edges.run.wallSeconds;
     }
@@ -272,10 +277,11 @@ CheckResult checkPovray(const CheckArgs &a, CsvRow &csv) {
     std::string report;
     report += std::string(cr.pass ? "PASS" : "DIFFERENT") + ": " + a.scene.input + " at " +
               std::to_string(a.width) + "x" + std::to_string(a.height) + "\n";
-    std::snprintf(buf, sizeof buf,
-                  "povray:  %.3f s wall (parse %.3f s, trace %.3f s), %dx%d supersampled at %dx%d\n",
-                  pr.wallSeconds, pr.parseSeconds, pr.traceSeconds, a.supersample, a.supersample,
-                  a.width * a.supersample, a.height * a.supersample);
+    std::snprintf(
+        buf, sizeof buf,
+        "povray:  %.3f s wall (parse %.3f s, trace %.3f s), %dx%d supersampled at %dx%d\n",
+        pr.wallSeconds, pr.parseSeconds, pr.traceSeconds, a.supersample, a.supersample,
+        a.width * a.supersample, a.height * a.supersample);
     report += buf;
     if (edgeSeconds > 0) {
         std::snprintf(buf, sizeof buf,
@@ -291,16 +297,19 @@ CheckResult checkPovray(const CheckArgs &a, CsvRow &csv) {
     report += buf;
     report += cr.summary(a.compare);
     if (pr.warnings > 0)
-        report += "povray printed " + std::to_string(pr.warnings) + " warnings about the exported scene (see " +
-                  stem + ".ini.log)\n";
-    report += "files: " + dir.string() + "/" + stem + "{.pov,.ini,_reference.png,_scadray.png,_diff.png,...}\n";
+        report += "povray printed " + std::to_string(pr.warnings) +
+                  " warnings about the exported scene (see " + stem + ".ini.log)\n";
+    report += "files: " + dir.string() + "/" + stem +
+              "{.pov,.ini,_reference.png,_scadray.png,_diff.png,...}\n";
     std::snprintf(buf, sizeof buf, "%s,%s,%.3g,%.3g,%.1f,%d,%d,%.3g,%.3f,%.3f,%.3f,%.3f\n",
                   a.scene.input.c_str(), cr.pass ? "pass" : "different", cr.rmse, cr.maxError,
-                  100.0 * cr.maskedPixels / (double(a.width) * a.height), cr.tilesTested, cr.tilesFailed,
-                  cr.detectableMedian, pr.wallSeconds, pr.traceSeconds, ourWall, rr.seconds);
-    csv = {"scene,verdict,rmse,max_error,masked_percent,tiles_tested,tiles_failed,"
-           "detectable_median,povray_wall_s,povray_trace_s,scadray_wall_s,scadray_render_s",
-           buf};
+                  100.0 * cr.maskedPixels / (double(a.width) * a.height), cr.tilesTested,
+                  cr.tilesFailed, cr.detectableMedian, pr.wallSeconds, pr.traceSeconds, ourWall,
+                  rr.seconds);
+    csv = {
+        "scene,verdict,rmse,max_error,masked_percent,tiles_tested,tiles_failed,"
+        "detectable_median,povray_wall_s,povray_trace_s,scadray_wall_s,scadray_render_s",
+        buf};
 
     CheckResult r;
     r.scene = a.scene.input;
@@ -391,7 +400,8 @@ void requireOutputFolder(const std::string &dir, const std::string &marker,
             name.compare(name.size() - marker.size(), marker.size(), marker) == 0)
             return;
     }
-    if (ec) throw std::invalid_argument(option + ": cannot read the folder '" + printable(dir) + "'");
+    if (ec)
+        throw std::invalid_argument(option + ": cannot read the folder '" + printable(dir) + "'");
     if (!empty)
         throw std::invalid_argument(
             option + ": '" + printable(dir) + "' holds other files (no *" + marker +
@@ -445,7 +455,8 @@ void addCheckCommand(CLI::App &app, std::function<int()> &action) {
         "--openscad, compare geometry with OpenSCAD's mesh of the scene (exit 0 pass, 1 "
         "different or failed, 2 bad usage)");
     args->scene.addTo(*cmd);
-    cmd->add_option("-o,--output-dir", args->outDir, "Folder for all files (default <scene>_check)");
+    cmd->add_option("-o,--output-dir", args->outDir,
+                    "Folder for all files (default <scene>_check)");
     cmd->add_flag("--openscad", args->openscad,
                   "Referee OpenSCAD: compare hit/miss, depth and normal per pixel with the mesh "
                   "`openscad` exports (implies --facets openscad)");

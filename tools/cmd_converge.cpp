@@ -201,9 +201,8 @@ int runConverge(const ConvergeArgs &a) {
         } else {
             fs::create_directories(dir);
             say("  POV-Ray ...");
-            PovReference povRef = renderPovReference(scene, dir.string(), stem, sceneName,
-                                                     a.width, a.height, a.supersample, a.threads,
-                                                     a.timeout);
+            PovReference povRef = renderPovReference(scene, dir.string(), stem, sceneName, a.width,
+                                                     a.height, a.supersample, a.threads, a.timeout);
             pr = povRef.run;
             povImage = povRef.image.mean;
             say("  POV-Ray: " + fmt("%.3f", pr.wallSeconds) + " s");
@@ -379,7 +378,8 @@ void addConvergeCommand(CLI::App &app, std::function<int()> &action) {
               0.0, kAny);
     addNumber(*cmd, "--seed", args->seed, "Seed of the reference; level i uses seed + 1 + i",
               uint64_t{0}, std::numeric_limits<uint64_t>::max());
-    addNumber(*cmd, "-t,--threads", args->threads, "Render threads (0 = all cores)", 0, kMaxThreads);
+    addNumber(*cmd, "-t,--threads", args->threads, "Render threads (0 = all cores)", 0,
+              kMaxThreads);
     cmd->add_flag(
         "--povray", args->povray,
         "Also measure each level against POV-Ray's supersampled picture (when installed)");

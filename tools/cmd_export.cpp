@@ -26,7 +26,8 @@ struct ExportArgs {
 int runExport(const ExportArgs &a) {
     // The options' ranges keep the .ini's size (width x supersample) within an int
     static_assert(int64_t{kMaxImageSide} * kMaxSupersample <= std::numeric_limits<int>::max());
-    fs::path pov = a.output.empty() ? fs::path(a.scene.input).stem().concat(".pov") : fs::path(a.output);
+    fs::path pov =
+        a.output.empty() ? fs::path(a.scene.input).stem().concat(".pov") : fs::path(a.output);
     if (pov.extension() != ".pov")
         throw std::invalid_argument("the output of export must end in .pov");
     requireOutputFile(pov.string(), "-o");
@@ -44,8 +45,9 @@ int runExport(const ExportArgs &a) {
     pov::exportPov(scene, pov.string(), fs::path(a.scene.input).filename().string(), ini);
     if (!a.quiet)
         std::cerr << "scadray: wrote " << pov.string() << " and " << iniPath.string()
-                  << " (render with: cd " << (pov.has_parent_path() ? pov.parent_path().string() : ".")
-                  << " && povray " << iniPath.filename().string() << ")\n";
+                  << " (render with: cd "
+                  << (pov.has_parent_path() ? pov.parent_path().string() : ".") << " && povray "
+                  << iniPath.filename().string() << ")\n";
     return kExitOk;
 }
 
@@ -53,7 +55,8 @@ int runExport(const ExportArgs &a) {
 
 void addExportCommand(CLI::App &app, std::function<int()> &action) {
     auto args = std::make_shared<ExportArgs>();
-    CLI::App *cmd = app.add_subcommand("export", "Write the scene as POV-Ray 3.7 SDL (.pov) and an .ini");
+    CLI::App *cmd =
+        app.add_subcommand("export", "Write the scene as POV-Ray 3.7 SDL (.pov) and an .ini");
     args->scene.addTo(*cmd);
     cmd->add_option("-o,--output", args->output, "Output .pov file; the .ini goes beside it")
         ->capture_default_str();

@@ -32,8 +32,8 @@ int runMerge(const MergeArgs &a) {
     wo.linearPng = a.linear;
     writeImage(picture, a.output, wo);
     if (!a.quiet)
-        std::fprintf(stderr, "scadray: %s: %dx%d from %zu tiles, %.2f samples per pixel\n", a.output.c_str(),
-                     picture.width(), picture.height(), a.tiles.size(),
+        std::fprintf(stderr, "scadray: %s: %dx%d from %zu tiles, %.2f samples per pixel\n",
+                     a.output.c_str(), picture.width(), picture.height(), a.tiles.size(),
                      double(samples) / (double(picture.width()) * picture.height()));
     return kExitOk;
 }
@@ -42,9 +42,11 @@ int runMerge(const MergeArgs &a) {
 
 void addMergeCommand(CLI::App &app, std::function<int()> &action) {
     auto args = std::make_shared<MergeArgs>();
-    CLI::App *cmd = app.add_subcommand(
-        "merge", "Assemble the tiles of `render --tile K/N` into the picture (the same, bit for bit, as one render)");
-    cmd->add_option("tiles", args->tiles, "Tile files (.exr), every tile of one render once, in any order")
+    CLI::App *cmd = app.add_subcommand("merge",
+                                       "Assemble the tiles of `render --tile K/N` into the picture "
+                                       "(the same, bit for bit, as one render)");
+    cmd->add_option("tiles", args->tiles,
+                    "Tile files (.exr), every tile of one render once, in any order")
         ->required();
     cmd->add_option("-o,--output", args->output, "Output image; .png (sRGB) or .exr (linear float)")
         ->required();

@@ -33,7 +33,8 @@ struct RenderArgs {
     bool aaGiven = false;       ///< an --aa-* option: adaptive even where the plan would not be
     bool aaToleranceGiven = false;
     int aaMax = 64;
-    double aaThreshold = RenderOptions().adaptiveThreshold, aaTolerance = RenderOptions().adaptiveTolerance;
+    double aaThreshold = RenderOptions().adaptiveThreshold,
+           aaTolerance = RenderOptions().adaptiveTolerance;
     AnimationArgs animation;  ///< --frames and its options
     bool sceneGiven = false;  ///< optional with --encode-only only
 };
@@ -51,7 +52,8 @@ std::string formatCount(int64_t n) {
 
 /// "4" for a uniform render, "adaptive 1.31" for an adaptive one.
 std::string sppText(const RenderResult &r) {
-    if (r.pixelsBySamples.empty()) return std::to_string(r.samples / (int64_t(r.image.width()) * r.image.height()));
+    if (r.pixelsBySamples.empty())
+        return std::to_string(r.samples / (int64_t(r.image.width()) * r.image.height()));
     char buf[48];
     std::snprintf(buf, sizeof buf, "adaptive %.2f", meanSamplesPerPixel(r));
     return buf;
@@ -78,7 +80,8 @@ int renderOne(const RenderArgs &a, double time, const std::string &outputName) {
     std::string output = outputName;
     std::string stem = std::filesystem::path(a.scene.input).stem().string();
     if (output.empty())
-        output = tile ? stem + "_tile" + std::to_string(tile.index) + "of" + std::to_string(tile.count) + ".exr"
+        output = tile ? stem + "_tile" + std::to_string(tile.index) + "of" +
+                            std::to_string(tile.count) + ".exr"
                       : stem + ".png";
     if (tile && std::filesystem::path(output).extension() != ".exr")
         throw std::invalid_argument("--tile writes an OpenEXR tile (-o name.exr), not '" + output +
@@ -100,7 +103,8 @@ int renderOne(const RenderArgs &a, double time, const std::string &outputName) {
     sampling.noAdaptive = a.noAa;
     chooseSampling(plan, sampling, ro);
     if (a.plan)
-        std::fputs(describePlan(*rs, scene.stats, plan, ro, sampling.planChooses()).c_str(), stderr);
+        std::fputs(describePlan(*rs, scene.stats, plan, ro, sampling.planChooses()).c_str(),
+                   stderr);
 
     bool tty = !a.quiet && isatty(STDERR_FILENO);
     if (tty)
@@ -115,9 +119,10 @@ int renderOne(const RenderArgs &a, double time, const std::string &outputName) {
     wo.pngDepth = a.bits == 16 ? PngDepth::Bits16 : PngDepth::Bits8;
     wo.linearPng = a.linear;
     if (tile)
-        writeTile(r, output, {tile, a.scene.input, sceneFingerprint(a.scene.input, scene),
-                              pixelOptions(ro, a.scene, a.noPlan), "", r.samples, ro.rowBegin,
-                              r.image.height(), a.width, a.height});
+        writeTile(r, output,
+                  {tile, a.scene.input, sceneFingerprint(a.scene.input, scene),
+                   pixelOptions(ro, a.scene, a.noPlan), "", r.samples, ro.rowBegin,
+                   r.image.height(), a.width, a.height});
     else
         writeImage(r.image, output, wo);
 
@@ -133,19 +138,21 @@ int renderOne(const RenderArgs &a, double time, const std::string &outputName) {
                      output.c_str(), a.width, a.height, sppText(r).c_str(),
                      static_cast<int>(rs->stats().objects), rs->stats().primitives,
                      triangles.c_str(), r.threads, r.seconds);
-        std::fprintf(stderr,
-                     "  rays: %s total (%s camera, %s shadow, %s reflection, %s refraction, "
-                     "%s transmission, %s internal reflection, %s distributed), %.2f Mrays/s, %.3f s CPU\n",
-                     formatCount(s.totalRays()).c_str(), formatCount(s.camera).c_str(),
-                     formatCount(s.shadow).c_str(), formatCount(s.reflection).c_str(),
-                     formatCount(s.refraction).c_str(), formatCount(s.transmission).c_str(),
-                     formatCount(s.internalReflection).c_str(), formatCount(s.distributed).c_str(),
-                     s.totalRays() / std::max(r.seconds, 1e-9) / 1e6, r.cpuSeconds);
+        std::fprintf(
+            stderr,
+            "  rays: %s total (%s camera, %s shadow, %s reflection, %s refraction, "
+            "%s transmission, %s internal reflection, %s distributed), %.2f Mrays/s, %.3f s CPU\n",
+            formatCount(s.totalRays()).c_str(), formatCount(s.camera).c_str(),
+            formatCount(s.shadow).c_str(), formatCount(s.reflection).c_str(),
+            formatCount(s.refraction).c_str(), formatCount(s.transmission).c_str(),
+            formatCount(s.internalReflection).c_str(), formatCount(s.distributed).c_str(),
+            s.totalRays() / std::max(r.seconds, 1e-9) / 1e6, r.cpuSeconds);
         std::fprintf(stderr, "  csg: %s span merges, %s pruned subtrees; non-finite pixels: %lld\n",
                      formatCount(s.spanOps).c_str(), formatCount(s.prunedSubtrees).c_str(),
                      static_cast<long long>(s.nonFinite));
     }
-    if (a.plan && ro.adaptive) std::fprintf(stderr, "plan: samples: %s\n", describeSampling(r).c_str());
+    if (a.plan && ro.adaptive)
+        std::fprintf(stderr, "plan: samples: %s\n", describeSampling(r).c_str());
     return kExitOk;
 }
 
@@ -185,11 +192,12 @@ void addRenderCommand(CLI::App &app, std::function<int()> &action) {
                                   "Adaptive antialiasing: refine a pixel whose display value "
                                   "(0..1, about sRGB) differs from a neighbour's by more than this",
                                   0.0, 1.0);
-    auto *aaTolerance = addNumber(*cmd, "--aa-tolerance", args->aaTolerance,
-                                  "Adaptive antialiasing: stop refining a pixel when the standard "
-                                  "error of its mean (display units) is below this (0: always --aa-max; "
-                                  "Monte Carlo scenes: 0.02 unless given)",
-                                  0.0, 1.0);
+    auto *aaTolerance =
+        addNumber(*cmd, "--aa-tolerance", args->aaTolerance,
+                  "Adaptive antialiasing: stop refining a pixel when the standard "
+                  "error of its mean (display units) is below this (0: always --aa-max; "
+                  "Monte Carlo scenes: 0.02 unless given)",
+                  0.0, 1.0);
     auto *noAa = cmd->add_flag("--no-aa", args->noAa,
                                "No adaptive antialiasing: 1 sample per pixel (4 with Monte Carlo "
                                "effects), as -s");
@@ -199,10 +207,12 @@ void addRenderCommand(CLI::App &app, std::function<int()> &action) {
                   "Print the render plan first: features in use and why, objects kept and "
                   "dropped, the samples per pixel chosen");
     cmd->add_flag("--no-plan", args->noPlan,
-                  "Leave nothing out, prune no CSG subtree and cast shadow rays to every light (to measure what the plan saves)");
+                  "Leave nothing out, prune no CSG subtree and cast shadow rays to every light (to "
+                  "measure what the plan saves)");
     addNumber(*cmd, "--seed", args->seed, "Seed of the sample pattern", uint64_t{0},
               std::numeric_limits<uint64_t>::max());
-    addNumber(*cmd, "-t,--threads", args->threads, "Render threads (0 = all cores)", 0, kMaxThreads);
+    addNumber(*cmd, "-t,--threads", args->threads, "Render threads (0 = all cores)", 0,
+              kMaxThreads);
     cmd->add_option("--bits", args->bits, "PNG bits per channel")
         ->check(CLI::IsMember({8, 16}))
         ->capture_default_str();
@@ -217,7 +227,8 @@ void addRenderCommand(CLI::App &app, std::function<int()> &action) {
         args->samplesGiven = cmd->count("--samples") > 0;
         args->sceneGiven = cmd->count("scene") > 0;
         args->aaToleranceGiven = cmd->count("--aa-tolerance") > 0;
-        args->aaGiven = cmd->count("--aa-max") + cmd->count("--aa-threshold") + args->aaToleranceGiven > 0;
+        args->aaGiven =
+            cmd->count("--aa-max") + cmd->count("--aa-threshold") + args->aaToleranceGiven > 0;
         action = [args]() { return runRender(*args); };
     });
 }

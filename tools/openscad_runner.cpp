@@ -27,7 +27,8 @@ OpenScadRun exportWithOpenScad(const std::string &scene, const std::string &mesh
                                const std::vector<std::string> &libraryPaths, int timeoutSeconds) {
     namespace fs = std::filesystem;
     if (!openscadAvailable())
-        throw std::invalid_argument("OpenSCAD (openscad) is not installed; scripts/setup.sh installs it");
+        throw std::invalid_argument(
+            "OpenSCAD (openscad) is not installed; scripts/setup.sh installs it");
     // Written under a short temporary name beside it and renamed on success: never a
     // half-written mesh, and removed on an interrupt
     TempFile partialFile(meshFile, ".stl");
@@ -59,15 +60,13 @@ OpenScadRun exportWithOpenScad(const std::string &scene, const std::string &mesh
         throw std::runtime_error("OpenSCAD " + why + " for " + scene + "; its last lines:\n" +
                                  lastLines(pr.log, 12));
     };
-    if (pr.timedOut)
-        fail("ran past " + std::to_string(timeoutSeconds) + " s and was stopped");
+    if (pr.timedOut) fail("ran past " + std::to_string(timeoutSeconds) + " s and was stopped");
     if (pr.log.find("Current top level object is empty") != std::string::npos)
         fail("found an empty top level: nothing to compare");
     if (pr.log.find("Current top level object is not a 3D object") != std::string::npos)
         fail("found a 2D top level: nothing to compare");
     if (pr.exitCode != 0) fail("failed (exit " + std::to_string(pr.exitCode) + ")");
-    if (!fs::exists(partial, ec) || fs::file_size(partial, ec) == 0)
-        fail("wrote no mesh");
+    if (!fs::exists(partial, ec) || fs::file_size(partial, ec) == 0) fail("wrote no mesh");
     partialFile.commit();
     return run;
 }

@@ -87,7 +87,6 @@ std::string dataUri(const std::string &folder, const std::string &name);
 /// Standard base64 (RFC 4648, with padding).
 std::string base64(const std::string &bytes);
 
-
 /// A relative path as a URL path: every byte but letters, digits, '-', '.', '_', '~' and
 /// '/' percent-encoded.
 std::string urlPath(const std::string &path);

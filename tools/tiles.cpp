@@ -111,8 +111,8 @@ TileSpec parseTile(const std::string &text) {
     char slash = 0, extra = 0;
     std::istringstream in(text);
     auto bad = [&] {
-        return std::invalid_argument("--tile takes K/N, tile K (1 to N) of N horizontal bands, not '" +
-                                     text + "'");
+        return std::invalid_argument(
+            "--tile takes K/N, tile K (1 to N) of N horizontal bands, not '" + text + "'");
     };
     if (!(in >> k >> slash >> n) || slash != '/' || (in >> extra)) throw bad();
     if (n < 1 || k < 1 || k > n) throw bad();
@@ -146,7 +146,8 @@ std::string pixelOptions(const RenderOptions &ro, const SceneArgs &scene, bool n
     if (!ro.adaptive) {
         s += "sampling=uniform\nsamples=" + std::to_string(ro.samplesPerPixel) + "\n";
     } else {
-        s += std::string("sampling=") + (ro.adaptiveNoise ? "adaptive-noise" : "adaptive-edges") + "\n";
+        s += std::string("sampling=") + (ro.adaptiveNoise ? "adaptive-noise" : "adaptive-edges") +
+             "\n";
         s += "aa-max=" + std::to_string(ro.adaptiveMax) + "\n";
         if (!ro.adaptiveNoise) s += "aa-threshold=" + number(ro.adaptiveThreshold) + "\n";
         s += "aa-tolerance=" + number(ro.adaptiveTolerance) + "\n";
@@ -195,8 +196,10 @@ TileHeader readTile(const std::string &path, ImageEstimate &pixels) {
     pixels = readEstimate(path, false, &meta);
     std::string tile = meta.attribute("scadray:tile");
     if (tile.empty())
-        throw std::runtime_error("'" + path + "' is not a tile of `scadray render --tile K/N` (its header has no "
-                                 "scadray:tile)");
+        throw std::runtime_error(
+            "'" + path +
+            "' is not a tile of `scadray render --tile K/N` (its header has no "
+            "scadray:tile)");
     TileHeader h;
     try {
         h.tile = parseTile(tile);
@@ -214,8 +217,10 @@ TileHeader readTile(const std::string &path, ImageEstimate &pixels) {
     h.width = meta.fullWidth;
     h.height = meta.fullHeight;
     if (h.fingerprint.empty() || meta.x != 0 || pixels.mean.width() != h.width)
-        throw std::runtime_error("'" + path + "' is not a tile of `scadray render --tile K/N` (no fingerprint, or not "
-                                 "whole rows of the picture)");
+        throw std::runtime_error(
+            "'" + path +
+            "' is not a tile of `scadray render --tile K/N` (no fingerprint, or not "
+            "whole rows of the picture)");
     return h;
 }
 
@@ -233,21 +238,23 @@ Image mergeTiles(const std::vector<std::string> &paths, int64_t *samples) {
         const std::string &p = paths[i];
         if (t.width != first.width || t.height != first.height)
             throw std::runtime_error("tiles of different picture sizes: '" + p0 + "' is of " +
-                                     std::to_string(first.width) + "x" + std::to_string(first.height) + ", '" + p +
-                                     "' of " + std::to_string(t.width) + "x" + std::to_string(t.height));
+                                     std::to_string(first.width) + "x" +
+                                     std::to_string(first.height) + ", '" + p + "' of " +
+                                     std::to_string(t.width) + "x" + std::to_string(t.height));
         if (t.options != first.options)
             throw std::runtime_error("tiles rendered with different options: '" + p0 + "' with " +
                                      onlyIn(first.options, t.options) + ", '" + p + "' with " +
                                      onlyIn(t.options, first.options));
         if (t.sceneHash != first.sceneHash)
-            throw std::runtime_error("tiles of different scenes: '" + p0 + "' is of " + first.scene + " (" +
-                                     first.sceneHash + "), '" + p + "' of " + t.scene + " (" + t.sceneHash + ")");
+            throw std::runtime_error("tiles of different scenes: '" + p0 + "' is of " +
+                                     first.scene + " (" + first.sceneHash + "), '" + p + "' of " +
+                                     t.scene + " (" + t.sceneHash + ")");
         if (t.fingerprint != first.fingerprint)
-            throw std::runtime_error("tiles rendered by different scadray builds: '" + p0 + "' and '" + p +
-                                     "' (pixels need not agree to the bit)");
+            throw std::runtime_error("tiles rendered by different scadray builds: '" + p0 +
+                                     "' and '" + p + "' (pixels need not agree to the bit)");
         if (t.tile.count != first.tile.count)
-            throw std::runtime_error("tiles of different tilings: '" + p0 + "' is tile " + first.tile.text() +
-                                     ", '" + p + "' tile " + t.tile.text());
+            throw std::runtime_error("tiles of different tilings: '" + p0 + "' is tile " +
+                                     first.tile.text() + ", '" + p + "' tile " + t.tile.text());
     }
     // Each tile once, where the layout puts it
     int n = first.tile.count;
@@ -256,24 +263,25 @@ Image mergeTiles(const std::vector<std::string> &paths, int64_t *samples) {
         const TileHeader &t = headers[i];
         int k = t.tile.index - 1;
         if (owner[k] >= 0)
-            throw std::runtime_error("overlapping tiles: '" + paths[owner[k]] + "' and '" + paths[i] +
-                                     "' are both tile " + t.tile.text());
+            throw std::runtime_error("overlapping tiles: '" + paths[owner[k]] + "' and '" +
+                                     paths[i] + "' are both tile " + t.tile.text());
         owner[k] = static_cast<int>(i);
         auto [begin, end] = tileRows(k, n, t.height);
         if (t.rowBegin != begin || t.rows != end - begin)
-            throw std::runtime_error("'" + paths[i] + "' holds rows " + std::to_string(t.rowBegin) + ".." +
-                                     std::to_string(t.rowBegin + t.rows - 1) + ", but tile " + t.tile.text() +
-                                     " of a picture " + std::to_string(t.height) + " rows high is rows " +
+            throw std::runtime_error("'" + paths[i] + "' holds rows " + std::to_string(t.rowBegin) +
+                                     ".." + std::to_string(t.rowBegin + t.rows - 1) +
+                                     ", but tile " + t.tile.text() + " of a picture " +
+                                     std::to_string(t.height) + " rows high is rows " +
                                      std::to_string(begin) + ".." + std::to_string(end - 1));
     }
     std::vector<int> missing;
     for (int k = 0; k < n; ++k)
         if (owner[k] < 0) missing.push_back(k + 1);
     if (!missing.empty())
-        throw std::runtime_error(std::string(missing.size() == 1 ? "tile " : "tiles ") + listNumbers(missing) +
-                                 " of " + std::to_string(n) + " " + (missing.size() == 1 ? "is" : "are") +
-                                 " missing (" + std::to_string(headers.size()) + " of " + std::to_string(n) +
-                                 " given)");
+        throw std::runtime_error(
+            std::string(missing.size() == 1 ? "tile " : "tiles ") + listNumbers(missing) + " of " +
+            std::to_string(n) + " " + (missing.size() == 1 ? "is" : "are") + " missing (" +
+            std::to_string(headers.size()) + " of " + std::to_string(n) + " given)");
     // Rows in place
     Image picture(first.width, first.height);
     int64_t total = 0;

@@ -59,9 +59,8 @@ int Bvh::build(std::vector<BuildItem> &items, size_t begin, size_t end, int dept
     constexpr size_t kAllAxesFrom = 64;
     int longest = maxDimension(extent);
     for (int axis = 0; axis < 3; ++axis)
-        binScale[axis] = extent[axis] > 0 && (n >= kAllAxesFrom || axis == longest)
-                             ? kBins / extent[axis]
-                             : 0;
+        binScale[axis] =
+            extent[axis] > 0 && (n >= kAllAxesFrom || axis == longest) ? kBins / extent[axis] : 0;
     // Clamped before the conversion: an unbounded item's centroid is NaN or infinite, whose
     // conversion to int is undefined (NaN goes to bin 0)
     auto binOf = [&](const Vec3 &c, int axis) {
@@ -77,7 +76,8 @@ int Bvh::build(std::vector<BuildItem> &items, size_t begin, size_t end, int dept
             ++counts[axis][b];
             binBounds[axis][b] = unionBounds(binBounds[axis][b], items[i].bounds);
         }
-    // Evaluate the cost (the items times each side's chance of a visit) at kBins-1 planes on each axis
+    // Evaluate the cost (the items times each side's chance of a visit) at kBins-1 planes on each
+    // axis
     int bestAxis = -1, bestSplit = -1;
     double bestCost = kInfinity;
     // A child's chance of a visit: its shares of the parent's area and volume (kVolumeWeight),
@@ -85,17 +85,19 @@ int Bvh::build(std::vector<BuildItem> &items, size_t begin, size_t end, int dept
     double area = bounds.surfaceArea(), volume = boxVolume(bounds);
     bool byVolume = volume > 0 && volume < kInfinity && area > 0 && area < kInfinity;
     auto chance = [&](const Bounds3 &b) {
-        return byVolume ? (1 - kVolumeWeight) * b.surfaceArea() / area + kVolumeWeight * boxVolume(b) / volume
+        return byVolume ? (1 - kVolumeWeight) * b.surfaceArea() / area +
+                              kVolumeWeight * boxVolume(b) / volume
                         : b.surfaceArea();
     };
     for (int axis = 0; axis < 3; ++axis) {
         if (binScale[axis] == 0) continue;
-        sweepBins<kBins>(binBounds[axis].data(), counts[axis].data(), kBins,
-                         [](const Bounds3 &a, const Bounds3 &b) { return unionBounds(a, b); }, chance,
-                         &bestCost, [&](int b) {
-                             bestAxis = axis;
-                             bestSplit = b;
-                         });
+        sweepBins<kBins>(
+            binBounds[axis].data(), counts[axis].data(), kBins,
+            [](const Bounds3 &a, const Bounds3 &b) { return unionBounds(a, b); }, chance, &bestCost,
+            [&](int b) {
+                bestAxis = axis;
+                bestSplit = b;
+            });
     }
     // Relative cost: one traversal step (1/8 of an item test) plus the expected item tests
     double parentChance = byVolume ? 1.0 : area;
@@ -105,8 +107,9 @@ int Bvh::build(std::vector<BuildItem> &items, size_t begin, size_t end, int dept
         return makeLeaf();
     size_t mid;
     if (bestAxis >= 0) {
-        auto pivot = std::partition(items.begin() + begin, items.begin() + end,
-                                    [&](const BuildItem &it) { return binOf(it.centroid, bestAxis) <= bestSplit; });
+        auto pivot = std::partition(
+            items.begin() + begin, items.begin() + end,
+            [&](const BuildItem &it) { return binOf(it.centroid, bestAxis) <= bestSplit; });
         mid = static_cast<size_t>(pivot - items.begin());
     } else {
         // All centroids coincide: split by count so leaves stay small

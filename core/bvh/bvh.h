@@ -119,10 +119,12 @@ class Bvh {
         Vec3 o, invDir;
         bool neg[3];
         int nearAt[3], farAt[3];
-        explicit RaySlabs(const Ray &ray) : RaySlabs(ray, Vec3(1 / ray.d.x, 1 / ray.d.y, 1 / ray.d.z)) {}
+        explicit RaySlabs(const Ray &ray)
+            : RaySlabs(ray, Vec3(1 / ray.d.x, 1 / ray.d.y, 1 / ray.d.z)) {}
         /// `invDir`: 1 / ray.d, component by component
         RaySlabs(const Ray &ray, const Vec3 &inverseDir)
-            : o(ray.o), invDir(inverseDir),
+            : o(ray.o),
+              invDir(inverseDir),
               neg{invDir.x < 0, invDir.y < 0, invDir.z < 0},
               nearAt{neg[0] ? 3 : 0, neg[1] ? 4 : 1, neg[2] ? 5 : 2},
               farAt{neg[0] ? 0 : 3, neg[1] ? 1 : 4, neg[2] ? 2 : 5} {}
@@ -168,8 +170,9 @@ class Bvh {
 inline bool Bvh::RaySlabs::hit(const Node &node, double tMin, double tMax) const {
     const RaySlabs &r = *this;
     const Bounds3 &b = node.bounds;
-    static_assert(sizeof(Bounds3) == 6 * sizeof(double) && offsetof(Bounds3, max) == 3 * sizeof(double),
-                  "RaySlabs indexes a box's six planes");
+    static_assert(
+        sizeof(Bounds3) == 6 * sizeof(double) && offsetof(Bounds3, max) == 3 * sizeof(double),
+        "RaySlabs indexes a box's six planes");
     // The planes are read as the box's bytes (memcpy of a double: one load)
     const char *planes = reinterpret_cast<const char *>(&b);
     auto plane = [planes](int at) {
@@ -215,7 +218,8 @@ SCADRAY_LANES_TARGET inline Bvh::LaneSlabs::LaneSlabs(const Ray &ray, const Vec3
 }
 
 SCADRAY_LANES_TARGET inline void Bvh::LaneSlabs::distances(const Node &node, double tMin,
-                                                           __m256d *nearOut, __m256d *farOut) const {
+                                                           __m256d *nearOut,
+                                                           __m256d *farOut) const {
     static_assert(offsetof(Node, bounds) == 0 && sizeof(Node) >= 7 * sizeof(double),
                   "LaneSlabs reads 7 doubles from a node: its box, then a word of the node");
     // min.xyz and max.x; max.xyz and the node's offset and count, whose lane takes max.x
@@ -226,21 +230,25 @@ SCADRAY_LANES_TARGET inline void Bvh::LaneSlabs::distances(const Node &node, dou
     __m256d hi = _mm256_blend_pd(_mm256_loadu_pd(planes + 3), lo, 0b1000);
     __m256d tLo = _mm256_mul_pd(_mm256_sub_pd(lo, o), invDir);
     __m256d tHi = _mm256_mul_pd(_mm256_sub_pd(hi, o), invDir);
-    __m256d nearV = _mm256_blendv_pd(tLo, tHi, negLanes), farV = _mm256_blendv_pd(tHi, tLo, negLanes);
+    __m256d nearV = _mm256_blendv_pd(tLo, tHi, negLanes),
+            farV = _mm256_blendv_pd(tHi, tLo, negLanes);
     // RaySlabs::hit's selections lane by lane (max and min give their second operand where
     // the first is NaN)
     *nearOut = _mm256_max_pd(nearV, _mm256_set1_pd(tMin));
     *farOut = _mm256_min_pd(farV, _mm256_set1_pd(kInfinity));
 }
 
-SCADRAY_LANES_TARGET inline bool Bvh::LaneSlabs::hit(const Node &node, double tMin, double tMax) const {
+SCADRAY_LANES_TARGET inline bool Bvh::LaneSlabs::hit(const Node &node, double tMin,
+                                                     double tMax) const {
     __m256d t0V, farL;
     distances(node, tMin, &t0V, &farL);
     // Then across the lanes: the same largest near distance and smallest far one as
     // RaySlabs::hit, up to the sign of a zero, which t0 <= t1 does not see
     __m128d t0xy = _mm256_castpd256_pd128(t0V), farxy = _mm256_castpd256_pd128(farL);
-    __m128d t0m = _mm_max_sd(_mm_max_sd(t0xy, _mm_unpackhi_pd(t0xy, t0xy)), _mm256_extractf128_pd(t0V, 1));
-    __m128d farm = _mm_min_sd(_mm_min_sd(farxy, _mm_unpackhi_pd(farxy, farxy)), _mm256_extractf128_pd(farL, 1));
+    __m128d t0m =
+        _mm_max_sd(_mm_max_sd(t0xy, _mm_unpackhi_pd(t0xy, t0xy)), _mm256_extractf128_pd(t0V, 1));
+    __m128d farm = _mm_min_sd(_mm_min_sd(farxy, _mm_unpackhi_pd(farxy, farxy)),
+                              _mm256_extractf128_pd(farL, 1));
     double t0 = _mm_cvtsd_f64(t0m), far = _mm_cvtsd_f64(farm);
     far += 2 * gamma(3) * std::abs(far);
     double t1 = far < tMax ? far : tMax;
@@ -256,7 +264,8 @@ SCADRAY_LANES_TARGET inline int Bvh::LaneSlabs::hitPair(const Node &a, const Nod
     distances(a, tMin, &nearA, &farA);
     distances(b, tMin, &nearB, &farB);
     // [a0 b0 a2 b2] against [a1 b1 a3 b3], then the halves: [a's, b's]
-    __m256d nearM = _mm256_max_pd(_mm256_unpacklo_pd(nearA, nearB), _mm256_unpackhi_pd(nearA, nearB));
+    __m256d nearM =
+        _mm256_max_pd(_mm256_unpacklo_pd(nearA, nearB), _mm256_unpackhi_pd(nearA, nearB));
     __m256d farM = _mm256_min_pd(_mm256_unpacklo_pd(farA, farB), _mm256_unpackhi_pd(farA, farB));
     __m128d near = _mm_max_pd(_mm256_castpd256_pd128(nearM), _mm256_extractf128_pd(nearM, 1));
     __m128d far = _mm_min_pd(_mm256_castpd256_pd128(farM), _mm256_extractf128_pd(farM, 1));

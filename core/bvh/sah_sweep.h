@@ -12,8 +12,8 @@ namespace rt {
 /// replaces it and calls onBetter(k): the first plane of equal costs wins. Box() is empty.
 template <int kMaxBins, typename Real, typename Box, typename Count, typename Unite, typename Area,
           typename OnBetter>
-void sweepBins(const Box *boxes, const Count *counts, int bins, Unite &&unite, Area &&area, Real *bestCost,
-               OnBetter &&onBetter) {
+void sweepBins(const Box *boxes, const Count *counts, int bins, Unite &&unite, Area &&area,
+               Real *bestCost, OnBetter &&onBetter) {
     // From the right: the area and count of every right side
     Real rightArea[kMaxBins];
     Count rightCount[kMaxBins];

@@ -74,7 +74,8 @@ const VistaLists::Cell *VistaLists::build(int face, int i, int j) const {
         Vec3 lo = box.min - apex_, hi = box.max - apex_;
         for (const Vec3 &n : normals) {
             double most = 0;
-            for (int axis = 0; axis < 3; ++axis) most += std::max(n[axis] * lo[axis], n[axis] * hi[axis]);
+            for (int axis = 0; axis < 3; ++axis)
+                most += std::max(n[axis] * lo[axis], n[axis] * hi[axis]);
             if (most < -tolerance_) return false;
         }
         return true;
@@ -155,7 +156,8 @@ const VistaLists::Cell *VistaLists::place(const Vec3 &d) const {
     double half = 0.5 * n_, scale = half / std::abs(dk);
     int i = std::clamp(static_cast<int>(da * scale + half), 0, n_ - 1);
     int j = std::clamp(static_cast<int>(db * scale + half), 0, n_ - 1);
-    const Cell *cell = cells_[(static_cast<size_t>(face) * n_ + i) * n_ + j].load(std::memory_order_acquire);
+    const Cell *cell =
+        cells_[(static_cast<size_t>(face) * n_ + i) * n_ + j].load(std::memory_order_acquire);
     return cell ? cell : build(face, i, j);
 }
 

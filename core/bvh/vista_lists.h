@@ -34,11 +34,13 @@ class VistaLists {
         /// far inside the widening): by products, without the division that places a
         /// direction on the cube map.
         bool holds(const Vec3 &d) const {
-            static_assert(sizeof(Vec3) == 3 * sizeof(double), "holds() indexes a direction's components");
+            static_assert(sizeof(Vec3) == 3 * sizeof(double),
+                          "holds() indexes a direction's components");
             // The components read as the vector's bytes (memcpy of a double: one load)
             auto component = [&d](int axis) {
                 double v;
-                std::memcpy(&v, reinterpret_cast<const char *>(&d) + axis * sizeof(double), sizeof v);
+                std::memcpy(&v, reinterpret_cast<const char *>(&d) + axis * sizeof(double),
+                            sizeof v);
                 return v;
             };
             double dk = component(k) * s, da = component(a), db = component(b);

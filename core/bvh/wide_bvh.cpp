@@ -14,8 +14,8 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
-#include <stdexcept>
 #include <new>
+#include <stdexcept>
 #include <thread>
 #include <type_traits>
 
@@ -79,11 +79,21 @@ struct F4 {
     static F4 zip(F4 a, F4 b, Op op) {
         return {{op(a.v[0], b.v[0]), op(a.v[1], b.v[1]), op(a.v[2], b.v[2]), op(a.v[3], b.v[3])}};
     }
-    friend F4 operator+(F4 a, F4 b) { return zip(a, b, [](float x, float y) { return x + y; }); }
-    friend F4 operator-(F4 a, F4 b) { return zip(a, b, [](float x, float y) { return x - y; }); }
-    friend F4 operator*(F4 a, F4 b) { return zip(a, b, [](float x, float y) { return x * y; }); }
-    friend F4 min(F4 a, F4 b) { return zip(a, b, [](float x, float y) { return x < y ? x : y; }); }
-    friend F4 max(F4 a, F4 b) { return zip(a, b, [](float x, float y) { return x > y ? x : y; }); }
+    friend F4 operator+(F4 a, F4 b) {
+        return zip(a, b, [](float x, float y) { return x + y; });
+    }
+    friend F4 operator-(F4 a, F4 b) {
+        return zip(a, b, [](float x, float y) { return x - y; });
+    }
+    friend F4 operator*(F4 a, F4 b) {
+        return zip(a, b, [](float x, float y) { return x * y; });
+    }
+    friend F4 min(F4 a, F4 b) {
+        return zip(a, b, [](float x, float y) { return x < y ? x : y; });
+    }
+    friend F4 max(F4 a, F4 b) {
+        return zip(a, b, [](float x, float y) { return x > y ? x : y; });
+    }
     void store(float out[4]) const { std::copy(v, v + 4, out); }
     void storeBins(int out[3]) const {
         for (int i = 0; i < 3; ++i) out[i] = static_cast<int>(v[i]);
@@ -97,7 +107,8 @@ struct F4 {
 };
 
 struct Box {
-    F4 lo = F4::of(INFINITY, INFINITY, INFINITY, 0), hi = F4::of(-INFINITY, -INFINITY, -INFINITY, 0);
+    F4 lo = F4::of(INFINITY, INFINITY, INFINITY, 0),
+       hi = F4::of(-INFINITY, -INFINITY, -INFINITY, 0);
     void grow(F4 l, F4 h) {
         lo = min(lo, l);
         hi = max(hi, h);
@@ -119,8 +130,16 @@ struct Box {
         return d[0] * d[1] + d[1] * d[2] + d[2] * d[0];
 #endif
     }
-    float lower(int axis) const { float f[4]; lo.store(f); return f[axis]; }
-    float upper(int axis) const { float f[4]; hi.store(f); return f[axis]; }
+    float lower(int axis) const {
+        float f[4];
+        lo.store(f);
+        return f[axis];
+    }
+    float upper(int axis) const {
+        float f[4];
+        hi.store(f);
+        return f[axis];
+    }
 };
 
 /// An item's box; the spare lanes hold 0 and the item index (as a normal float: bit 30
@@ -171,27 +190,35 @@ class WideBvhBuilder {
 
     /// boxOf(i, lo, hi) gives the double bounds of item i.
     template <typename BoxOf>
-    WideBvhBuilder(size_t n, BoxOf &&boxOf, WideBvh &bvh, int threads, float itemCost, int leafItems)
-        : bvh_(bvh), threads_(threads), itemCost_(itemCost), leafItems_(static_cast<uint32_t>(leafItems)) {
+    WideBvhBuilder(size_t n, BoxOf &&boxOf, WideBvh &bvh, int threads, float itemCost,
+                   int leafItems)
+        : bvh_(bvh),
+          threads_(threads),
+          itemCost_(itemCost),
+          leafItems_(static_cast<uint32_t>(leafItems)) {
         items_.resize(n);
-        parallelFor(0, n, n >= kParallelFrom ? static_cast<size_t>(threads) : 1, [&](size_t, size_t begin, size_t end) {
-            for (size_t i = begin; i < end; ++i) {
-                double lo[3], hi[3];
-                boxOf(i, lo, hi);
-                uint32_t bits = static_cast<uint32_t>(i) | Item::kTag;
-                float tag;
-                std::memcpy(&tag, &bits, 4);
+        parallelFor(0, n, n >= kParallelFrom ? static_cast<size_t>(threads) : 1,
+                    [&](size_t, size_t begin, size_t end) {
+                        for (size_t i = begin; i < end; ++i) {
+                            double lo[3], hi[3];
+                            boxOf(i, lo, hi);
+                            uint32_t bits = static_cast<uint32_t>(i) | Item::kTag;
+                            float tag;
+                            std::memcpy(&tag, &bits, 4);
 #if defined(__SSE2__)
-                // x and y two at a time (a third of this pass's time went into the roundings)
-                __m128 loXY = floatsBelow(_mm_loadu_pd(lo)), hiXY = floatsAbove(_mm_loadu_pd(hi));
-                items_[i] = {{_mm_movelh_ps(loXY, _mm_set_ss(floatBelow(lo[2])))},
-                             {_mm_movelh_ps(hiXY, _mm_setr_ps(floatAbove(hi[2]), tag, 0, 0))}};
+                            // x and y two at a time (a third of this pass's time went into the
+                            // roundings)
+                            __m128 loXY = floatsBelow(_mm_loadu_pd(lo)),
+                                   hiXY = floatsAbove(_mm_loadu_pd(hi));
+                            items_[i] = {
+                                {_mm_movelh_ps(loXY, _mm_set_ss(floatBelow(lo[2])))},
+                                {_mm_movelh_ps(hiXY, _mm_setr_ps(floatAbove(hi[2]), tag, 0, 0))}};
 #else
                 items_[i] = {F4::of(floatBelow(lo[0]), floatBelow(lo[1]), floatBelow(lo[2]), 0),
                              F4::of(floatAbove(hi[0]), floatAbove(hi[1]), floatAbove(hi[2]), tag)};
 #endif
-            }
-        });
+                        }
+                    });
     }
 
     void build() {
@@ -247,7 +274,9 @@ class WideBvhBuilder {
     };
 
     /// Bins per unit of centroid extent (the last centroid falls just inside the last bin).
-    static float binScale(int bins, float extent) { return static_cast<float>(bins) / extent * (1 - 1e-6f); }
+    static float binScale(int bins, float extent) {
+        return static_cast<float>(bins) / extent * (1 - 1e-6f);
+    }
 
     Range measure(uint32_t begin, uint32_t end) const {
         Range r;
@@ -283,7 +312,8 @@ class WideBvhBuilder {
             if (hi[a] - lo[a] > hi[longest] - lo[longest]) longest = a;
         for (int a = 0; a < 3; ++a) {
             float extent = hi[a] - lo[a];
-            if (sah && extent > 0 && (n >= kAllAxesFrom || a == longest)) scale[a] = binScale(nBins, extent);
+            if (sah && extent > 0 && (n >= kAllAxesFrom || a == longest))
+                scale[a] = binScale(nBins, extent);
         }
         if (scale[0] > 0 || scale[1] > 0 || scale[2] > 0) {
             const F4 origin = r.centroids.lo, scale4 = F4::of(scale[0], scale[1], scale[2], 0);
@@ -329,7 +359,8 @@ class WideBvhBuilder {
                 }
             } else {
                 // Instantiated for one axis and for all three, so the choice is made once per range
-                auto binOne = [&](auto oneAxis, const Item &it, Bins &out) __attribute__((always_inline)) {
+                auto binOne = [&](auto oneAxis, const Item &it, Bins &out)
+                    __attribute__((always_inline)) {
                     int b[3];
                     binsOf(it, b);
                     const F4 itemLo = it.lo, itemHi = it.hi;
@@ -375,9 +406,10 @@ class WideBvhBuilder {
                 Bins merged;
                 if (depth <= kTaskDepth && n >= kParallelFrom && threads_ > 1) {
                     std::vector<Bins> parts(static_cast<size_t>(threads_));
-                    parallelFor(r.begin, r.end, parts.size(), [&](size_t part, size_t begin, size_t end) {
-                        binItems(begin, end, parts[part]);
-                    });
+                    parallelFor(r.begin, r.end, parts.size(),
+                                [&](size_t part, size_t begin, size_t end) {
+                                    binItems(begin, end, parts[part]);
+                                });
                     merged = parts[0];
                     for (size_t p = 1; p < parts.size(); ++p) merged.merge(parts[p], nBins, axes);
                 } else {
@@ -385,15 +417,17 @@ class WideBvhBuilder {
                 }
                 for (int a = 0; a < 3; ++a) {
                     if (scale[a] == 0) continue;
-                    sweepBins<kBins>(merged.boxes[a], merged.counts[a], nBins,
-                                     [](Box acc, const Box &b) {
-                                         acc.grow(b);
-                                         return acc;
-                                     },
-                                     [](const Box &b) { return b.halfArea(); }, &bestCost, [&](int k) {
-                                         bestAxis = a;
-                                         bestSplit = k;
-                                     });
+                    sweepBins<kBins>(
+                        merged.boxes[a], merged.counts[a], nBins,
+                        [](Box acc, const Box &b) {
+                            acc.grow(b);
+                            return acc;
+                        },
+                        [](const Box &b) { return b.halfArea(); }, &bestCost,
+                        [&](int k) {
+                            bestAxis = a;
+                            bestSplit = k;
+                        });
                 }
             }
         }
@@ -431,7 +465,9 @@ class WideBvhBuilder {
         const float limit = static_cast<float>(r.bin + 1);
         const F4 limit4 = F4::of(limit, limit, limit, limit);
         const int axisBit = 1 << axis;
-        auto goesLeft = [&](F4 centroid) { return (lessMask((centroid - lo4) * scale4, limit4) & axisBit) != 0; };
+        auto goesLeft = [&](F4 centroid) {
+            return (lessMask((centroid - lo4) * scale4, limit4) & axisBit) != 0;
+        };
         if (r.end - r.begin <= kBranchFreeUpTo) return splitSmall(r, goesLeft, left, right);
         // Partition and measure both sides in the same pass, the bounds kept in registers
         Box lBox, lCent, rBox, rCent;
@@ -516,8 +552,8 @@ class WideBvhBuilder {
 
     /// Fills node `index` of `nodes` with up to four children made from r (already measured),
     /// recursing into interior children; returns the depth reached.
-    int fillNode(uint32_t index, Range r, LargeVector<WideBvh::Node> &nodes, int depth, int taskDepth,
-                 std::vector<Pending> *pending) {
+    int fillNode(uint32_t index, Range r, LargeVector<WideBvh::Node> &nodes, int depth,
+                 int taskDepth, std::vector<Pending> *pending) {
         if (r.decision == Range::kUndecided) decide(r, depth);
         std::array<Range, 4> kids;
         int count = 1;
@@ -566,8 +602,8 @@ class WideBvhBuilder {
         nodes[index] = node;
         for (int c = 0; c < count; ++c)
             if (kids[c].decision != Range::kLeaf && depth != taskDepth)
-                reached = std::max(reached,
-                                   fillNode(node.child[c], kids[c], nodes, depth + 1, taskDepth, pending));
+                reached = std::max(reached, fillNode(node.child[c], kids[c], nodes, depth + 1,
+                                                     taskDepth, pending));
         return reached;
     }
 
@@ -582,7 +618,8 @@ class WideBvhBuilder {
             }
         };
         std::vector<std::thread> workers;
-        for (int i = 1; i < threads_ && static_cast<size_t>(i) < pending.size(); ++i) workers.emplace_back(work);
+        for (int i = 1; i < threads_ && static_cast<size_t>(i) < pending.size(); ++i)
+            workers.emplace_back(work);
         work();
         for (auto &w : workers) w.join();
         // Subtrees go after the top levels in task order; each is copied (its child indices
@@ -641,7 +678,8 @@ void broadcastLanes(__m128 v, __m128 out[3]) {
 bool WideBvh::FloatRay::init(const Ray &ray, __m128 *inv) {
     const __m128d one = _mm_set1_pd(1);
     const __m128d oXY = _mm_loadu_pd(&ray.o.x), oZZ = _mm_set1_pd(ray.o.z);
-    const __m128d invXY = _mm_div_pd(one, _mm_loadu_pd(&ray.d.x)), invZZ = _mm_div_pd(one, _mm_set1_pd(ray.d.z));
+    const __m128d invXY = _mm_div_pd(one, _mm_loadu_pd(&ray.d.x)),
+                  invZZ = _mm_div_pd(one, _mm_set1_pd(ray.d.z));
     // Both lanes fit: |o| <= 1e30 and 1e-30 <= |inv| <= 1e30 or inv infinite (a NaN fails
     // every comparison)
     auto fits = [](__m128d o, __m128d i) {
@@ -649,7 +687,8 @@ bool WideBvh::FloatRay::init(const Ray &ray, __m128 *inv) {
         const __m128d big = _mm_set1_pd(1e30), small = _mm_set1_pd(1e-30);
         __m128d ao = _mm_and_pd(o, magnitude), ai = _mm_and_pd(i, magnitude);
         __m128d finite = _mm_and_pd(_mm_cmpge_pd(ai, small), _mm_cmple_pd(ai, big));
-        __m128d ok = _mm_and_pd(_mm_cmple_pd(ao, big), _mm_or_pd(finite, _mm_cmpeq_pd(ai, _mm_set1_pd(kInfinity))));
+        __m128d ok = _mm_and_pd(_mm_cmple_pd(ao, big),
+                                _mm_or_pd(finite, _mm_cmpeq_pd(ai, _mm_set1_pd(kInfinity))));
         return _mm_movemask_pd(ok) == 3;
     };
     if (!(static_cast<int>(fits(oXY, invXY)) & static_cast<int>(fits(oZZ, invZZ)))) return false;
@@ -709,8 +748,10 @@ bool WideBvh::ForwardSlabs::init(const Ray &ray) {
 
 template <typename BoxOf>
 void WideBvh::build(size_t n, BoxOf &&boxOf, int threads, float itemCost, int leafItems) {
-    if (n >= kMaxItems) throw std::length_error("a BVH indexes at most 2^28 items (triangles or CSG operands)");
-    if (leafItems < 1 || leafItems > kMaxLeafItems) throw std::invalid_argument("a BVH leaf holds 1 to 8 items");
+    if (n >= kMaxItems)
+        throw std::length_error("a BVH indexes at most 2^28 items (triangles or CSG operands)");
+    if (leafItems < 1 || leafItems > kMaxLeafItems)
+        throw std::invalid_argument("a BVH leaf holds 1 to 8 items");
     if (n == 0) return;
     if (threads <= 0) threads = std::max(1u, std::thread::hardware_concurrency());
     WideBvhBuilder builder(n, boxOf, *this, threads, itemCost, leafItems);
@@ -720,7 +761,8 @@ void WideBvh::build(size_t n, BoxOf &&boxOf, int threads, float itemCost, int le
 }
 
 void WideBvh::setLeafData(LeafData data) {
-    static_assert(kLeaf == 0x80000000u && kEmpty >> 31 == 1);  // the far walk picks a base by the top bit
+    static_assert(kLeaf == 0x80000000u &&
+                  kEmpty >> 31 == 1);  // the far walk picks a base by the top bit
     // Lines count from the line an array starts in (a small array may start within one)
     const uintptr_t nodeStart = reinterpret_cast<uintptr_t>(nodes_.data());
     const uintptr_t leafStart = reinterpret_cast<uintptr_t>(data.base);
@@ -731,14 +773,17 @@ void WideBvh::setLeafData(LeafData data) {
     // few hundred bytes, far below 2^32 lines
     auto ownLine = [&](uint32_t r) -> uint64_t {
         if (!(r & kLeaf)) return (nodeStart % 64 + uint64_t{r} * sizeof(Node)) / 64;
-        if (r != kEmpty && data.base) return (leafStart % 64 + uint64_t{leafFirst(r)} * data.stride) / 64;
+        if (r != kEmpty && data.base)
+            return (leafStart % 64 + uint64_t{leafFirst(r)} * data.stride) / 64;
         return 0;
     };
     // Near: each line counted from the nodes' first line, in 8-byte steps (a line is 8 of
     // them), fits in 31 bits and a sign; without leaf data, wherever the nodes take less than
     // 16 GiB (2^27 nodes)
     const int64_t shift = data.base ? (int64_t(leafLines_) - int64_t(nodeLines)) / 64 : 0;
-    auto nearSteps = [&](uint32_t r) { return (int64_t(ownLine(r)) + (r & kLeaf ? shift : 0)) * 8; };
+    auto nearSteps = [&](uint32_t r) {
+        return (int64_t(ownLine(r)) + (r & kLeaf ? shift : 0)) * 8;
+    };
     fetchNear_ = true;
     for (const Node &n : nodes_)
         for (int c = 0; c < kWidth && fetchNear_; ++c) {
@@ -747,27 +792,35 @@ void WideBvh::setLeafData(LeafData data) {
         }
     for (Node &n : nodes_)
         for (int c = 0; c < kWidth; ++c)
-            n.fetch[c] = static_cast<uint32_t>(fetchNear_ ? nearSteps(n.child[c]) : int64_t(ownLine(n.child[c])));
+            n.fetch[c] = static_cast<uint32_t>(fetchNear_ ? nearSteps(n.child[c])
+                                                          : int64_t(ownLine(n.child[c])));
 }
 
 WideBvh::WideBvh(const ir::Mesh &mesh, int threads, float itemCost, int leafItems) {
-    build(mesh.triangles.size(), [&](size_t i, double lo[3], double hi[3]) {
-        const auto &t = mesh.triangles[i];
-        const Vec3 &p0 = mesh.positions[t[0]], &p1 = mesh.positions[t[1]], &p2 = mesh.positions[t[2]];
-        for (int a = 0; a < 3; ++a) {
-            lo[a] = std::min({p0[a], p1[a], p2[a]});
-            hi[a] = std::max({p0[a], p1[a], p2[a]});
-        }
-    }, threads, itemCost, leafItems);
+    build(
+        mesh.triangles.size(),
+        [&](size_t i, double lo[3], double hi[3]) {
+            const auto &t = mesh.triangles[i];
+            const Vec3 &p0 = mesh.positions[t[0]], &p1 = mesh.positions[t[1]],
+                       &p2 = mesh.positions[t[2]];
+            for (int a = 0; a < 3; ++a) {
+                lo[a] = std::min({p0[a], p1[a], p2[a]});
+                hi[a] = std::max({p0[a], p1[a], p2[a]});
+            }
+        },
+        threads, itemCost, leafItems);
 }
 
 WideBvh::WideBvh(const std::vector<Bounds3> &items, int threads, float itemCost, int leafItems) {
-    build(items.size(), [&](size_t i, double lo[3], double hi[3]) {
-        for (int a = 0; a < 3; ++a) {
-            lo[a] = items[i].min[a];
-            hi[a] = items[i].max[a];
-        }
-    }, threads, itemCost, leafItems);
+    build(
+        items.size(),
+        [&](size_t i, double lo[3], double hi[3]) {
+            for (int a = 0; a < 3; ++a) {
+                lo[a] = items[i].min[a];
+                hi[a] = items[i].max[a];
+            }
+        },
+        threads, itemCost, leafItems);
 }
 
 }  // namespace rt

@@ -71,7 +71,9 @@ class WideBvh {
     /// Items a BVH can index (28 bits of a child reference).
     static constexpr size_t kMaxItems = size_t{1} << 28;
     /// A leaf's child reference, and its first slot and item count.
-    static constexpr uint32_t leafRef(uint32_t first, uint32_t count) { return kLeaf | first << 3 | (count - 1); }
+    static constexpr uint32_t leafRef(uint32_t first, uint32_t count) {
+        return kLeaf | first << 3 | (count - 1);
+    }
     static constexpr uint32_t leafFirst(uint32_t ref) { return (ref & ~kLeaf) >> 3; }
     static constexpr uint32_t leafCount(uint32_t ref) { return (ref & 7) + 1; }
 
@@ -89,7 +91,8 @@ class WideBvh {
         uint32_t fetch[kWidth];
     };
     static_assert(sizeof(Node) == 128);
-    static_assert(offsetof(Node, hi) == 3 * kWidth * sizeof(float));  // FloatSlabs indexes the planes
+    static_assert(offsetof(Node, hi) ==
+                  3 * kWidth * sizeof(float));  // FloatSlabs indexes the planes
     static constexpr uint32_t kLeaf = 0x80000000u;
     static constexpr uint32_t kEmpty = 0xffffffffu;
 
@@ -119,7 +122,9 @@ class WideBvh {
     /// Frees the item order, for a caller that keeps it in its own leaf data and only uses
     /// traverseLeaves or traverseSlots; traverse needs it.
     void dropItemOrder() { LargeVector<uint32_t>().swap(order_); }
-    size_t bytes() const { return nodes_.capacity() * sizeof(Node) + order_.capacity() * sizeof(uint32_t); }
+    size_t bytes() const {
+        return nodes_.capacity() * sizeof(Node) + order_.capacity() * sizeof(uint32_t);
+    }
     int depth() const { return depth_; }
 
     bool empty() const { return nodes_.empty(); }
@@ -146,7 +151,8 @@ class WideBvh {
     void setLeafData(LeafData data);
     /// Where the walk prefetches child c of node n: the start of the cache line that holds it.
     const void *fetchLine(const Node &n, int c) const {
-        return fetchNear_ ? fetchLine<true>(fetchBases(), n, c) : fetchLine<false>(fetchBases(), n, c);
+        return fetchNear_ ? fetchLine<true>(fetchBases(), n, c)
+                          : fetchLine<false>(fetchBases(), n, c);
     }
     /// Whether every child's line counts from the node array's (one base, no select a child,
     /// in 8-byte steps).
@@ -200,7 +206,8 @@ class WideBvh {
         bool init(const Ray &ray, __m128 *inv);
         /// Narrows the four children's [t0, t1] to each box's near and far distances, taken with
         /// the near planes' and the far planes' reciprocals.
-        void clip(const Node &n, const __m128 invNear[3], const __m128 invFar[3], __m128 &t0, __m128 &t1) const;
+        void clip(const Node &n, const __m128 invNear[3], const __m128 invFar[3], __m128 &t0,
+                  __m128 &t1) const;
     };
     /// The same test in float, conservatively: it meets every child that the exact ray meets
     /// within [tMin, tMax] (and so every child that DoubleSlabs meets), so the hits are the same.
@@ -239,8 +246,8 @@ class WideBvh {
         int test(const Node &n, const Limits &l, float tn[kWidth]) const;
     };
     static constexpr float kMargin = 1.0f / (1 << 20);  ///< 16 float units
-    static constexpr float kTiny = 1.17549435e-38f;       ///< the smallest normal float
-    static constexpr float kLargest = 3.40282347e38f;     ///< the largest finite float
+    static constexpr float kTiny = 1.17549435e-38f;     ///< the smallest normal float
+    static constexpr float kLargest = 3.40282347e38f;   ///< the largest finite float
 #endif
     template <typename BoxOf>
     void build(size_t n, BoxOf &&boxOf, int threads, float itemCost, int leafItems);
@@ -265,16 +272,19 @@ class WideBvh {
     template <bool Near>
     static const char *fetchLine(const std::array<uintptr_t, 2> &bases, const Node &n, int c) {
         if constexpr (Near)  // a sign-extending load, then base + index * 8 in the prefetch itself
-            return reinterpret_cast<const char *>(bases[0]) + intptr_t{static_cast<int32_t>(n.fetch[c])} * 8;
+            return reinterpret_cast<const char *>(bases[0]) +
+                   intptr_t{static_cast<int32_t>(n.fetch[c])} * 8;
         else
-            return reinterpret_cast<const char *>(bases[n.child[c] >> 31] + uintptr_t{n.fetch[c]} * 64);
+            return reinterpret_cast<const char *>(bases[n.child[c] >> 31] +
+                                                  uintptr_t{n.fetch[c]} * 64);
     }
 };
 
 template <typename Visit>
 void WideBvh::traverse(const Ray &ray, double tMin, double *tMax, Visit &&visit) const {
     assert(order_.size() > 0 || nodes_.empty());  // not after dropItemOrder()
-    traverseSlots(ray, tMin, tMax, [&](uint32_t slot, double *far) { return visit(order_[slot], far); });
+    traverseSlots(ray, tMin, tMax,
+                  [&](uint32_t slot, double *far) { return visit(order_[slot], far); });
 }
 
 template <typename Visit>
@@ -302,15 +312,17 @@ void WideBvh::traverseLeaves(const Ray &ray, double tMin, double *tMax, Visit &&
 }
 
 #if defined(__SSE2__)
-inline void WideBvh::FloatRay::clip(const Node &n, const __m128 invNear[3], const __m128 invFar[3], __m128 &t0,
-                                    __m128 &t1) const {
+inline void WideBvh::FloatRay::clip(const Node &n, const __m128 invNear[3], const __m128 invFar[3],
+                                    __m128 &t0, __m128 &t1) const {
     const float *planes = &n.lo[0][0];
     // maxps/minps return their second operand when either is NaN: a NaN distance (the
     // origin's bound on the plane of a flat direction) leaves the interval as it was
     // (three calls, not a loop: GCC's -O2 keeps a loop here, which costs 14 % more instructions)
     auto axis = [&](int a) {
-        t0 = _mm_max_ps(_mm_mul_ps(_mm_sub_ps(_mm_load_ps(planes + nearAt[a]), oNear[a]), invNear[a]), t0);
-        t1 = _mm_min_ps(_mm_mul_ps(_mm_sub_ps(_mm_load_ps(planes + farAt[a]), oFar[a]), invFar[a]), t1);
+        t0 = _mm_max_ps(
+            _mm_mul_ps(_mm_sub_ps(_mm_load_ps(planes + nearAt[a]), oNear[a]), invNear[a]), t0);
+        t1 = _mm_min_ps(_mm_mul_ps(_mm_sub_ps(_mm_load_ps(planes + farAt[a]), oFar[a]), invFar[a]),
+                        t1);
     };
     axis(0);
     axis(1);
@@ -318,7 +330,8 @@ inline void WideBvh::FloatRay::clip(const Node &n, const __m128 invNear[3], cons
 }
 
 inline int WideBvh::FloatSlabs::test(const Node &n, const Limits &l, float tn[kWidth]) const {
-    __m128 t0 = _mm_set1_ps(static_cast<float>(l.tMin)), t1 = _mm_set1_ps(static_cast<float>(l.tMax));
+    __m128 t0 = _mm_set1_ps(static_cast<float>(l.tMin)),
+           t1 = _mm_set1_ps(static_cast<float>(l.tMax));
     clip(n, inv, inv, t0, t1);
     // A distance that overflowed stands for one beyond the largest float, not for infinity
     const __m128 big = _mm_set1_ps(kLargest);
@@ -348,7 +361,8 @@ inline int WideBvh::ForwardSlabs::test(const Node &n, const Limits &l, float tn[
 #endif
 
 inline WideBvh::DoubleSlabs::DoubleSlabs(const Ray &ray)
-    : o{ray.o.x, ray.o.y, ray.o.z}, inv{1 / ray.d.x, 1 / ray.d.y, 1 / ray.d.z},
+    : o{ray.o.x, ray.o.y, ray.o.z},
+      inv{1 / ray.d.x, 1 / ray.d.y, 1 / ray.d.z},
       nearHi{inv[0] < 0, inv[1] < 0, inv[2] < 0} {}
 
 inline int WideBvh::DoubleSlabs::test(const Node &n, const Limits &l, float tn[kWidth]) const {
@@ -468,8 +482,9 @@ void WideBvh::walkFetching(const Slabs &slabs, double tMin, double *tMax, Visit 
             // Without the empty slots, where the test does not cull their inverted infinite boxes
             if constexpr (!Slabs::kCullsEmpty) {
 #if defined(__SSE2__)
-                mask &= ~_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(
-                    _mm_load_si128(reinterpret_cast<const __m128i *>(n.child)), _mm_set1_epi32(-1))));
+                mask &= ~_mm_movemask_ps(_mm_castsi128_ps(
+                    _mm_cmpeq_epi32(_mm_load_si128(reinterpret_cast<const __m128i *>(n.child)),
+                                    _mm_set1_epi32(-1))));
 #else
                 for (int c = 0; c < 4; ++c)
                     if (n.child[c] == kEmpty) mask &= ~(1 << c);
@@ -493,7 +508,8 @@ void WideBvh::walkFetching(const Slabs &slabs, double tMin, double *tMax, Visit 
                 }
                 Entry hit[4] = {{n.child[c0], tn[c0]}, {n.child[c1], tn[c1]}};
                 int k = 2;
-                for (; mask != 0; mask &= mask - 1) hit[k++] = {n.child[__builtin_ctz(mask)], tn[__builtin_ctz(mask)]};
+                for (; mask != 0; mask &= mask - 1)
+                    hit[k++] = {n.child[__builtin_ctz(mask)], tn[__builtin_ctz(mask)]};
                 // Farthest first (insertion sort of at most four)
                 for (int i = 1; i < k; ++i) {
                     Entry x = hit[i];

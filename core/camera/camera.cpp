@@ -22,7 +22,8 @@ Camera::Camera(const ir::Camera &c, int width, int height)
     Vec3 rightUnit = normalize(r);
     if (c.projection == ir::Projection::Orthographic) {
         // The film is orthoHeight tall and orthoHeight * aspect wide
-        if (!(c.orthoHeight > 0)) throw SceneError(c.loc, "orthographic view height must be positive");
+        if (!(c.orthoHeight > 0))
+            throw SceneError(c.loc, "orthographic view height must be positive");
         orthographic_ = true;
         up_ = cross(rightUnit, d) * c.orthoHeight;
         right_ = rightUnit * (c.orthoHeight * aspect);

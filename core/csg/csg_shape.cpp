@@ -49,7 +49,8 @@ int CsgShape::addOp(Op op, std::vector<int> children) {
         case Op::Difference:
             if (!children.empty()) n.bounds = nodes_[children.front()].bounds;
             break;
-        case Op::Leaf: break;
+        case Op::Leaf:
+            break;
     }
     n.children = std::move(children);
     if (op != Op::Leaf && n.children.size() == 2) {
@@ -121,8 +122,8 @@ void CsgShape::spans(const Ray &ray, double tMin, double tMax, SpanList &out,
 // Inlined where it is called (GCC 12 left it out of line once it grew the pair's test: 1.4 %
 // more instructions on openscad_model); the boolean nodes' merges are the calls
 __attribute__((always_inline)) inline void CsgShape::evaluate(int index, const Ray &ray,
-                                                              const Vec3 &invDir, double w0, double w1,
-                                                              SpanList &out,
+                                                              const Vec3 &invDir, double w0,
+                                                              double w1, SpanList &out,
                                                               SpanScratch &scratch) const {
     const Node &node = nodes_[index];
     out.clear();
@@ -252,15 +253,15 @@ bool CsgShape::insideNode(int index, const Vec3 &p) const {
     const Node &node = nodes_[index];
     if (!node.bounds.contains(p)) return false;
     switch (node.op) {
-        case Op::Leaf: return node.leaf->inside(p);
+        case Op::Leaf:
+            return node.leaf->inside(p);
         case Op::Union:
             if (node.bvh && prune_) return anyOperandInside(node, p);
             return std::any_of(node.children.begin(), node.children.end(),
                                [&](int c) { return insideNode(c, p); });
         case Op::Intersection:
-            return !node.children.empty() &&
-                   std::all_of(node.children.begin(), node.children.end(),
-                               [&](int c) { return insideNode(c, p); });
+            return !node.children.empty() && std::all_of(node.children.begin(), node.children.end(),
+                                                         [&](int c) { return insideNode(c, p); });
         case Op::Difference: {
             if (node.children.empty() || !insideNode(node.children.front(), p)) return false;
             if (node.bvh && prune_) return !anyOperandInside(node, p);

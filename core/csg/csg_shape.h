@@ -28,7 +28,9 @@ class CsgShape final : public Shape {
     int addLeaf(std::unique_ptr<LeafShape> leaf);
     int addOp(Op op, std::vector<int> children);
 
-    Bounds3 worldBounds() const override { return nodes_.empty() ? Bounds3() : nodes_.back().bounds; }
+    Bounds3 worldBounds() const override {
+        return nodes_.empty() ? Bounds3() : nodes_.back().bounds;
+    }
     void spans(const Ray &ray, double tMin, double tMax, SpanList &out,
                SpanScratch &scratch) const override;
     bool inside(const Vec3 &p) const override;
@@ -62,8 +64,8 @@ class CsgShape final : public Shape {
     };
 
     /// `invDir`: the reciprocal of ray.d, computed once per ray for every bounds test.
-    void evaluate(int node, const Ray &ray, const Vec3 &invDir, double w0, double w1,
-                  SpanList &out, SpanScratch &scratch) const;
+    void evaluate(int node, const Ray &ray, const Vec3 &invDir, double w0, double w1, SpanList &out,
+                  SpanScratch &scratch) const;
     /// evaluate() for a boolean node whose bounds the ray meets within [w0, w1]: its operands
     /// merged. Out of line, so a leaf's evaluation (most calls) does not set up its frame.
     void evaluateOperation(const Node &node, const Ray &ray, const Vec3 &invDir, double w0,

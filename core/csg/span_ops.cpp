@@ -13,9 +13,12 @@ namespace {
 
 bool evaluate(SpanOp op, bool inA, bool inB) {
     switch (op) {
-        case SpanOp::Union: return inA || inB;
-        case SpanOp::Intersection: return inA && inB;
-        case SpanOp::Difference: return inA && !inB;
+        case SpanOp::Union:
+            return inA || inB;
+        case SpanOp::Intersection:
+            return inA && inB;
+        case SpanOp::Difference:
+            return inA && !inB;
     }
     return false;
 }
@@ -25,7 +28,9 @@ bool evaluate(SpanOp op, bool inA, bool inB) {
 /// times a step, and a vector's size() of 48-byte spans costs a division.
 class CrossingCursor {
   public:
-    explicit CrossingCursor(std::span<const Span> l) : spans_(l.data()), end_(2 * l.size()) { load(); }
+    explicit CrossingCursor(std::span<const Span> l) : spans_(l.data()), end_(2 * l.size()) {
+        load();
+    }
     bool done() const { return index_ >= end_; }
     double t() const { return t_; }
     const Crossing &current() const {

@@ -32,7 +32,8 @@ class AxisBox {
     const PrimitiveInstance *leaf() const { return leaf_; }
 
     /// PrimitiveInstance::firstCrossing; `invDir`: 1 / ray.d, component by component.
-    bool firstCrossing(const Ray &ray, const Vec3 &invDir, double tMin, double tMax, Crossing *c) const {
+    bool firstCrossing(const Ray &ray, const Vec3 &invDir, double tMin, double tMax,
+                       Crossing *c) const {
         PrimitiveSpan s;
         return Box::slabSpan(min_, max_, objectOrigin(ray), ray.d, invDir, &s) &&
                PrimitiveInstance::firstCrossingOf(s, leaf_, tMin, tMax, c);

@@ -11,10 +11,10 @@ class LeafShape;
 class Shape;
 
 struct SurfaceInteraction {
-    double t = 0;                              ///< world ray parameter of the hit
-    Vec3 p;                                    ///< hit point, refined onto the surface
-    Vec3 pError;                               ///< bound on the absolute error of p
-    Vec3 n;                                    ///< unit geometric normal, out of the primitive
+    double t = 0;  ///< world ray parameter of the hit
+    Vec3 p;        ///< hit point, refined onto the surface
+    Vec3 pError;   ///< bound on the absolute error of p
+    Vec3 n;        ///< unit geometric normal, out of the primitive
     /// Unit shading normal: n, or a mesh's interpolated vertex normal (POV-Ray shades smooth
     /// triangles with it: lighting, reflection and refraction)
     Vec3 ns;
@@ -33,8 +33,8 @@ struct SurfaceInteraction {
     /// one (glTF COLOR_0)
     float vertexColor[4] = {1, 1, 1, 1};
     bool hasVertexColor = false;
-    const LeafShape *leaf = nullptr;           ///< primitive or mesh whose surface was hit
-    const Shape *object = nullptr;             ///< top-level object (owner of the interior)
+    const LeafShape *leaf = nullptr;  ///< primitive or mesh whose surface was hit
+    const Shape *object = nullptr;    ///< top-level object (owner of the interior)
     /// Another surface lies within the tie tolerance of this hit (coincident faces, or a
     /// surface at the ray's origin): renderers may legitimately disagree on what is seen.
     bool tie = false;

@@ -18,7 +18,8 @@ namespace rt {
 std::unique_ptr<Primitive> Primitive::create(const ir::PrimShape &shape) {
     if (const auto *s = std::get_if<ir::SpherePrim>(&shape))
         return std::make_unique<Sphere>(s->radius);
-    if (const auto *b = std::get_if<ir::BoxPrim>(&shape)) return std::make_unique<Box>(b->min, b->max);
+    if (const auto *b = std::get_if<ir::BoxPrim>(&shape))
+        return std::make_unique<Box>(b->min, b->max);
     if (const auto *c = std::get_if<ir::CylinderPrim>(&shape))
         return std::make_unique<Cone>(c->z0, c->z1, c->r1, c->r2);
     if (const auto *p = std::get_if<ir::PolytopePrim>(&shape))

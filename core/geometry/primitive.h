@@ -6,11 +6,11 @@
 #include <memory>
 #include <vector>
 
-#include "core/meshing/facets.h"
 #include "core/ir/node.h"
 #include "core/math/bounds3.h"
 #include "core/math/float_util.h"
 #include "core/math/ray.h"
+#include "core/meshing/facets.h"
 
 namespace rt {
 
@@ -103,7 +103,9 @@ class Box final : public Primitive {
     const Vec3 &min() const { return min_; }
     const Vec3 &max() const { return max_; }
     bool inside(const Vec3 &p) const override;
-    ObjectSurface surface(const Vec3 &p, int face) const override { return surfaceOf(min_, max_, p, face); }
+    ObjectSurface surface(const Vec3 &p, int face) const override {
+        return surfaceOf(min_, max_, p, face);
+    }
     /// surface() of the box [min, max]. Its normal is a unit vector along an axis.
     static ObjectSurface surfaceOf(const Vec3 &min, const Vec3 &max, const Vec3 &p, int face) {
         int axis = face / 2;
@@ -162,7 +164,8 @@ class ConvexPolytope final : public Primitive {
   private:
     /// Signed distance of the ray's origin outside the plane and the rate the ray closes on
     /// it; false when the ray runs parallel to it.
-    static bool planeCrossing(const meshing::FacePlane &pl, const Ray &r, double *dist, double *rate);
+    static bool planeCrossing(const meshing::FacePlane &pl, const Ray &r, double *dist,
+                              double *rate);
     bool intersectPlanes(const Ray &r, PrimitiveSpan *span) const;
     bool intersectFaces(const Ray &r, PrimitiveSpan *span) const;
 

@@ -355,7 +355,8 @@ Lathe::Lathe(const ir::LathePrim &prim)
     std::sort(slabZ_.begin(), slabZ_.end());
     slabZ_.erase(std::unique(slabZ_.begin(), slabZ_.end()), slabZ_.end());
     auto slabOf = [&](double z) {
-        return static_cast<size_t>(std::lower_bound(slabZ_.begin(), slabZ_.end(), z) - slabZ_.begin());
+        return static_cast<size_t>(std::lower_bound(slabZ_.begin(), slabZ_.end(), z) -
+                                   slabZ_.begin());
     };
     size_t slabs = slabZ_.empty() ? 0 : slabZ_.size() - 1, entries = 0;
     std::vector<uint32_t> count(slabs + 1, 0);

@@ -9,7 +9,8 @@ namespace rt {
 void SpanScratch::grow() { pool_.push_back(std::make_unique<SpanList>()); }
 
 std::vector<int> &SpanScratch::acquireIndices() {
-    if (indicesUsed_ == indexPool_.size()) indexPool_.push_back(std::make_unique<std::vector<int>>());
+    if (indicesUsed_ == indexPool_.size())
+        indexPool_.push_back(std::make_unique<std::vector<int>>());
     std::vector<int> &l = *indexPool_[indicesUsed_++];
     l.clear();
     return l;
@@ -126,7 +127,8 @@ bool PrimitiveInstance::firstCrossing(const Ray &ray, double tMin, double tMax, 
         return false;
     }
     PrimitiveSpan s;
-    return prim_->intersect(placement_.toObject(ray), &s) && firstCrossingOf(s, this, tMin, tMax, c);
+    return prim_->intersect(placement_.toObject(ray), &s) &&
+           firstCrossingOf(s, this, tMin, tMax, c);
 }
 
 bool PrimitiveInstance::inside(const Vec3 &p) const {

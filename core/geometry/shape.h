@@ -213,8 +213,8 @@ class PrimitiveInstance final : public LeafShape {
     /// The crossing firstCrossing() takes from the one span `s` of the line inside a convex
     /// primitive (`leaf`): its entry where that lies within (tMin, tMax), else its exit where
     /// that does.
-    static bool firstCrossingOf(const PrimitiveSpan &s, const LeafShape *leaf, double tMin, double tMax,
-                                Crossing *c) {
+    static bool firstCrossingOf(const PrimitiveSpan &s, const LeafShape *leaf, double tMin,
+                                double tMax, Crossing *c) {
         if (s.t0 > tMin) {
             if (s.t0 >= tMax) return false;
             *c = {s.t0, leaf, s.face0};

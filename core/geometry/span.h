@@ -30,7 +30,8 @@ constexpr double kTieTolerance = 1e-11;
 
 /// Tie tolerance for crossings near t along a ray from `o`.
 inline double tieEpsilon(const Vec3 &o, double t) {
-    return kTieTolerance * (std::max({std::abs(o.x), std::abs(o.y), std::abs(o.z)}) + std::abs(t) + 1e-300);
+    return kTieTolerance *
+           (std::max({std::abs(o.x), std::abs(o.y), std::abs(o.z)}) + std::abs(t) + 1e-300);
 }
 
 /// The closed interval [in.t, out.t] of the ray line inside a solid; in.t < out.t.

@@ -49,13 +49,15 @@ SCADRAY_AVX2_FMA inline __m256d differenceOfProducts4(__m256d a, __m256d b, __m2
 /// differenceOfProducts with its two FMAs), so a lane left out is one that intersect rejects
 /// at its first test. NaN edge functions pass, as there.
 template <typename Load>
-SCADRAY_AVX2_FMA __attribute__((always_inline)) inline unsigned edgeCandidates(const Load &load, uint32_t n, const TriangleMesh::RayFrame &f) {
+SCADRAY_AVX2_FMA __attribute__((always_inline)) inline unsigned edgeCandidates(
+    const Load &load, uint32_t n, const TriangleMesh::RayFrame &f) {
     const __m256d ox = _mm256_set1_pd(f.ox), oy = _mm256_set1_pd(f.oy), oz = _mm256_set1_pd(f.oz);
     const __m256d shx = _mm256_set1_pd(f.sx), shy = _mm256_set1_pd(f.sy);
     const int kx = f.kx, ky = f.ky, kz = f.kz;
     // Vertex v translated to the origin, permuted and sheared (written out: GCC keeps a loop
     // over the vertices, with its results on the stack)
-    __m256d z0 = _mm256_sub_pd(load(0, kz), oz), z1 = _mm256_sub_pd(load(1, kz), oz), z2 = _mm256_sub_pd(load(2, kz), oz);
+    __m256d z0 = _mm256_sub_pd(load(0, kz), oz), z1 = _mm256_sub_pd(load(1, kz), oz),
+            z2 = _mm256_sub_pd(load(2, kz), oz);
     __m256d x0 = _mm256_add_pd(_mm256_sub_pd(load(0, kx), ox), _mm256_mul_pd(shx, z0));
     __m256d y0 = _mm256_add_pd(_mm256_sub_pd(load(0, ky), oy), _mm256_mul_pd(shy, z0));
     __m256d x1 = _mm256_add_pd(_mm256_sub_pd(load(1, kx), ox), _mm256_mul_pd(shx, z1));
@@ -66,10 +68,12 @@ SCADRAY_AVX2_FMA __attribute__((always_inline)) inline unsigned edgeCandidates(c
     __m256d e1 = differenceOfProducts4(x2, y0, y2, x0);
     __m256d e2 = differenceOfProducts4(x0, y1, y0, x1);
     const __m256d zero = _mm256_setzero_pd();
-    __m256d negative = _mm256_or_pd(_mm256_or_pd(_mm256_cmp_pd(e0, zero, _CMP_LT_OQ), _mm256_cmp_pd(e1, zero, _CMP_LT_OQ)),
-                                    _mm256_cmp_pd(e2, zero, _CMP_LT_OQ));
-    __m256d positive = _mm256_or_pd(_mm256_or_pd(_mm256_cmp_pd(e0, zero, _CMP_GT_OQ), _mm256_cmp_pd(e1, zero, _CMP_GT_OQ)),
-                                    _mm256_cmp_pd(e2, zero, _CMP_GT_OQ));
+    __m256d negative = _mm256_or_pd(
+        _mm256_or_pd(_mm256_cmp_pd(e0, zero, _CMP_LT_OQ), _mm256_cmp_pd(e1, zero, _CMP_LT_OQ)),
+        _mm256_cmp_pd(e2, zero, _CMP_LT_OQ));
+    __m256d positive = _mm256_or_pd(
+        _mm256_or_pd(_mm256_cmp_pd(e0, zero, _CMP_GT_OQ), _mm256_cmp_pd(e1, zero, _CMP_GT_OQ)),
+        _mm256_cmp_pd(e2, zero, _CMP_GT_OQ));
     unsigned mixed = static_cast<unsigned>(_mm256_movemask_pd(_mm256_and_pd(negative, positive)));
     return ~mixed & ((1u << n) - 1);
 }
@@ -87,7 +91,8 @@ struct FloatLeafLoad {
 
 /// edgeCandidates of a float leaf's n triangles (up to eight: two groups of four, independent
 /// of each other, in lanes 0 to 3 and 4 to 7 of the result).
-SCADRAY_AVX2_FMA unsigned floatLeafCandidates(const uint32_t *coordinates, uint32_t n, const TriangleMesh::RayFrame &f) {
+SCADRAY_AVX2_FMA unsigned floatLeafCandidates(const uint32_t *coordinates, uint32_t n,
+                                              const TriangleMesh::RayFrame &f) {
     const float *c = reinterpret_cast<const float *>(coordinates);
     unsigned lanes = edgeCandidates(FloatLeafLoad{c, n}, std::min(n, 4u), f);
     if (n > 4) lanes |= edgeCandidates(FloatLeafLoad{c + 4, n}, n - 4, f) << 4;
@@ -101,15 +106,17 @@ struct GatherLoad {
     const double *positions;
     __m128i at[3];
     /// The load of a group of n (1 to 4) records.
-    SCADRAY_AVX2_FMA static GatherLoad of(const TriangleMesh::LeafTriangle *group, uint32_t n, const Vec3 *positions) {
-        const TriangleMesh::LeafTriangle &t0 = group[0], &t1 = group[n > 1 ? 1 : 0], &t2 = group[n > 2 ? 2 : 0],
-                                         &t3 = group[n > 3 ? 3 : 0];
+    SCADRAY_AVX2_FMA static GatherLoad of(const TriangleMesh::LeafTriangle *group, uint32_t n,
+                                          const Vec3 *positions) {
+        const TriangleMesh::LeafTriangle &t0 = group[0], &t1 = group[n > 1 ? 1 : 0],
+                                         &t2 = group[n > 2 ? 2 : 0], &t3 = group[n > 3 ? 3 : 0];
         static_assert(sizeof(Vec3) == 3 * sizeof(double));
         GatherLoad load{&positions[0].x, {}};
         for (int v = 0; v < 3; ++v)
-            load.at[v] = _mm_mullo_epi32(_mm_set_epi32(static_cast<int>(t3.v[v]), static_cast<int>(t2.v[v]),
-                                                       static_cast<int>(t1.v[v]), static_cast<int>(t0.v[v])),
-                                         _mm_set1_epi32(3));
+            load.at[v] =
+                _mm_mullo_epi32(_mm_set_epi32(static_cast<int>(t3.v[v]), static_cast<int>(t2.v[v]),
+                                              static_cast<int>(t1.v[v]), static_cast<int>(t0.v[v])),
+                                _mm_set1_epi32(3));
         return load;
     }
     SCADRAY_AVX2_FMA __m256d operator()(int v, int a) const {
@@ -122,8 +129,10 @@ struct GatherLoad {
 /// floatLeafCandidates takes them), the positions gathered by vertex index (three times an
 /// index must fit in 31 bits: TriangleMesh checks the vertex count).
 SCADRAY_AVX2_FMA unsigned indexedLeafCandidates(const TriangleMesh::LeafTriangle *leaf, uint32_t n,
-                                                const Vec3 *positions, const TriangleMesh::RayFrame &f) {
-    unsigned lanes = edgeCandidates(GatherLoad::of(leaf, std::min(n, 4u), positions), std::min(n, 4u), f);
+                                                const Vec3 *positions,
+                                                const TriangleMesh::RayFrame &f) {
+    unsigned lanes =
+        edgeCandidates(GatherLoad::of(leaf, std::min(n, 4u), positions), std::min(n, 4u), f);
     if (n > 4) lanes |= edgeCandidates(GatherLoad::of(leaf + 4, n - 4, positions), n - 4, f) << 4;
     return lanes;
 }
@@ -156,7 +165,8 @@ bool TriangleMesh::fourWideLeaves() {
 WideBvh TriangleMesh::buildBvh(const ir::Mesh &mesh, int threads) {
     // The four-wide edge test makes a leaf of up to four triangles cost little more than one,
     // so where it runs the BVH has fuller leaves
-    if (fourWideLeaves()) return WideBvh(mesh, threads, WideBvh::kTriangleCost, WideBvh::kMaxLeafItems);
+    if (fourWideLeaves())
+        return WideBvh(mesh, threads, WideBvh::kTriangleCost, WideBvh::kMaxLeafItems);
     return WideBvh(mesh, threads, WideBvh::kItemCost);
 }
 
@@ -167,12 +177,14 @@ TriangleMesh::TriangleMesh(ir::MeshPtr mesh, int buildThreads) : mesh_(std::move
         const auto &t = m.triangles[i];
         for (int k = 0; k < 3; ++k) bounds_ = unionBounds(bounds_, m.positions[t[k]]);
         if (!m.normals.empty())
-            smooth_[i] = !(m.normals[t[0]] == m.normals[t[1]] && m.normals[t[1]] == m.normals[t[2]]);
+            smooth_[i] =
+                !(m.normals[t[0]] == m.normals[t[1]] && m.normals[t[1]] == m.normals[t[2]]);
     }
     bvh_ = buildBvh(m, buildThreads);
     floatLeaves_ = floatLeaves(m, bvh_, buildThreads);
     // Gathers take signed 32-bit offsets: three times a vertex index must fit
-    fourWide_ = fourWideLeaves() && (!floatLeaves_.empty() || m.positions.size() <= size_t{INT32_MAX} / 3);
+    fourWide_ =
+        fourWideLeaves() && (!floatLeaves_.empty() || m.positions.size() <= size_t{INT32_MAX} / 3);
     if (floatLeaves_.empty())
         leafTriangles_ = leafOrder(m, bvh_);
     else
@@ -189,7 +201,8 @@ LargeVector<TriangleMesh::LeafTriangle> TriangleMesh::leafOrder(const ir::Mesh &
     return out;
 }
 
-LargeVector<uint32_t> TriangleMesh::floatLeaves(const ir::Mesh &mesh, const WideBvh &bvh, int threads) {
+LargeVector<uint32_t> TriangleMesh::floatLeaves(const ir::Mesh &mesh, const WideBvh &bvh,
+                                                int threads) {
     LargeVector<uint32_t> out;
     if (bvh.empty() || !allFloats(mesh)) return out;
     const auto &order = bvh.itemOrder();
@@ -242,13 +255,16 @@ void TriangleMesh::forLeaf(const RayFrame &frame, uint32_t first, uint32_t count
         }
         return;
     }
-    const uint32_t *leaf = floatLeaves_.data() + kFloatLeafWords * first, *coordinates = leaf + count;
+    const uint32_t *leaf = floatLeaves_.data() + kFloatLeafWords * first,
+                   *coordinates = leaf + count;
 #ifdef SCADRAY_LEAF_FILTER
     if (fourWide_) lanes = floatLeafCandidates(coordinates, count, frame);
 #endif
     for (; lanes != 0; lanes &= lanes - 1) {
         const uint32_t i = static_cast<uint32_t>(__builtin_ctz(lanes));
-        auto at = [&](int j) { return static_cast<double>(std::bit_cast<float>(coordinates[j * count + i])); };
+        auto at = [&](int j) {
+            return static_cast<double>(std::bit_cast<float>(coordinates[j * count + i]));
+        };
         f(Vec3(at(0), at(1), at(2)), Vec3(at(3), at(4), at(5)), Vec3(at(6), at(7), at(8)), leaf[i]);
     }
 }
@@ -270,7 +286,8 @@ TriangleMesh::RayFrame::RayFrame(const Ray &r) : ray(&r) {
 bool TriangleMesh::intersectTriangle(const Ray &r, uint32_t triangle, Hit *hit) const {
     const auto &t = mesh_->triangles[triangle];
     const auto &pos = mesh_->positions;
-    return intersect(RayFrame(r), pos[t[0]], pos[t[1]], pos[t[2]], triangle, -kInfinity, kInfinity, false, hit);
+    return intersect(RayFrame(r), pos[t[0]], pos[t[1]], pos[t[2]], triangle, -kInfinity, kInfinity,
+                     false, hit);
 }
 
 // The edge functions round once each through std::fma, which without an FMA instruction in the
@@ -278,7 +295,8 @@ bool TriangleMesh::intersectTriangle(const Ray &r, uint32_t triangle, Hit *hit) 
 // results (core/math/fma_clone.h)
 SCADRAY_FMA_CLONES
 bool TriangleMesh::intersect(const RayFrame &f, const Vec3 &p0, const Vec3 &p1, const Vec3 &p2,
-                             uint32_t triangle, double tMin, double tMax, bool tMaxInclusive, Hit *hit) const {
+                             uint32_t triangle, double tMin, double tMax, bool tMaxInclusive,
+                             Hit *hit) const {
     const Ray &r = *f.ray;
     // Translate the vertices to the ray origin, permute and shear into the ray's frame
     const int kx = f.kx, ky = f.ky, kz = f.kz;
@@ -337,17 +355,20 @@ bool TriangleMesh::closest(const Ray &r, double tMin, double tMax, Hit *hit) con
     double far = tMax;
     RayFrame frame(r);
     bvh_.traverseLeaves(r, tMin, &far, [&](uint32_t first, uint32_t count, double *tFar) {
-        forLeaf(frame, first, count, [&](const Vec3 &p0, const Vec3 &p1, const Vec3 &p2, uint32_t triangle) {
-            Hit h;
-            // A tie at the closest t goes to the lower triangle index
-            if (!intersect(frame, p0, p1, p2, triangle, tMin, *tFar, found && triangle < hit->triangle, &h)) return;
-            // A hit within its own rounding error of the origin may be the surface the ray
-            // starts on: t must be conservatively positive (pbrt-v3 Triangle::Intersect)
-            if (h.t <= h.tError) return;
-            *hit = h;
-            *tFar = h.t;
-            found = true;
-        });
+        forLeaf(frame, first, count,
+                [&](const Vec3 &p0, const Vec3 &p1, const Vec3 &p2, uint32_t triangle) {
+                    Hit h;
+                    // A tie at the closest t goes to the lower triangle index
+                    if (!intersect(frame, p0, p1, p2, triangle, tMin, *tFar,
+                                   found && triangle < hit->triangle, &h))
+                        return;
+                    // A hit within its own rounding error of the origin may be the surface the ray
+                    // starts on: t must be conservatively positive (pbrt-v3 Triangle::Intersect)
+                    if (h.t <= h.tError) return;
+                    *hit = h;
+                    *tFar = h.t;
+                    found = true;
+                });
         return false;
     });
     return found;
@@ -357,10 +378,12 @@ void TriangleMesh::allHits(const Ray &r, std::vector<Hit> &out) const {
     double far = kInfinity;
     RayFrame frame(r);
     bvh_.traverseLeaves(r, -kInfinity, &far, [&](uint32_t first, uint32_t count, double *) {
-        forLeaf(frame, first, count, [&](const Vec3 &p0, const Vec3 &p1, const Vec3 &p2, uint32_t triangle) {
-            Hit h;
-            if (intersect(frame, p0, p1, p2, triangle, -kInfinity, kInfinity, false, &h)) out.push_back(h);
-        });
+        forLeaf(frame, first, count,
+                [&](const Vec3 &p0, const Vec3 &p1, const Vec3 &p2, uint32_t triangle) {
+                    Hit h;
+                    if (intersect(frame, p0, p1, p2, triangle, -kInfinity, kInfinity, false, &h))
+                        out.push_back(h);
+                });
         return false;
     });
 }
@@ -400,7 +423,8 @@ ObjectSurface TriangleMesh::surface(const Hit &hit, Vec3 *shadingNormal,
     if (si->hasTangent) {
         // Object space here; MeshInstance::surfaceAt moves it to the world. The sign is the
         // first vertex's: glTF requires it constant over a triangle
-        si->tangent = {lerp(mesh_->tangents, 0), lerp(mesh_->tangents, 1), lerp(mesh_->tangents, 2)};
+        si->tangent = {lerp(mesh_->tangents, 0), lerp(mesh_->tangents, 1),
+                       lerp(mesh_->tangents, 2)};
         si->tangentSign = mesh_->tangents[idx[0]][3] < 0 ? -1 : 1;
     }
     si->hasVertexColor = !mesh_->colors.empty();

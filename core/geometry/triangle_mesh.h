@@ -39,7 +39,8 @@ class TriangleMesh {
     /// holds up to eight: two registers a coordinate). Then
     /// kLeafPadding words. Empty unless every position is a float (as STL and glTF give them),
     /// so the floats stand for the positions exactly. threads: 0 for all cores.
-    static LargeVector<uint32_t> floatLeaves(const ir::Mesh &mesh, const WideBvh &bvh, int threads = 0);
+    static LargeVector<uint32_t> floatLeaves(const ir::Mesh &mesh, const WideBvh &bvh,
+                                             int threads = 0);
     /// Whether a leaf's triangles are tested four at a time (on a CPU with AVX2 and FMA); mesh
     /// BVHs are then built with WideBvh::kTriangleCost and leaves of up to eight triangles (two
     /// groups of four), for fuller leaves and fewer nodes.
@@ -103,8 +104,8 @@ class TriangleMesh {
   private:
     /// intersectTriangle for a ray frame and the triangle's vertices, returning false early
     /// when t is not within (tMin, tMax), or (tMin, tMax] when tMaxInclusive.
-    bool intersect(const RayFrame &f, const Vec3 &p0, const Vec3 &p1, const Vec3 &p2, uint32_t triangle,
-                   double tMin, double tMax, bool tMaxInclusive, Hit *hit) const;
+    bool intersect(const RayFrame &f, const Vec3 &p0, const Vec3 &p1, const Vec3 &p2,
+                   uint32_t triangle, double tMin, double tMax, bool tMaxInclusive, Hit *hit) const;
     /// Where the walk prefetches a leaf's data (WideBvh::setLeafData): its float leaf, or its
     /// triangles' records.
     WideBvh::LeafData leafData() const {
@@ -120,9 +121,10 @@ class TriangleMesh {
 
     ir::MeshPtr mesh_;
     WideBvh bvh_;
-    LargeVector<LeafTriangle> leafTriangles_;  ///< in bvh_.itemOrder(), for a mesh not all in floats
-    LargeVector<uint32_t> floatLeaves_;        ///< as floatLeaves() lays them out, or empty
-    bool fourWide_ = false;                    ///< leaves take the four-wide edge test
+    LargeVector<LeafTriangle>
+        leafTriangles_;                  ///< in bvh_.itemOrder(), for a mesh not all in floats
+    LargeVector<uint32_t> floatLeaves_;  ///< as floatLeaves() lays them out, or empty
+    bool fourWide_ = false;              ///< leaves take the four-wide edge test
     Bounds3 bounds_;
     ir::MeshTopology topology_;
     /// Per triangle: true when its vertex normals differ (POV-Ray shades only such triangles

@@ -35,10 +35,9 @@ ir::Environment loadEnvironmentImage(const std::string &path, double rotateDegre
         for (int c = 0; c < 3; ++c) {
             float x = src[3 * i + c];
             if (!std::isfinite(x))
-                throw std::runtime_error("environment image '" + path +
-                                         "': has NaN or infinite pixel values (pixel " +
-                                         std::to_string(i % img.width()) + ", " +
-                                         std::to_string(i / img.width()) + ")");
+                throw std::runtime_error(
+                    "environment image '" + path + "': has NaN or infinite pixel values (pixel " +
+                    std::to_string(i % img.width()) + ", " + std::to_string(i / img.width()) + ")");
             if (x < 0) {
                 ++negative;
                 x = 0;

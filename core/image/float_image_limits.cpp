@@ -253,26 +253,35 @@ uint64_t radianceMinDataBytes(uint64_t scanlines, uint64_t length) {
 uint64_t exrMaxRatio(int compression) {
     switch (compression) {
         // None
-        case 0: return 1;
+        case 0:
+            return 1;
         // RLE: a count byte and a value give at most 128 bytes
-        case 1: return 64;
+        case 1:
+            return 64;
         // ZIPS (one scanline a chunk) and ZIP: deflate's largest ratio
         case 2:
-        case 3: return kMaxDeflateRatio;
+        case 3:
+            return kMaxDeflateRatio;
         // PIZ: Huffman codes of at least 1 bit; a run of 256 16-bit values takes at least 10
         // bits (the value's code, the run code and an 8-bit count)
-        case 4: return 410;
+        case 4:
+            return 410;
         // PXR24: floats cut to 24 bits, then deflate
-        case 5: return kMaxDeflateRatio * 4 / 3;
+        case 5:
+            return kMaxDeflateRatio * 4 / 3;
         // B44: a 4 x 4 block of halves (32 bytes) in 14 bytes; B44A: a flat block in 3
-        case 6: return 3;
-        case 7: return 11;
+        case 6:
+            return 3;
+        case 7:
+            return 11;
         // DWAA and DWAB: RLE (64 : 1) then deflate for alpha channels; an 8 x 8 block of
         // floats (256 bytes) as one DC value and one end-of-block code, each deflated, for
         // colour channels: the same ratio
         case 8:
-        case 9: return 64 * kMaxDeflateRatio;
-        default: return 0;
+        case 9:
+            return 64 * kMaxDeflateRatio;
+        default:
+            return 0;
     }
 }
 
@@ -280,14 +289,18 @@ uint64_t exrLinesPerChunk(int compression) {
     switch (compression) {
         case 0:
         case 1:
-        case 2: return 1;
+        case 2:
+            return 1;
         case 3:
-        case 5: return 16;
+        case 5:
+            return 16;
         case 4:
         case 6:
         case 7:
-        case 8: return 32;
-        default: return 256;  // DWAB, and the most any compressor takes
+        case 8:
+            return 32;
+        default:
+            return 256;  // DWAB, and the most any compressor takes
     }
 }
 

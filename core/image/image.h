@@ -11,7 +11,8 @@ namespace rt {
 class Image {
   public:
     Image() = default;
-    Image(int width, int height) : width_(width), height_(height), data_(3 * size_t(width) * height) {}
+    Image(int width, int height)
+        : width_(width), height_(height), data_(3 * size_t(width) * height) {}
 
     int width() const { return width_; }
     int height() const { return height_; }

@@ -120,8 +120,8 @@ CompareResult compareImages(const ImageEstimate &test, const ImageEstimate &refe
     if (o.tileSize < 1 || !(o.alpha > 0 && o.alpha < 1))
         throw std::invalid_argument("tile size must be positive and alpha in (0, 1)");
     int w = a.width(), h = a.height();
-    bool haveVariance = !test.variance.empty() && test.batches > 1 &&
-                        test.variance.width() == w && test.variance.height() == h;
+    bool haveVariance = !test.variance.empty() && test.batches > 1 && test.variance.width() == w &&
+                        test.variance.height() == h;
     CompareResult r;
     r.width = w;
     r.height = h;
@@ -155,7 +155,8 @@ CompareResult compareImages(const ImageEstimate &test, const ImageEstimate &refe
         }
     r.rmse = r.comparedPixels ? std::sqrt(sumSq / (3.0 * r.comparedPixels)) : 0;
     r.maskedRmse = r.maskedPixels ? std::sqrt(maskedSq / (3.0 * r.maskedPixels)) : 0;
-    r.psnr = r.rmse > 0 ? 20 * std::log10(o.clampMax / r.rmse) : std::numeric_limits<double>::infinity();
+    r.psnr =
+        r.rmse > 0 ? 20 * std::log10(o.clampMax / r.rmse) : std::numeric_limits<double>::infinity();
 
     // Tile tests of the mean difference per channel
     std::vector<TileTest> tests;
@@ -244,7 +245,8 @@ CompareResult compareImages(const ImageEstimate &test, const ImageEstimate &refe
         for (int y = 1; y + 1 < h; ++y)
             for (int x = 1; x + 1 < w; ++x) {
                 size_t i = size_t(y) * w + x;
-                if (bad[i] && bad[i - 1] && bad[i + 1] && bad[i - w] && bad[i + w]) ++r.failedPixels;
+                if (bad[i] && bad[i - 1] && bad[i + 1] && bad[i - w] && bad[i + w])
+                    ++r.failedPixels;
             }
     }
     r.pass = r.tilesFailed == 0 && r.failedPixels == 0;
@@ -259,7 +261,8 @@ CompareResult compareImages(const ImageEstimate &test, const ImageEstimate &refe
             Rgb p = a.at(x, y);
             double d = 0;
             for (int c = 0; c < 3; ++c)
-                d = std::max(d, std::abs(clampValue(p[c], o.clampMax) - clampValue(q[c], o.clampMax)));
+                d = std::max(d,
+                             std::abs(clampValue(p[c], o.clampMax) - clampValue(q[c], o.clampMax)));
             Rgb out = Rgb(grey) + heat(d, scale) * 0.75;
             if (mask[size_t(y) * w + x]) out = Rgb(grey, grey, grey + 0.35);
             int tx = x / o.tileSize, ty = y / o.tileSize;
@@ -274,8 +277,9 @@ CompareResult compareImages(const ImageEstimate &test, const ImageEstimate &refe
 std::string CompareResult::summary(const CompareOptions &o) const {
     char buf[1024];
     std::string s;
-    std::snprintf(buf, sizeof buf, "error: RMSE %.3g, PSNR %.1f dB, max %.3g at (%d, %d) over %ld pixels\n",
-                  rmse, psnr, maxError, maxX, maxY, comparedPixels);
+    std::snprintf(buf, sizeof buf,
+                  "error: RMSE %.3g, PSNR %.1f dB, max %.3g at (%d, %d) over %ld pixels\n", rmse,
+                  psnr, maxError, maxX, maxY, comparedPixels);
     s += buf;
     std::snprintf(buf, sizeof buf,
                   "tiles: %d of %dx%d tested (x3 channels, %s), %d skipped, %d failed "
@@ -299,10 +303,11 @@ std::string CompareResult::summary(const CompareOptions &o) const {
     }
     for (size_t i = 0; i < failures.size() && i < 5; ++i) {
         const TileTest &t = failures[i];
-        std::snprintf(buf, sizeof buf,
-                      "  failed tile (%d, %d) %c: reference %.4g, difference %+.4g, SE %.2g, p %.2g\n",
-                      t.x * o.tileSize, t.y * o.tileSize, "RGB"[t.channel], t.reference,
-                      t.difference, t.standardError, t.pValue);
+        std::snprintf(
+            buf, sizeof buf,
+            "  failed tile (%d, %d) %c: reference %.4g, difference %+.4g, SE %.2g, p %.2g\n",
+            t.x * o.tileSize, t.y * o.tileSize, "RGB"[t.channel], t.reference, t.difference,
+            t.standardError, t.pValue);
         s += buf;
     }
     return s;

@@ -41,7 +41,8 @@ constexpr double kHuge = 1e300;
 
 std::string lowerExtension(const std::string &path) {
     std::string ext = fs::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
     return ext;
 }
 
@@ -72,7 +73,8 @@ struct SrgbSteps {
         if (!(v < 1)) return v == INFINITY ? 0 : 255;
         int k = first[static_cast<int>(v * kBins)];
         while (step[k + 1] <= v) ++k;
-        if ((k > 0 && v - step[k] <= step[k] * kNear) || (k < 255 && step[k + 1] - v <= step[k + 1] * kNear))
+        if ((k > 0 && v - step[k] <= step[k] * kNear) ||
+            (k < 255 && step[k + 1] - v <= step[k + 1] * kNear))
             return formula(v);
         return k;
     }
@@ -87,7 +89,8 @@ struct SrgbSteps {
             double guess = srgbDecode((k - 0.5) / 255);
             double lo = 0, hi = 1;
             for (double width : {1e-12, 1e-9, 1e-6, 1e-3}) {
-                double a = std::max(0.0, guess * (1 - width)), b = std::min(1.0, guess * (1 + width));
+                double a = std::max(0.0, guess * (1 - width)),
+                       b = std::min(1.0, guess * (1 + width));
                 if (!reaches(a) && reaches(b)) {
                     lo = a;
                     hi = b;
@@ -224,12 +227,11 @@ RawImage readOiioRaw(const std::string &path, uint64_t fileBytes) {
     // OpenImageIO also reads a Radiance file whose header lacks the "#?" line, and splits long
     // header lines where the check above does not: its own size decides here
     if (std::string_view(h.format) == "hdr" && radianceMinDataBytes(height, width) > fileBytes)
-        throw std::runtime_error("image '" + path + "' (Radiance HDR) declares " +
-                                 std::to_string(width) + " x " + std::to_string(height) +
-                                 " pixels, which need at least " +
-                                 std::to_string(radianceMinDataBytes(height, width)) +
-                                 " bytes, more than its " + std::to_string(fileBytes) +
-                                 " bytes (corrupt or truncated)");
+        throw std::runtime_error(
+            "image '" + path + "' (Radiance HDR) declares " + std::to_string(width) + " x " +
+            std::to_string(height) + " pixels, which need at least " +
+            std::to_string(radianceMinDataBytes(height, width)) + " bytes, more than its " +
+            std::to_string(fileBytes) + " bytes (corrupt or truncated)");
     RawImage raw;
     raw.width = h.width;
     raw.height = h.height;
@@ -255,8 +257,7 @@ RawImage readOiioRaw(const std::string &path, uint64_t fileBytes) {
 RawImage readRaw(const std::string &path, bool forceOiio = false) {
     std::error_code ec;
     fs::file_status st = fs::status(path, ec);
-    if (!fs::exists(st))
-        throw std::runtime_error("cannot read image '" + path + "': no such file");
+    if (!fs::exists(st)) throw std::runtime_error("cannot read image '" + path + "': no such file");
     if (!fs::is_regular_file(st))
         throw std::runtime_error("cannot read image '" + path + "': not a regular file");
     uint64_t fileBytes = fs::file_size(path, ec);
@@ -394,7 +395,8 @@ void writeEstimate(const ImageEstimate &est, const std::string &path, const Imag
     std::vector<float> px(size_t(m.width()) * m.height() * nch);
     for (size_t p = 0; p < size_t(m.width()) * m.height(); ++p)
         for (size_t l = 0; l < layers.size(); ++l)
-            for (int c = 0; c < 3; ++c) px[p * nch + 3 * l + c] = layers[l].first->data()[3 * p + c];
+            for (int c = 0; c < 3; ++c)
+                px[p * nch + 3 * l + c] = layers[l].first->data()[3 * p + c];
     writeOiio(spec, px.data(), path);
 }
 
@@ -448,7 +450,8 @@ ImageEstimate downsample(const Image &img, int k) {
             // passes between the block's last row and the pixel's border
             Rgb lo(kHuge), hi(-kHuge);
             for (int j = std::max(0, y * k - 1); j <= std::min(img.height() - 1, y * k + k); ++j)
-                for (int i = std::max(0, x * k - 1); i <= std::min(img.width() - 1, x * k + k); ++i) {
+                for (int i = std::max(0, x * k - 1); i <= std::min(img.width() - 1, x * k + k);
+                     ++i) {
                     Rgb c = img.at(i, j);
                     for (int ch = 0; ch < 3; ++ch) {
                         lo[ch] = std::min(lo[ch], c[ch]);

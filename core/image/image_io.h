@@ -50,7 +50,8 @@ struct ImageMetadata {
 /// Writes an estimate as OpenEXR: channels R, G, B (the mean), var.R/G/B, spread.R/G/B and
 /// ties.R/G/B when present, the batch count as the header attribute "scadray:batches", and
 /// `meta`'s place in the picture and attributes.
-void writeEstimate(const ImageEstimate &est, const std::string &path, const ImageMetadata &meta = {});
+void writeEstimate(const ImageEstimate &est, const std::string &path,
+                   const ImageMetadata &meta = {});
 
 /// Reads an image written by writeEstimate, or any image (then only the mean is filled); checked
 /// as readImage is. `meta`, when given, receives the header's place and attributes (a format

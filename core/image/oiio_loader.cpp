@@ -49,8 +49,9 @@ LoadResult load() {
     }
     result.failure = std::string("the OpenImageIO module ") + kOiioModuleName +
                      ", which reads and writes every image format but PNG, cannot be loaded; "
-                     "tried " + tried + ". Build the target scadray_oiio or set " +
-                     kOiioModuleEnv + " to the module's path";
+                     "tried " +
+                     tried + ". Build the target scadray_oiio or set " + kOiioModuleEnv +
+                     " to the module's path";
     return result;
 }
 

@@ -101,8 +101,8 @@ void *createOutput(const char *target, char *error, size_t errorSize) {
     }
 }
 
-int writePixels(void *output, const char *file, const ScadrayOiioWriteSpec *ws,
-                const void *pixels, char *error, size_t errorSize) {
+int writePixels(void *output, const char *file, const ScadrayOiioWriteSpec *ws, const void *pixels,
+                char *error, size_t errorSize) {
     auto *out = static_cast<OIIO::ImageOutput *>(output);
     try {
         OIIO::TypeDesc type = ws->type == SCADRAY_OIIO_FLOAT    ? OIIO::TypeDesc::FLOAT
@@ -138,8 +138,13 @@ int writePixels(void *output, const char *file, const ScadrayOiioWriteSpec *ws,
 
 void destroyOutput(void *output) { delete static_cast<OIIO::ImageOutput *>(output); }
 
-const ScadrayOiioApi kApi = {SCADRAY_OIIO_ABI_VERSION, openInput,    readPixels,   closeInput,
-                             createOutput,             writePixels, destroyOutput};
+const ScadrayOiioApi kApi = {SCADRAY_OIIO_ABI_VERSION,
+                             openInput,
+                             readPixels,
+                             closeInput,
+                             createOutput,
+                             writePixels,
+                             destroyOutput};
 
 }  // namespace
 

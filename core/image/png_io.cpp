@@ -5,6 +5,7 @@
 
 #include <png.h>
 
+#include <strings.h>
 #include <bit>
 #include <cerrno>
 #include <cmath>
@@ -13,7 +14,6 @@
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
-#include <strings.h>
 
 namespace rt {
 
@@ -120,7 +120,7 @@ uint32_t be32(const unsigned char *p) {
 std::string chunkOverrun(std::FILE *f, uint64_t fileBytes) {
     unsigned char head[8];
     bool interlaced = false, afterData = false;
-    for (uint64_t at = 8; at + 8 <= fileBytes; ) {
+    for (uint64_t at = 8; at + 8 <= fileBytes;) {
         if (std::fseek(f, long(at), SEEK_SET) != 0 || std::fread(head, 1, 8, f) != 8) break;
         uint64_t length = be32(head), end = at + 12 + length;
         std::string type(reinterpret_cast<char *>(head + 4), 4);
@@ -189,8 +189,8 @@ PngReader::PngReader(const std::string &path) : impl_(std::make_unique<Impl>()),
     if (std::string problem = chunkOverrun(impl_->file.f, std::filesystem::file_size(path, ec));
         !problem.empty())
         fail(problem);
-    impl_->png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &impl_->error, onPngError,
-                                        onPngWarning);
+    impl_->png =
+        png_create_read_struct(PNG_LIBPNG_VER_STRING, &impl_->error, onPngError, onPngWarning);
     if (!impl_->png || !(impl_->info = png_create_info_struct(impl_->png)))
         fail("out of memory for libpng");
     png_init_io(impl_->png, impl_->file.f);
@@ -251,8 +251,8 @@ void writePng(const std::string &file, int width, int height, int bits, const vo
     std::vector<png_bytep> rows(static_cast<size_t>(height));
     auto *base = static_cast<png_bytep>(const_cast<void *>(pixels));
     for (size_t y = 0; y < rows.size(); ++y) rows[y] = base + y * rowBytes;
-    bool ok = writeRows(png, info, png_uint_32(width), png_uint_32(height), bits, linear,
-                        rows.data());
+    bool ok =
+        writeRows(png, info, png_uint_32(width), png_uint_32(height), bits, linear, rows.data());
     png_destroy_write_struct(&png, &info);
     if (!ok) fail(error.text);
     // The last buffered bytes reach the file here: a full disk shows now

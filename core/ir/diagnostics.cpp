@@ -34,9 +34,12 @@ namespace {
 
 const char *severityName(Severity s) {
     switch (s) {
-        case Severity::Note: return "note";
-        case Severity::Warning: return "warning";
-        case Severity::Error: return "error";
+        case Severity::Note:
+            return "note";
+        case Severity::Warning:
+            return "warning";
+        case Severity::Error:
+            return "error";
     }
     return "error";
 }
@@ -171,8 +174,8 @@ std::string formatDiagnostic(const Diagnostic &d, bool withExcerpt) {
     int first = std::max(1, col - kExcerptContext);
     std::string window;
     int64_t lineLength = 0;
-    if (!lineIndex().window(*d.loc.file, d.loc.line, first, int64_t{col} + kExcerptContext,
-                            window, lineLength) ||
+    if (!lineIndex().window(*d.loc.file, d.loc.line, first, int64_t{col} + kExcerptContext, window,
+                            lineLength) ||
         lineLength == 0)
         return out;
     int64_t last = first - 1 + static_cast<int64_t>(window.size());
@@ -180,7 +183,8 @@ std::string formatDiagnostic(const Diagnostic &d, bool withExcerpt) {
     std::string tail = last < lineLength ? "..." : "";
     out += "\n    " + lead + printable(window) + tail + "\n    " + std::string(lead.size(), ' ');
     // Keep tabs so the caret lines up under the offending text, as shown (escapes included)
-    size_t before = static_cast<size_t>(std::clamp(col - first, 0, static_cast<int>(window.size())));
+    size_t before =
+        static_cast<size_t>(std::clamp(col - first, 0, static_cast<int>(window.size())));
     for (char c : printable(window.substr(0, before))) out += c == '\t' ? '\t' : ' ';
     out += "^";
     return out;
@@ -253,8 +257,8 @@ std::vector<std::string> DiagnosticSink::summary() const {
         std::string msg = d.message.size() > kKindKeyBytes
                               ? d.message.substr(0, kKindKeyBytes) + "..."
                               : d.message;
-        lines.push_back(std::to_string(k.count - kWarningsShownPerKind) + " more warnings " +
-                        like + (d.loc.file ? d.loc.toString() + ": " : std::string()) + msg);
+        lines.push_back(std::to_string(k.count - kWarningsShownPerKind) + " more warnings " + like +
+                        (d.loc.file ? d.loc.toString() + ": " : std::string()) + msg);
     };
     for (const auto &k : kinds_) line(k, "like: ");
     line(overflowKind_, "of other kinds, the first: ");

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Located diagnostics: the sink collecting warnings, and the exceptions importers throw for fatal errors.
+// Located diagnostics: the sink collecting warnings, and the exceptions importers throw for fatal
+// errors.
 #pragma once
 
 #include <cstdint>

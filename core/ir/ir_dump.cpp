@@ -53,7 +53,9 @@ std::string outline(const ProfileOutline &o) {
 void dumpNode(const Node &n, int indent, std::ostringstream &os) {
     os << std::string(2 * indent, ' ');
     switch (n.kind) {
-        case NodeKind::Transform: os << "transform " << matrix(n.matrix); break;
+        case NodeKind::Transform:
+            os << "transform " << matrix(n.matrix);
+            break;
         case NodeKind::Primitive:
             if (const auto *s = std::get_if<SpherePrim>(&n.shape))
                 os << "sphere r " << formatNumber(s->radius);
@@ -73,20 +75,17 @@ void dumpNode(const Node &n, int indent, std::ostringstream &os) {
                     os << "]";
                 }
                 os << "]";
-            }
-            else if (const auto *t = std::get_if<TorusPrim>(&n.shape)) {
+            } else if (const auto *t = std::get_if<TorusPrim>(&n.shape)) {
                 os << "torus major " << formatNumber(t->major) << " minor "
-                   << formatNumber(t->minor) << " angle " << formatNumber(t->angle)
-                   << " fragments " << t->fragments << " outline " << outline(t->facetOutline);
-            }
-            else if (const auto *l = std::get_if<LathePrim>(&n.shape)) {
+                   << formatNumber(t->minor) << " angle " << formatNumber(t->angle) << " fragments "
+                   << t->fragments << " outline " << outline(t->facetOutline);
+            } else if (const auto *l = std::get_if<LathePrim>(&n.shape)) {
                 os << "lathe angle " << formatNumber(l->angle) << " fragments " << l->fragments
                    << " outlines [";
                 for (size_t i = 0; i < l->outlines.size(); ++i)
                     os << (i ? " " : "") << outline(l->outlines[i]);
                 os << "]";
-            }
-            else if (const auto *pr = std::get_if<PrismPrim>(&n.shape)) {
+            } else if (const auto *pr = std::get_if<PrismPrim>(&n.shape)) {
                 os << "prism z0 " << formatNumber(pr->z0) << " z1 " << formatNumber(pr->z1)
                    << " k0 " << formatNumber(pr->k0) << " k1 " << formatNumber(pr->k1) << " mesh "
                    << pr->mesh << " outline [";
@@ -94,16 +93,17 @@ void dumpNode(const Node &n, int indent, std::ostringstream &os) {
                     os << (i ? " [" : "[") << formatNumber(pr->outline[i].x) << ", "
                        << formatNumber(pr->outline[i].y) << "]";
                 os << "]";
-            }
-            else {
+            } else {
                 const auto &c = std::get<CylinderPrim>(n.shape);
-                os << "cylinder z0 " << formatNumber(c.z0) << " z1 " << formatNumber(c.z1)
-                   << " r1 " << formatNumber(c.r1) << " r2 " << formatNumber(c.r2);
+                os << "cylinder z0 " << formatNumber(c.z0) << " z1 " << formatNumber(c.z1) << " r1 "
+                   << formatNumber(c.r1) << " r2 " << formatNumber(c.r2);
             }
             os << " material " << n.material << " fn " << formatNumber(n.fragments.fn) << " fa "
                << formatNumber(n.fragments.fa) << " fs " << formatNumber(n.fragments.fs);
             break;
-        default: os << nodeKindName(n.kind); break;
+        default:
+            os << nodeKindName(n.kind);
+            break;
     }
     if (n.highlight) os << " highlight";
     if (!n.label.empty()) os << " label \"" << n.label << "\"";
@@ -113,9 +113,12 @@ void dumpNode(const Node &n, int indent, std::ostringstream &os) {
 
 const char *cameraSourceName(CameraSource s) {
     switch (s) {
-        case CameraSource::Explicit: return "explicit";
-        case CameraSource::ViewportVariables: return "viewport";
-        case CameraSource::Automatic: return "automatic";
+        case CameraSource::Explicit:
+            return "explicit";
+        case CameraSource::ViewportVariables:
+            return "viewport";
+        case CameraSource::Automatic:
+            return "automatic";
     }
     return "?";
 }
@@ -146,24 +149,27 @@ std::string dump(const Scene &scene) {
     if (scene.camera) {
         const Camera &c = *scene.camera;
         os << "camera " << cameraSourceName(c.source)
-           << (c.projection == Projection::Orthographic ? " orthographic height " + formatNumber(c.orthoHeight) : "")
-           << " location " << vec(c.location)
-           << " look_at " << vec(c.lookAt) << " sky " << vec(c.sky) << " fov "
-           << formatNumber(c.fov) << (c.fovAxis == FovAxis::Horizontal ? " horizontal" : " vertical")
-           << where(c.loc) << "\n";
+           << (c.projection == Projection::Orthographic
+                   ? " orthographic height " + formatNumber(c.orthoHeight)
+                   : "")
+           << " location " << vec(c.location) << " look_at " << vec(c.lookAt) << " sky "
+           << vec(c.sky) << " fov " << formatNumber(c.fov)
+           << (c.fovAxis == FovAxis::Horizontal ? " horizontal" : " vertical") << where(c.loc)
+           << "\n";
     }
     for (const Light &l : scene.lights)
         os << "light "
-           << (l.kind == Light::Kind::Point ? "point" : l.kind == Light::Kind::Spot ? "spot" : "directional")
+           << (l.kind == Light::Kind::Point  ? "point"
+               : l.kind == Light::Kind::Spot ? "spot"
+                                             : "directional")
            << " position " << vec(l.position)
            << (l.kind != Light::Kind::Point ? " direction " + vec(l.direction) : "")
-           << (l.kind == Light::Kind::Spot ? " radius " + formatNumber(l.spotRadius) + " falloff " +
-                                                 formatNumber(l.spotFalloff) + " tightness " +
-                                                 formatNumber(l.spotTightness)
-                                           : "")
-           << " color " << rgb(l.color)
-           << " fade_distance " << formatNumber(l.fadeDistance) << " fade_power "
-           << formatNumber(l.fadePower) << " shadowless " << boolean(l.shadowless)
+           << (l.kind == Light::Kind::Spot
+                   ? " radius " + formatNumber(l.spotRadius) + " falloff " +
+                         formatNumber(l.spotFalloff) + " tightness " + formatNumber(l.spotTightness)
+                   : "")
+           << " color " << rgb(l.color) << " fade_distance " << formatNumber(l.fadeDistance)
+           << " fade_power " << formatNumber(l.fadePower) << " shadowless " << boolean(l.shadowless)
            << (l.area ? " area " + vec(l.areaLight.axis1) + " " + vec(l.areaLight.axis2) + " " +
                             std::to_string(l.areaLight.n1) + "x" + std::to_string(l.areaLight.n2) +
                             " adaptive " + std::to_string(l.areaLight.adaptive) + " jitter " +
@@ -178,22 +184,22 @@ std::string dump(const Scene &scene) {
            << " transmit " << formatNumber(m.transmit) << " ambient " << formatNumber(f.ambient)
            << " diffuse " << formatNumber(f.diffuse) << " brilliance " << formatNumber(f.brilliance)
            << " phong " << formatNumber(f.phong) << " phong_size " << formatNumber(f.phongSize)
-           << " specular " << formatNumber(f.specular) << " roughness "
-           << formatNumber(f.roughness) << " metallic " << formatNumber(f.metallic)
-           << " reflection_min " << rgb(f.reflectionMin) << " reflection_max "
-           << rgb(f.reflectionMax) << " reflection_falloff " << formatNumber(f.reflectionFalloff)
-           << " reflection_exponent " << formatNumber(f.reflectionExponent) << " fresnel "
-           << boolean(f.fresnel) << " conserve_energy " << boolean(f.conserveEnergy)
-           << " emission " << rgb(f.emission)
+           << " specular " << formatNumber(f.specular) << " roughness " << formatNumber(f.roughness)
+           << " metallic " << formatNumber(f.metallic) << " reflection_min " << rgb(f.reflectionMin)
+           << " reflection_max " << rgb(f.reflectionMax) << " reflection_falloff "
+           << formatNumber(f.reflectionFalloff) << " reflection_exponent "
+           << formatNumber(f.reflectionExponent) << " fresnel " << boolean(f.fresnel)
+           << " conserve_energy " << boolean(f.conserveEnergy) << " emission " << rgb(f.emission)
            << (f.glossy > 0 || f.frosted > 0
                    ? " glossy " + formatNumber(f.glossy) + " frosted " + formatNumber(f.frosted) +
                          " blur_samples " + std::to_string(f.blurSamples) + " blur_lobe " +
                          (f.blurLobe == Finish::Lobe::Phong ? "phong" : "normal")
                    : std::string())
-           << " ior " << formatNumber(m.interior.ior)
-           << " fade_distance " << formatNumber(m.interior.fadeDistance) << " fade_power "
+           << " ior " << formatNumber(m.interior.ior) << " fade_distance "
+           << formatNumber(m.interior.fadeDistance) << " fade_power "
            << formatNumber(m.interior.fadePower) << " fade_color " << rgb(m.interior.fadeColor)
-           << (m.baseColorTexture.valid() ? " texture " + std::to_string(m.baseColorTexture.texture) : "")
+           << (m.baseColorTexture.valid() ? " texture " + std::to_string(m.baseColorTexture.texture)
+                                          : "")
            << where(m.loc) << "\n";
     }
     for (size_t i = 0; i < scene.meshes.size(); ++i) {
@@ -206,8 +212,8 @@ std::string dump(const Scene &scene) {
            << vec(m.bounds().max) << where(m.loc) << "\n";
     }
     for (size_t i = 0; i < scene.textures.size(); ++i)
-        os << "texture " << i << " \"" << scene.textures[i]->name << "\" " << scene.textures[i]->width
-           << "x" << scene.textures[i]->height << "\n";
+        os << "texture " << i << " \"" << scene.textures[i]->name << "\" "
+           << scene.textures[i]->width << "x" << scene.textures[i]->height << "\n";
     const ImportStats &st = scene.stats;
     os << "dropped background_parts " << st.backgroundParts << " disabled_parts "
        << st.disabledParts << " skipped_modules " << st.skippedModules << "\n";

@@ -15,7 +15,8 @@ class Pruner {
     /// Prunes below `node` and returns whether it still has volume.
     bool prune(Node &node) {
         switch (node.kind) {
-            case NodeKind::Primitive: return true;
+            case NodeKind::Primitive:
+                return true;
             case NodeKind::Transform:
                 if (!Transform::fromMatrix(node.matrix)) {
                     diag_.warning(node.loc, node.matrix.isFinite()
@@ -27,7 +28,8 @@ class Pruner {
                 }
                 return keepNonEmpty(node);
             case NodeKind::Group:
-            case NodeKind::Union: return keepNonEmpty(node);
+            case NodeKind::Union:
+                return keepNonEmpty(node);
             case NodeKind::Intersection:
                 for (auto &c : node.children)
                     if (!prune(*c)) return dropAll(node);  // an empty operand empties it all

@@ -45,8 +45,9 @@ void checkRevolved(const Node &node) {
         checkTurn(node, t->angle);
         for (const ProfilePoint &p : t->facetOutline)
             if (!std::isfinite(p.r) || !std::isfinite(p.z) || p.r < 0)
-                throw SceneError(node.loc, "torus outline has a point with r < 0 or not finite "
-                                           "(internal error)");
+                throw SceneError(node.loc,
+                                 "torus outline has a point with r < 0 or not finite "
+                                 "(internal error)");
     }
     if (const auto *l = std::get_if<LathePrim>(&node.shape)) {
         checkTurn(node, l->angle);
@@ -76,8 +77,9 @@ void checkPrism(const Scene &scene, const Node &node) {
                                        " points, fewer than 3 (internal error)");
     for (const Point2 &q : p->outline)
         if (!std::isfinite(q.x) || !std::isfinite(q.y))
-            throw SceneError(node.loc, "prism outline has a point that is not finite "
-                                       "(internal error)");
+            throw SceneError(node.loc,
+                             "prism outline has a point that is not finite "
+                             "(internal error)");
     if (!(std::isfinite(p->z0) && std::isfinite(p->z1) && p->z0 < p->z1))
         throw SceneError(node.loc, "prism needs finite z0 < z1, not " + number(p->z0) + " and " +
                                        number(p->z1) + " (internal error)");
@@ -104,7 +106,8 @@ void checkNode(const Scene &scene, const Node &node, const Mat4 &m, int *primiti
     if (node.kind == NodeKind::Primitive) {
         ++*primitives;
         if (const auto *mp = std::get_if<MeshPrim>(&node.shape))
-            if (mp->mesh < 0 || mp->mesh >= static_cast<int>(scene.meshes.size()) || !scene.meshes[mp->mesh])
+            if (mp->mesh < 0 || mp->mesh >= static_cast<int>(scene.meshes.size()) ||
+                !scene.meshes[mp->mesh])
                 throw SceneError(node.loc, "mesh reference " + std::to_string(mp->mesh) +
                                                " is not in the scene (internal error)");
         checkRevolved(node);
@@ -115,9 +118,10 @@ void checkNode(const Scene &scene, const Node &node, const Mat4 &m, int *primiti
         if (!inRange(b.min) || !inRange(b.max)) {
             // Report the corners themselves, not the bounds padded for rounding
             Bounds3 pb = primitiveBounds(node.shape, &scene), corners;
-            for (int i = 0; i < 8; ++i) corners = unionBounds(corners, here.transformPoint(pb.corner(i)));
-            throw SceneError(node.loc, "object extends to " + vec(corners.min) + " .. " + vec(corners.max) +
-                                           ", beyond the supported range of ±" +
+            for (int i = 0; i < 8; ++i)
+                corners = unionBounds(corners, here.transformPoint(pb.corner(i)));
+            throw SceneError(node.loc, "object extends to " + vec(corners.min) + " .. " +
+                                           vec(corners.max) + ", beyond the supported range of ±" +
                                            number(kMaxCoordinate));
         }
         double extent = maxComponent(b.diagonal());
@@ -148,14 +152,16 @@ void validateScene(const Scene &scene, DiagnosticSink &diag) {
     for (const MeshPtr &mesh : scene.meshes)
         if (mesh) validateMesh(*mesh);
     if (const Node *deep = firstNodeDeeperThan(*scene.root, kMaxTreeDepth))
-        throw SceneError(deep->loc, "objects are nested more than " + std::to_string(kMaxTreeDepth) +
+        throw SceneError(deep->loc, "objects are nested more than " +
+                                        std::to_string(kMaxTreeDepth) +
                                         " levels deep (each module call, transform, colour and CSG "
                                         "operation is a level); scadray stops there");
     int primitives = 0;
     checkNode(scene, *scene.root, Mat4(), &primitives);
     if (primitives == 0)
-        diag.warning(scene.root->loc, "the scene has no geometry; the image shows only the "
-                                      "background");
+        diag.warning(scene.root->loc,
+                     "the scene has no geometry; the image shows only the "
+                     "background");
     for (const Light &l : scene.lights) {
         if (!inRange(l.position))
             throw SceneError(l.loc, "light position " + vec(l.position) +
@@ -163,22 +169,23 @@ void validateScene(const Scene &scene, DiagnosticSink &diag) {
         if (!l.color.isFinite()) throw SceneError(l.loc, "light colour is not finite");
         if (l.kind != Light::Kind::Point && !(l.direction.isFinite() && length(l.direction) > 0))
             throw SceneError(l.loc, "light direction must be a finite non-zero vector");
-        if (l.kind == Light::Kind::Spot &&
-            !(l.spotRadius >= 0 && l.spotFalloff > 0 && l.spotFalloff <= 90 && l.spotRadius <= l.spotFalloff))
+        if (l.kind == Light::Kind::Spot && !(l.spotRadius >= 0 && l.spotFalloff > 0 &&
+                                             l.spotFalloff <= 90 && l.spotRadius <= l.spotFalloff))
             throw SceneError(l.loc, "spot light needs 0 <= radius <= falloff <= 90 degrees");
         if (l.area) {
             const Light::Area &a = l.areaLight;
             if (!inRange(a.axis1) || !inRange(a.axis2))
-                throw SceneError(l.loc, "area light axes are not finite or beyond ±" +
-                                            number(kMaxCoordinate));
+                throw SceneError(
+                    l.loc, "area light axes are not finite or beyond ±" + number(kMaxCoordinate));
             if (a.n1 < 1 || a.n2 < 1 || a.n1 > kMaxAreaLightGrid || a.n2 > kMaxAreaLightGrid)
                 throw SceneError(l.loc, "area light grid " + std::to_string(a.n1) + "x" +
                                             std::to_string(a.n2) + " is outside 1.." +
                                             std::to_string(kMaxAreaLightGrid) + " per axis");
             if (a.adaptive < 0) throw SceneError(l.loc, "area light adaptive must be >= 0");
             if ((a.circular || a.orient) && (a.n1 < 2 || a.n2 < 2))
-                throw SceneError(l.loc, "circular and orient area lights need at least 2x2 "
-                                        "samples");
+                throw SceneError(l.loc,
+                                 "circular and orient area lights need at least 2x2 "
+                                 "samples");
             if (l.kind == Light::Kind::Directional)
                 throw SceneError(l.loc, "a parallel light cannot be an area light");
         }
@@ -186,9 +193,10 @@ void validateScene(const Scene &scene, DiagnosticSink &diag) {
     if (scene.camera) {
         const Camera &c = *scene.camera;
         if (!inRange(c.location) || !inRange(c.lookAt) || !c.sky.isFinite())
-            throw SceneError(c.loc, "camera vectors are not finite or beyond ±" +
-                                        number(kMaxCoordinate));
-        if (c.projection == Projection::Orthographic && !(c.orthoHeight > 0 && std::isfinite(c.orthoHeight)))
+            throw SceneError(c.loc,
+                             "camera vectors are not finite or beyond ±" + number(kMaxCoordinate));
+        if (c.projection == Projection::Orthographic &&
+            !(c.orthoHeight > 0 && std::isfinite(c.orthoHeight)))
             throw SceneError(c.loc, "orthographic camera needs a positive view height");
         if (c.projection == Projection::Perspective && !(c.fov > 0 && c.fov < 180))
             throw SceneError(c.loc, "camera field of view " + number(c.fov) +
@@ -204,8 +212,8 @@ void validateScene(const Scene &scene, DiagnosticSink &diag) {
             throw SceneError(m.loc, "glossy and frosted spreads must be between 0 and " +
                                         number(kMaxBlurDegrees) + " degrees");
         if (f.blurSamples < 1 || f.blurSamples > kMaxBlurSamples)
-            throw SceneError(m.loc, "blur_samples must be between 1 and " +
-                                        std::to_string(kMaxBlurSamples));
+            throw SceneError(
+                m.loc, "blur_samples must be between 1 and " + std::to_string(kMaxBlurSamples));
         if (m.baseColorTexture.texture >= static_cast<int>(scene.textures.size()))
             throw SceneError(m.loc, "material refers to a missing texture (internal error)");
     }

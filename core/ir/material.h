@@ -74,7 +74,9 @@ struct TextureRef {
     bool hasTransform() const {
         return offsetU != 0 || offsetV != 0 || rotation != 0 || scaleU != 1 || scaleV != 1;
     }
-    auto key() const { return std::make_tuple(texture, texCoord, offsetU, offsetV, rotation, scaleU, scaleV); }
+    auto key() const {
+        return std::make_tuple(texture, texCoord, offsetU, offsetV, rotation, scaleU, scaleV);
+    }
 };
 
 /// A glTF material's per-texel description (factors plus texture slots), shared and immutable;
@@ -110,14 +112,14 @@ struct Material {
         const Finish &f = finish;
         const Rgb &rmin = f.reflectionMin, &rmax = f.reflectionMax, &e = f.emission;
         const Rgb &fc = interior.fadeColor;
-        return std::tuple_cat(std::make_tuple(color.r, color.g, color.b, filter, transmit, f.ambient, f.diffuse,
-                               f.brilliance, f.phong, f.phongSize, f.specular, f.roughness,
-                               f.metallic, rmax.r, rmax.g, rmax.b, rmin.r, rmin.g, rmin.b,
-                               f.reflectionFalloff, f.reflectionExponent, f.fresnel,
-                               f.conserveEnergy, e.r, e.g, e.b, f.glossy, f.frosted,
-                               f.blurSamples, f.blurLobe, interior.ior,
-                               interior.fadeDistance, interior.fadePower, fc.r, fc.g, fc.b),
-                              baseColorTexture.key(), std::make_tuple(texel));
+        return std::tuple_cat(
+            std::make_tuple(color.r, color.g, color.b, filter, transmit, f.ambient, f.diffuse,
+                            f.brilliance, f.phong, f.phongSize, f.specular, f.roughness, f.metallic,
+                            rmax.r, rmax.g, rmax.b, rmin.r, rmin.g, rmin.b, f.reflectionFalloff,
+                            f.reflectionExponent, f.fresnel, f.conserveEnergy, e.r, e.g, e.b,
+                            f.glossy, f.frosted, f.blurSamples, f.blurLobe, interior.ior,
+                            interior.fadeDistance, interior.fadePower, fc.r, fc.g, fc.b),
+            baseColorTexture.key(), std::make_tuple(texel));
     }
     bool sameAppearance(const Material &o) const { return appearanceKey() == o.appearanceKey(); }
     bool isTransparent() const { return filter > 0 || transmit > 0 || texel.mayBeSeeThrough(); }
@@ -125,6 +127,7 @@ struct Material {
 
 }  // namespace rt::ir
 
-template <> struct std::hash<rt::ir::TexelMaterial> {
+template <>
+struct std::hash<rt::ir::TexelMaterial> {
     size_t operator()(const rt::ir::TexelMaterial &t) const { return t.hash(); }
 };

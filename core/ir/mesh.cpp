@@ -54,7 +54,8 @@ MeshTopology analyzeMesh(const Mesh &mesh) {
             ++t.degenerateTriangles;
             continue;
         }
-        const Vec3 &a = mesh.positions[tri[0]], &b = mesh.positions[tri[1]], &c = mesh.positions[tri[2]];
+        const Vec3 &a = mesh.positions[tri[0]], &b = mesh.positions[tri[1]],
+                   &c = mesh.positions[tri[2]];
         if (lengthSquared(cross(b - a, c - a)) == 0) ++t.degenerateTriangles;
         for (int e = 0; e < 3; ++e) {
             uint32_t u = weld[tri[e]], v = weld[tri[(e + 1) % 3]];
@@ -86,7 +87,8 @@ void validateMesh(const Mesh &mesh) {
             throw SceneError(mesh.loc, "mesh '" + mesh.name + "': position " + std::to_string(i) +
                                            " is not finite");
     if (!mesh.normals.empty() && mesh.normals.size() != n)
-        throw SceneError(mesh.loc, "mesh '" + mesh.name + "': " + std::to_string(mesh.normals.size()) +
+        throw SceneError(mesh.loc, "mesh '" + mesh.name +
+                                       "': " + std::to_string(mesh.normals.size()) +
                                        " normals for " + std::to_string(n) + " positions");
     for (size_t i = 0; i < mesh.normals.size(); ++i)
         if (!mesh.normals[i].isFinite())
@@ -95,8 +97,9 @@ void validateMesh(const Mesh &mesh) {
     // Per-vertex attributes: one per position, every component finite
     auto checkAttribute = [&](const auto &values, const char *what) {
         if (!values.empty() && values.size() != n)
-            throw SceneError(mesh.loc, "mesh '" + mesh.name + "': " + std::to_string(values.size()) +
-                                           " " + what + "s for " + std::to_string(n) + " positions");
+            throw SceneError(mesh.loc, "mesh '" + mesh.name +
+                                           "': " + std::to_string(values.size()) + " " + what +
+                                           "s for " + std::to_string(n) + " positions");
         for (size_t i = 0; i < values.size(); ++i)
             for (float c : values[i])
                 if (!std::isfinite(c))
@@ -110,9 +113,9 @@ void validateMesh(const Mesh &mesh) {
     for (size_t i = 0; i < mesh.triangles.size(); ++i)
         for (uint32_t v : mesh.triangles[i])
             if (v >= n)
-                throw SceneError(mesh.loc, "mesh '" + mesh.name + "': triangle " + std::to_string(i) +
-                                               " uses vertex " + std::to_string(v) + " of " +
-                                               std::to_string(n));
+                throw SceneError(mesh.loc, "mesh '" + mesh.name + "': triangle " +
+                                               std::to_string(i) + " uses vertex " +
+                                               std::to_string(v) + " of " + std::to_string(n));
 }
 
 std::array<double, 4> textureMean(const Texture &t) {

@@ -44,10 +44,10 @@ using MeshPtr = std::shared_ptr<const Mesh>;
 /// How the edges of a mesh are shared, which decides whether it bounds a solid. Vertices at
 /// exactly the same position count as one, so split vertices do not open a mesh.
 struct MeshTopology {
-    size_t boundaryEdges = 0;       ///< edges used by one triangle (holes)
-    size_t nonManifoldEdges = 0;    ///< edges used by more than two triangles
-    size_t misorientedEdges = 0;    ///< edges whose two triangles traverse it the same way
-    size_t degenerateTriangles = 0; ///< repeated indices or zero area
+    size_t boundaryEdges = 0;        ///< edges used by one triangle (holes)
+    size_t nonManifoldEdges = 0;     ///< edges used by more than two triangles
+    size_t misorientedEdges = 0;     ///< edges whose two triangles traverse it the same way
+    size_t degenerateTriangles = 0;  ///< repeated indices or zero area
 
     /// Every edge shared by exactly two triangles: the mesh bounds a solid (inside by parity).
     bool closed() const { return boundaryEdges == 0 && nonManifoldEdges == 0; }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// IR node tree: groups, CSG operations, transforms and analytic primitives, each with its SourceLoc.
+// IR node tree: groups, CSG operations, transforms and analytic primitives, each with its
+// SourceLoc.
 #pragma once
 
 #include <memory>
@@ -93,8 +94,8 @@ struct PrismPrim {
     int mesh = -1;
 };
 
-using PrimShape = std::variant<SpherePrim, BoxPrim, CylinderPrim, MeshPrim, PolytopePrim,
-                               LathePrim, TorusPrim, PrismPrim>;
+using PrimShape = std::variant<SpherePrim, BoxPrim, CylinderPrim, MeshPrim, PolytopePrim, LathePrim,
+                               TorusPrim, PrismPrim>;
 
 /// OpenSCAD's $fn/$fa/$fs at the primitive, for the tessellated comparison mode.
 struct Fragments {
@@ -102,8 +103,8 @@ struct Fragments {
 };
 
 enum class NodeKind {
-    Group,         ///< implicit union (module bodies, for, if, transforms' children); empty = no geometry
-    Union,         ///< explicit union(): CSG union with internal surfaces removed
+    Group,  ///< implicit union (module bodies, for, if, transforms' children); empty = no geometry
+    Union,  ///< explicit union(): CSG union with internal surfaces removed
     Intersection,  ///< all children
     Difference,    ///< first child minus all others
     Transform,     ///< children under `matrix` (parent-from-child)
@@ -112,7 +113,8 @@ enum class NodeKind {
 
 /// Deepest nesting of nodes a scene may have (modules, transforms, colours and CSG operations
 /// each add a level). OpenSCAD 2021.01 stops recursive modules near 2,500 calls (7,500 levels
-/// here); the walks over the tree recurse, on stacks sized for this depth (core/system/large_stack.h).
+/// here); the walks over the tree recurse, on stacks sized for this depth
+/// (core/system/large_stack.h).
 constexpr int kMaxTreeDepth = 20000;
 
 struct Node {
@@ -121,11 +123,11 @@ struct Node {
     /// Optional human-readable origin ("module gear", "color(\"red\")"), used in export comments.
     std::string label;
     std::vector<std::unique_ptr<Node>> children;
-    Mat4 matrix;                     ///< Transform only
-    PrimShape shape;                 ///< Primitive only
-    int material = -1;               ///< Primitive only: index into Scene::materials
-    Fragments fragments;             ///< Primitive only
-    bool highlight = false;          ///< OpenSCAD `#` modifier (rendered normally)
+    Mat4 matrix;             ///< Transform only
+    PrimShape shape;         ///< Primitive only
+    int material = -1;       ///< Primitive only: index into Scene::materials
+    Fragments fragments;     ///< Primitive only
+    bool highlight = false;  ///< OpenSCAD `#` modifier (rendered normally)
     /// Importer-internal: on an empty Group, the index of a 2D shape the importer keeps beside
     /// the tree until it is extruded or drawn as a plate. Never set in a finished scene.
     int shape2d = -1;

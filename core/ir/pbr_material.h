@@ -15,11 +15,11 @@ namespace rt::ir {
 struct PbrMaterial {
     enum class AlphaMode { Opaque, Mask, Blend };
 
-    Rgb baseColor{1};      ///< baseColorFactor.rgb
-    double alpha = 1;      ///< baseColorFactor.a
-    double metallic = 1;   ///< metallicFactor
-    double roughness = 1;  ///< roughnessFactor
-    Rgb emissive{0};       ///< emissiveFactor x KHR_materials_emissive_strength
+    Rgb baseColor{1};         ///< baseColorFactor.rgb
+    double alpha = 1;         ///< baseColorFactor.a
+    double metallic = 1;      ///< metallicFactor
+    double roughness = 1;     ///< roughnessFactor
+    Rgb emissive{0};          ///< emissiveFactor x KHR_materials_emissive_strength
     double transmission = 0;  ///< KHR_materials_transmission.transmissionFactor
     double ior = 1.5;         ///< KHR_materials_ior
     /// KHR_materials_volume: thicknessFactor (> 0: the mesh bounds a refracting volume),
@@ -43,17 +43,17 @@ struct PbrMaterial {
     TextureRef metallicRoughnessTexture;  ///< B = metalness, G = roughness (linear)
     TextureRef normalTexture;             ///< tangent space, RGB*2-1
     double normalScale = 1;
-    TextureRef occlusionTexture;          ///< R
+    TextureRef occlusionTexture;  ///< R
     double occlusionStrength = 1;
-    TextureRef emissiveTexture;           ///< sRGB, multiplies emissive
-    TextureRef transmissionTexture;       ///< R, multiplies transmission
-    TextureRef clearcoatTexture;          ///< R, multiplies clearcoat
-    TextureRef clearcoatRoughnessTexture; ///< G, multiplies clearcoatRoughness
-    TextureRef sheenColorTexture;         ///< sRGB, multiplies sheenColor
-    TextureRef sheenRoughnessTexture;     ///< A, multiplies sheenRoughness
-    TextureRef specularTexture;           ///< A, multiplies specular
-    TextureRef specularColorTexture;      ///< sRGB, multiplies specularColor
-    TextureRef thicknessTexture;          ///< G, multiplies thickness
+    TextureRef emissiveTexture;            ///< sRGB, multiplies emissive
+    TextureRef transmissionTexture;        ///< R, multiplies transmission
+    TextureRef clearcoatTexture;           ///< R, multiplies clearcoat
+    TextureRef clearcoatRoughnessTexture;  ///< G, multiplies clearcoatRoughness
+    TextureRef sheenColorTexture;          ///< sRGB, multiplies sheenColor
+    TextureRef sheenRoughnessTexture;      ///< A, multiplies sheenRoughness
+    TextureRef specularTexture;            ///< A, multiplies specular
+    TextureRef specularColorTexture;       ///< sRGB, multiplies specularColor
+    TextureRef thicknessTexture;           ///< G, multiplies thickness
 
     auto key() const {
         const Rgb &c = baseColor, &e = emissive, &ac = attenuationColor, &sh = sheenColor,
@@ -81,9 +81,7 @@ struct PbrMaterial {
     }
     /// Whether some texel may let light through (alpha or transmission below or above their
     /// constant values): such a material never counts as opaque.
-    bool mayBeSeeThrough() const {
-        return alphaMode != AlphaMode::Opaque || transmission > 0;
-    }
+    bool mayBeSeeThrough() const { return alphaMode != AlphaMode::Opaque || transmission > 0; }
 };
 
 }  // namespace rt::ir

@@ -92,17 +92,18 @@ void completeScene(Scene &scene, DiagnosticSink &diag, const CompleteOptions &op
         Vec3 right = normalize(cross(-back, c.sky));
         Vec3 up = cross(right, -back);
         Light key;
-        key.position = c.lookAt + normalize(back + up * 0.8 - right * 0.6) *
-                                      (distance * kLightDistanceFactor);
+        key.position =
+            c.lookAt + normalize(back + up * 0.8 - right * 0.6) * (distance * kLightDistanceFactor);
         key.color = Rgb(kKeyIntensity);
         Light fill;
-        fill.position = c.lookAt + normalize(back + right * 0.8 - up * 0.2) *
-                                       (distance * kLightDistanceFactor);
+        fill.position =
+            c.lookAt + normalize(back + right * 0.8 - up * 0.2) * (distance * kLightDistanceFactor);
         fill.color = Rgb(kFillIntensity);
         fill.shadowless = true;
         scene.lights = {key, fill};
-        diag.note({}, "no lights in the scene: using a key light with shadows and a shadowless "
-                      "fill light placed relative to the camera");
+        diag.note({},
+                  "no lights in the scene: using a key light with shadows and a shadowless "
+                  "fill light placed relative to the camera");
     }
 }
 

@@ -52,11 +52,11 @@ struct CompleteOptions {
 Camera viewerCamera(const Vec3 &centre, double radius, double aspect);
 
 /// Fills what the scene leaves out: when there is no camera, one that frames the model's bounds
-/// (opts.framing: OpenSCAD's default view, viewall + autocenter, or a glTF viewer's); when there are no lights, a key
-/// light with shadows and a shadowless fill placed relative to the camera. An empty scene gets a
-/// camera looking at the origin. Notes what it added to `diag`. Validates the scene first
-/// (ir::validateScene: out-of-range or non-finite input is a located SceneError) and prunes
-/// subtrees without volume (ir::pruneEmpty), so every consumer sees the same solids.
+/// (opts.framing: OpenSCAD's default view, viewall + autocenter, or a glTF viewer's); when there
+/// are no lights, a key light with shadows and a shadowless fill placed relative to the camera. An
+/// empty scene gets a camera looking at the origin. Notes what it added to `diag`. Validates the
+/// scene first (ir::validateScene: out-of-range or non-finite input is a located SceneError) and
+/// prunes subtrees without volume (ir::pruneEmpty), so every consumer sees the same solids.
 void completeScene(Scene &scene, DiagnosticSink &diag, const CompleteOptions &opts = {});
 
 }  // namespace rt::ir

@@ -66,12 +66,18 @@ std::unique_ptr<Node> Node::clone() const {
 
 const char *nodeKindName(NodeKind k) {
     switch (k) {
-        case NodeKind::Group: return "group";
-        case NodeKind::Union: return "union";
-        case NodeKind::Intersection: return "intersection";
-        case NodeKind::Difference: return "difference";
-        case NodeKind::Transform: return "transform";
-        case NodeKind::Primitive: return "primitive";
+        case NodeKind::Group:
+            return "group";
+        case NodeKind::Union:
+            return "union";
+        case NodeKind::Intersection:
+            return "intersection";
+        case NodeKind::Difference:
+            return "difference";
+        case NodeKind::Transform:
+            return "transform";
+        case NodeKind::Primitive:
+            return "primitive";
     }
     return "?";
 }
@@ -164,16 +170,19 @@ Bounds3 worldBounds(const Node &node, const Mat4 &parentFromNode, const Scene *s
         case NodeKind::Intersection: {
             if (node.children.empty()) return Bounds3();
             Bounds3 b = Bounds3::infinite();
-            for (const auto &c : node.children) b = intersectBounds(b, worldBounds(*c, parentFromNode, scene));
+            for (const auto &c : node.children)
+                b = intersectBounds(b, worldBounds(*c, parentFromNode, scene));
             return b.isEmpty() ? Bounds3() : b;
         }
         case NodeKind::Difference:
-            return node.children.empty() ? Bounds3()
-                                         : worldBounds(*node.children.front(), parentFromNode, scene);
+            return node.children.empty()
+                       ? Bounds3()
+                       : worldBounds(*node.children.front(), parentFromNode, scene);
         case NodeKind::Group:
         case NodeKind::Union: {
             Bounds3 b;
-            for (const auto &c : node.children) b = unionBounds(b, worldBounds(*c, parentFromNode, scene));
+            for (const auto &c : node.children)
+                b = unionBounds(b, worldBounds(*c, parentFromNode, scene));
             return b;
         }
     }

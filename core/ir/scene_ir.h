@@ -36,9 +36,9 @@ struct Settings {
 
 /// What the importer read but left out of the scene, reported by the render plan.
 struct ImportStats {
-    int backgroundParts = 0;   ///< `%` subtrees (OpenSCAD excludes them from renders)
-    int disabledParts = 0;     ///< `*` subtrees
-    int skippedModules = 0;    ///< unsupported modules skipped with a warning
+    int backgroundParts = 0;  ///< `%` subtrees (OpenSCAD excludes them from renders)
+    int disabledParts = 0;    ///< `*` subtrees
+    int skippedModules = 0;   ///< unsupported modules skipped with a warning
     /// How round primitives were drawn (`--facets`); unset when the pass did not run.
     std::optional<FacetStats> facets;
 };
@@ -46,8 +46,8 @@ struct ImportStats {
 struct Scene {
     NodePtr root = Node::makeGroup(NodeKind::Group, {});
     std::vector<Material> materials;
-    std::vector<MeshPtr> meshes;      ///< referenced by MeshPrim::mesh
-    std::vector<TexturePtr> textures; ///< referenced by Material texture slots (TextureRef)
+    std::vector<MeshPtr> meshes;       ///< referenced by MeshPrim::mesh
+    std::vector<TexturePtr> textures;  ///< referenced by Material texture slots (TextureRef)
     std::vector<Light> lights;
     std::optional<Camera> camera;
     Settings settings;

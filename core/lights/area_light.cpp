@@ -38,7 +38,7 @@ AreaLightSampler::AreaLightSampler(const ir::Light &light, const Vec3 &shadedPoi
         if (len > 0) {
             d = d / len;
             Vec3 up = std::abs(std::abs(d.z) - 1) < kOrientVerticalTolerance ? Vec3(0, 1, 0)
-                                                                           : Vec3(0, 0, 1);
+                                                                             : Vec3(0, 0, 1);
             double size = length(a.axis1);
             axis1_ = normalize(cross(d, up));
             axis2_ = normalize(cross(d, axis1_)) * size;

@@ -21,8 +21,8 @@ Frame Frame::fromZ(const Vec3 &n) {
     double sign = std::copysign(1.0, n.z);
     double a = -1 / (sign + n.z);
     double b = n.x * n.y * a;
-    return {Vec3(1 + sign * n.x * n.x * a, sign * b, -sign * n.x), Vec3(b, sign + n.y * n.y * a, -n.y),
-            n};
+    return {Vec3(1 + sign * n.x * n.x * a, sign * b, -sign * n.x),
+            Vec3(b, sign + n.y * n.y * a, -n.y), n};
 }
 
 Lobe::Lobe(LobeShape shape, double sigma) : shape_(shape), sigma_(std::min(sigma, kMaxLobeSigma)) {

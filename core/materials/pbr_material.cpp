@@ -280,8 +280,7 @@ TexelShading shadeTexel(const ir::Material &m, const TexelImages &images,
         in.sheenRoughness *= t[3];
     if (images.specular && sampleTexture(*images.specular, p.specularTexture, si, t))
         in.specular *= t[3];
-    if (images.specularColor &&
-        sampleTexture(*images.specularColor, p.specularColorTexture, si, t))
+    if (images.specularColor && sampleTexture(*images.specularColor, p.specularColorTexture, si, t))
         in.specularColor *= Rgb(t[0], t[1], t[2]);
     if (images.thickness && in.thickness > 0 &&
         sampleTexture(*images.thickness, p.thicknessTexture, si, t))

@@ -1,16 +1,16 @@
 // SPDX-License-Identifier: MIT
 // The mapping of glTF metallic-roughness materials (core/ir/pbr_material.h, with the
-// KHR_materials_* extensions scadray maps) to POV-Ray's classic material. The importer maps constant materials once; the renderer
-// maps a textured one at every hit, from its textures' values there (see pbr_material.cpp for
-// every formula).
+// KHR_materials_* extensions scadray maps) to POV-Ray's classic material. The importer maps
+// constant materials once; the renderer maps a textured one at every hit, from its textures' values
+// there (see pbr_material.cpp for every formula).
 #pragma once
 
 #include <tuple>
 
 #include "core/geometry/hit.h"
 #include "core/ir/material.h"
-#include "core/ir/pbr_material.h"
 #include "core/ir/mesh.h"
+#include "core/ir/pbr_material.h"
 #include "core/math/rgb.h"
 
 namespace rt {

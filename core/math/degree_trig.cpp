@@ -26,15 +26,24 @@ double sinDegrees(double deg) {
     // Exact values at multiples of 30 degrees; the table follows sin's symmetry.
     if (std::fmod(x, 30.0) == 0) {
         switch (static_cast<int>(x)) {
-            case 0: return 0;
-            case 30: return 0.5;
-            case 90: return 1;
-            case 150: return 0.5;
-            case 180: return 0;
-            case 210: return -0.5;
-            case 270: return -1;
-            case 330: return -0.5;
-            default: break;  // 60, 120, 240, 300: irrational, fall through
+            case 0:
+                return 0;
+            case 30:
+                return 0.5;
+            case 90:
+                return 1;
+            case 150:
+                return 0.5;
+            case 180:
+                return 0;
+            case 210:
+                return -0.5;
+            case 270:
+                return -1;
+            case 330:
+                return -0.5;
+            default:
+                break;  // 60, 120, 240, 300: irrational, fall through
         }
     }
     if (x == 45 || x == 135) return std::sqrt(0.5);
@@ -47,15 +56,24 @@ double cosDegrees(double deg) {
     if (std::isnan(x)) return x;
     if (std::fmod(x, 30.0) == 0) {
         switch (static_cast<int>(x)) {
-            case 0: return 1;
-            case 60: return 0.5;
-            case 90: return 0;
-            case 120: return -0.5;
-            case 180: return -1;
-            case 240: return -0.5;
-            case 270: return 0;
-            case 300: return 0.5;
-            default: break;
+            case 0:
+                return 1;
+            case 60:
+                return 0.5;
+            case 90:
+                return 0;
+            case 120:
+                return -0.5;
+            case 180:
+                return -1;
+            case 240:
+                return -0.5;
+            case 270:
+                return 0;
+            case 300:
+                return 0.5;
+            default:
+                break;
         }
     }
     if (x == 45 || x == 315) return std::sqrt(0.5);

@@ -47,18 +47,21 @@ inline float floatAbove(double x) {
 inline __m128 floatsBelow(__m128d x) {
     __m128 f = _mm_cvtpd_ps(x);
     // Per float lane, whether its conversion went above x: the low half of each lane's mask
-    __m128i above = _mm_shuffle_epi32(_mm_castpd_si128(_mm_cmpgt_pd(_mm_cvtps_pd(f), x)), _MM_SHUFFLE(3, 3, 2, 0));
+    __m128i above = _mm_shuffle_epi32(_mm_castpd_si128(_mm_cmpgt_pd(_mm_cvtps_pd(f), x)),
+                                      _MM_SHUFFLE(3, 3, 2, 0));
     __m128i bits = _mm_castps_si128(f);
     // 2 * -sign - 1: +1 for a negative float (-0 included), -1 for a positive one
     __m128i negative = _mm_srai_epi32(bits, 31);
-    __m128i step = _mm_sub_epi32(_mm_slli_epi32(_mm_sub_epi32(_mm_setzero_si128(), negative), 1), _mm_set1_epi32(1));
+    __m128i step = _mm_sub_epi32(_mm_slli_epi32(_mm_sub_epi32(_mm_setzero_si128(), negative), 1),
+                                 _mm_set1_epi32(1));
     return _mm_castsi128_ps(_mm_add_epi32(bits, _mm_and_si128(step, above)));
 }
 
 /// floatAbove of both lanes of x, as floatsBelow.
 inline __m128 floatsAbove(__m128d x) {
     __m128 f = _mm_cvtpd_ps(x);
-    __m128i below = _mm_shuffle_epi32(_mm_castpd_si128(_mm_cmplt_pd(_mm_cvtps_pd(f), x)), _MM_SHUFFLE(3, 3, 2, 0));
+    __m128i below = _mm_shuffle_epi32(_mm_castpd_si128(_mm_cmplt_pd(_mm_cvtps_pd(f), x)),
+                                      _MM_SHUFFLE(3, 3, 2, 0));
     __m128i bits = _mm_castps_si128(f);
     // 2 * sign + 1: -1 for a negative float, +1 for a positive one (+0 included)
     __m128i negative = _mm_srai_epi32(bits, 31);

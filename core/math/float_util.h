@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Floating-point helpers: rounding-error bounds (pbrt-v3 section 3.9), ULP steps and exact products.
+// Floating-point helpers: rounding-error bounds (pbrt-v3 section 3.9), ULP steps and exact
+// products.
 #pragma once
 
 #include <bit>
@@ -20,7 +21,7 @@ constexpr double gamma(int n) { return (n * kMachineEpsilon) / (1 - n * kMachine
 /// std::nextafter(v, +inf) and std::nextafter(v, -inf), without the call into libm (a spawned
 /// ray's origin takes three): one step of the bit pattern, which orders doubles of one sign.
 inline double nextUp(double v) {
-    if (!(v < kInfinity)) return v + v;  // +inf stays, a NaN stays a NaN
+    if (!(v < kInfinity)) return v + v;                            // +inf stays, a NaN stays a NaN
     if (v == 0) return std::numeric_limits<double>::denorm_min();  // from +0 and from -0
     uint64_t bits = std::bit_cast<uint64_t>(v);
     return std::bit_cast<double>(v > 0 ? bits + 1 : bits - 1);

@@ -8,7 +8,8 @@
 // the Clang builds are the sanitizer and fuzzing ones.
 #pragma once
 
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && \
+    !defined(__SANITIZE_ADDRESS__)
 #define SCADRAY_FMA_CLONES __attribute__((target_clones("fma", "default")))
 #else
 #define SCADRAY_FMA_CLONES

@@ -115,9 +115,7 @@ double Mat4::det3() const {
            m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
 }
 
-bool Mat4::isAffine() const {
-    return m[3][0] == 0 && m[3][1] == 0 && m[3][2] == 0 && m[3][3] == 1;
-}
+bool Mat4::isAffine() const { return m[3][0] == 0 && m[3][1] == 0 && m[3][2] == 0 && m[3][3] == 1; }
 
 bool Mat4::isFinite() const {
     for (int i = 0; i < 4; ++i)
@@ -169,8 +167,7 @@ std::optional<Mat4> Mat4::affineInverse() const {
         for (int j = 0; j < 3; ++j) r.m[i][j] = ui[i][j] / rowNorm[j];
     // Translation: -A^-1 t
     Vec3 t = translation();
-    for (int i = 0; i < 3; ++i)
-        r.m[i][3] = -(r.m[i][0] * t.x + r.m[i][1] * t.y + r.m[i][2] * t.z);
+    for (int i = 0; i < 3; ++i) r.m[i][3] = -(r.m[i][0] * t.x + r.m[i][1] * t.y + r.m[i][2] * t.z);
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j)
             if (!std::isfinite(r.m[i][j])) return std::nullopt;

@@ -15,12 +15,14 @@ struct Mat4 {
     static Mat4 identity() { return Mat4(); }
     static Mat4 translate(const Vec3 &t);
     static Mat4 scale(const Vec3 &s);
-    /// Rotation about a unit-less axis by an angle in degrees (Rodrigues); exact at multiples of 90.
+    /// Rotation about a unit-less axis by an angle in degrees (Rodrigues); exact at multiples
+    /// of 90.
     static Mat4 rotateAxis(double degrees, const Vec3 &axis);
     static Mat4 rotateX(double degrees);
     static Mat4 rotateY(double degrees);
     static Mat4 rotateZ(double degrees);
-    /// Householder reflection about the plane through the origin with normal n: I - 2 n n^T / (n.n).
+    /// Householder reflection about the plane through the origin with normal n: I - 2 n n^T /
+    /// (n.n).
     static Mat4 mirror(const Vec3 &n);
 
     Mat4 operator*(const Mat4 &o) const;

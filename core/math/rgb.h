@@ -19,9 +19,24 @@ struct Rgb {
     constexpr Rgb operator*(const Rgb &o) const { return {r * o.r, g * o.g, b * o.b}; }
     constexpr Rgb operator*(double s) const { return {r * s, g * s, b * s}; }
     constexpr Rgb operator/(double s) const { return {r / s, g / s, b / s}; }
-    Rgb &operator+=(const Rgb &o) { r += o.r; g += o.g; b += o.b; return *this; }
-    Rgb &operator*=(const Rgb &o) { r *= o.r; g *= o.g; b *= o.b; return *this; }
-    Rgb &operator*=(double s) { r *= s; g *= s; b *= s; return *this; }
+    Rgb &operator+=(const Rgb &o) {
+        r += o.r;
+        g += o.g;
+        b += o.b;
+        return *this;
+    }
+    Rgb &operator*=(const Rgb &o) {
+        r *= o.r;
+        g *= o.g;
+        b *= o.b;
+        return *this;
+    }
+    Rgb &operator*=(double s) {
+        r *= s;
+        g *= s;
+        b *= s;
+        return *this;
+    }
     constexpr bool operator==(const Rgb &o) const { return r == o.r && g == o.g && b == o.b; }
     constexpr bool operator!=(const Rgb &o) const { return !(*this == o); }
     double operator[](int i) const { return i == 0 ? r : (i == 1 ? g : b); }

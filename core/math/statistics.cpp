@@ -49,8 +49,8 @@ double betaContinuedFraction(double a, double b, double x) {
 double incompleteBeta(double a, double b, double x) {
     if (x <= 0) return 0;
     if (x >= 1) return 1;
-    double lnFront = std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) + a * std::log(x) +
-                     b * std::log1p(-x);
+    double lnFront =
+        std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) + a * std::log(x) + b * std::log1p(-x);
     double front = std::exp(lnFront);
     // Use the symmetry I_x(a,b) = 1 - I_{1-x}(b,a) where the fraction converges faster
     if (x < (a + 1) / (a + b + 2)) return front * betaContinuedFraction(a, b, x) / a;

@@ -29,8 +29,8 @@ Vec3 Transform::point(const Vec3 &p, const Vec3 &pErr, Vec3 *outErr) const {
     for (int i = 0; i < 3; ++i) {
         double absProduct = std::abs(m[i][0] * p.x) + std::abs(m[i][1] * p.y) +
                             std::abs(m[i][2] * p.z) + std::abs(m[i][3]);
-        double propagated = std::abs(m[i][0]) * pErr.x + std::abs(m[i][1]) * pErr.y +
-                            std::abs(m[i][2]) * pErr.z;
+        double propagated =
+            std::abs(m[i][0]) * pErr.x + std::abs(m[i][1]) * pErr.y + std::abs(m[i][2]) * pErr.z;
         (*outErr)[i] = gamma(3) * absProduct + (gamma(3) + 1) * propagated;
     }
     return r;

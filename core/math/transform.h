@@ -15,7 +15,8 @@ namespace rt {
 class Transform {
   public:
     Transform() = default;
-    /// Builds a transform from an invertible affine matrix; empty when it is singular or not affine.
+    /// Builds a transform from an invertible affine matrix; empty when it is singular or not
+    /// affine.
     static std::optional<Transform> fromMatrix(const Mat4 &m);
     Transform(const Mat4 &m, const Mat4 &mInv) : m_(m), mInv_(mInv) {}
 

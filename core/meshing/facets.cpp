@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/meshing/revolved_mesh.h"
 #include "core/ir/scene_ir.h"
+#include "core/meshing/revolved_mesh.h"
 
 namespace rt::meshing {
 
@@ -140,9 +140,12 @@ std::vector<FacePlane> polytopePlanes(const PolytopePrim &p, std::vector<int> *f
 
 bool drawsFaceted(FacetMode mode, const Fragments &f, int fragments) {
     switch (mode) {
-        case FacetMode::Smooth: return false;
-        case FacetMode::OpenScad: return true;
-        case FacetMode::Auto: return f.fn > 0 && fragments <= kAutoFacetMaxFragments;
+        case FacetMode::Smooth:
+            return false;
+        case FacetMode::OpenScad:
+            return true;
+        case FacetMode::Auto:
+            return f.fn > 0 && fragments <= kAutoFacetMaxFragments;
     }
     return false;
 }
@@ -150,8 +153,7 @@ bool drawsFaceted(FacetMode mode, const Fragments &f, int fragments) {
 namespace {
 
 /// A solid of revolution drawn as OpenSCAD's rotate_extrude mesh, added to the scene.
-bool facetRevolved(Node &n, Scene &scene, FacetMode mode, FacetStats &stats,
-                   DiagnosticSink &diag) {
+bool facetRevolved(Node &n, Scene &scene, FacetMode mode, FacetStats &stats, DiagnosticSink &diag) {
     const auto *lathe = std::get_if<LathePrim>(&n.shape);
     const auto *torus = std::get_if<TorusPrim>(&n.shape);
     if (!lathe && !torus) return false;
@@ -191,8 +193,8 @@ void facetNode(Node &n, Scene &scene, FacetMode mode, FacetStats &stats, Diagnos
     const auto *sphere = std::get_if<SpherePrim>(&n.shape);
     const auto *cyl = std::get_if<CylinderPrim>(&n.shape);
     if (!sphere && !cyl) return;
-    int fragments = openscadFragments(sphere ? sphere->radius : std::max(cyl->r1, cyl->r2),
-                                      n.fragments);
+    int fragments =
+        openscadFragments(sphere ? sphere->radius : std::max(cyl->r1, cyl->r2), n.fragments);
     if (!drawsFaceted(mode, n.fragments, fragments)) {
         ++stats.smooth;
         return;
@@ -206,8 +208,8 @@ void facetNode(Node &n, Scene &scene, FacetMode mode, FacetStats &stats, Diagnos
         ++stats.smooth;
         return;
     }
-    n.shape = sphere ? openscadSphere(sphere->radius, fragments)
-                     : openscadCylinder(*cyl, fragments);
+    n.shape =
+        sphere ? openscadSphere(sphere->radius, fragments) : openscadCylinder(*cyl, fragments);
     ++stats.faceted;
 }
 

@@ -17,10 +17,10 @@ struct Scene;
 
 namespace rt::meshing {
 
+using ir::CylinderPrim;
 using ir::FacetMode;
 using ir::Fragments;
 using ir::PolytopePrim;
-using ir::CylinderPrim;
 using ir::Scene;
 
 /// OpenSCAD's GRID_FINE (2^-20): circles smaller than this get 3 fragments, and extrusions of
@@ -44,9 +44,9 @@ PolytopePrim openscadCylinder(const CylinderPrim &c, int fragments);
 
 /// The plane of a polytope face: inside is normal . x <= offset.
 struct FacePlane {
-    Vec3 normal;      ///< unit, pointing out of the solid
+    Vec3 normal;  ///< unit, pointing out of the solid
     double offset = 0;
-    int axis = -1;    ///< 0, 1 or 2 when the face lies exactly in a plane x, y or z = offset
+    int axis = -1;  ///< 0, 1 or 2 when the face lies exactly in a plane x, y or z = offset
 };
 
 /// The planes of a polytope's faces, oriented away from the centroid of its vertices (so a

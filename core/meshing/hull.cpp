@@ -13,10 +13,10 @@
 #include <optional>
 #include <unordered_map>
 
-#include "core/meshing/facets.h"
 #include "core/ir/prism.h"
-#include "core/meshing/revolved_mesh.h"
 #include "core/ir/scene_ir.h"
+#include "core/meshing/facets.h"
+#include "core/meshing/revolved_mesh.h"
 
 namespace rt::meshing {
 
@@ -24,11 +24,16 @@ using namespace ir;
 
 const char *hullKindName(HullKind kind) {
     switch (kind) {
-        case HullKind::Empty: return "empty";
-        case HullKind::Point: return "a single point";
-        case HullKind::Line: return "collinear";
-        case HullKind::Flat: return "coplanar";
-        case HullKind::Solid: return "solid";
+        case HullKind::Empty:
+            return "empty";
+        case HullKind::Point:
+            return "a single point";
+        case HullKind::Line:
+            return "collinear";
+        case HullKind::Flat:
+            return "coplanar";
+        case HullKind::Solid:
+            return "solid";
     }
     return "?";
 }
@@ -62,7 +67,8 @@ class QuickHull {
         if (r.kind != HullKind::Solid) return r;
         // One pass suffices: a face's outside points only ever move to faces made later
         for (size_t fi = 0; fi < faces_.size(); ++fi) {
-            while (faces_[fi].alive && !faces_[fi].outside.empty()) addFarthest(static_cast<int>(fi));
+            while (faces_[fi].alive && !faces_[fi].outside.empty())
+                addFarthest(static_cast<int>(fi));
         }
         r.unsettledPoints = unsettled_;
         r.polytope = output();
@@ -180,9 +186,9 @@ class QuickHull {
     }
 
     struct HorizonEdge {
-        int a, b;      ///< directed as in the visible face
-        int outer;     ///< the face beyond it, which stays
-        int outerEdge; ///< the edge's index in `outer`
+        int a, b;       ///< directed as in the visible face
+        int outer;      ///< the face beyond it, which stays
+        int outerEdge;  ///< the edge's index in `outer`
     };
 
     void addFarthest(int fi) {
@@ -463,17 +469,20 @@ PolytopePrim openscadPolyhedron(const Node &n, const Scene &scene) {
         PolytopePrim p;
         p.vertices = m.positions;
         for (const auto &t : m.triangles)
-            p.faces.push_back({static_cast<int>(t[0]), static_cast<int>(t[1]), static_cast<int>(t[2])});
+            p.faces.push_back(
+                {static_cast<int>(t[0]), static_cast<int>(t[1]), static_cast<int>(t[2])});
         return p;
     };
     auto meshAt = [&](int index) -> const Mesh * {
-        return index >= 0 && index < static_cast<int>(scene.meshes.size()) ? scene.meshes[index].get()
-                                                                           : nullptr;
+        return index >= 0 && index < static_cast<int>(scene.meshes.size())
+                   ? scene.meshes[index].get()
+                   : nullptr;
     };
     if (const auto *b = std::get_if<BoxPrim>(&n.shape)) {
         PolytopePrim p;
         for (int i = 0; i < 8; ++i) p.vertices.push_back(Bounds3(b->min, b->max).corner(i));
-        p.faces = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
+        p.faces = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1},
+                   {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
         return p;
     }
     if (auto round = roundPolytope(n)) return std::move(*round);
@@ -510,7 +519,8 @@ bool isConvexSolid(const Node &n) {
         case NodeKind::Union:
         case NodeKind::Transform:
             return n.children.size() == 1 && isConvexSolid(*n.children[0]);
-        case NodeKind::Difference: return false;
+        case NodeKind::Difference:
+            return false;
     }
     return false;
 }
@@ -545,7 +555,8 @@ void markMaybeInside(const Node &n, const Mat4 &parentFromNode, const std::vecto
             for (size_t i = 0; i < pts.size(); ++i) maybeInside[i] = maybeInside[i] || all[i];
             return;
         }
-        case NodeKind::Primitive: break;
+        case NodeKind::Primitive:
+            break;
     }
     // A singular placement flattens the primitive: it has no inside
     std::optional<Mat4> nodeFromParent = parentFromNode.affineInverse();
@@ -573,7 +584,8 @@ void markMaybeInside(const Node &n, const Mat4 &parentFromNode, const std::vecto
             // Boxes exactly; meshes, non-convex prisms, tori and lathes by their bounds
             inside = true;
             for (int a = 0; a < 3; ++a)
-                inside = inside && local[i][a] >= box.min[a] - tol && local[i][a] <= box.max[a] + tol;
+                inside =
+                    inside && local[i][a] >= box.min[a] - tol && local[i][a] <= box.max[a] + tol;
         }
         if (inside) maybeInside[i] = 1;
     }
@@ -622,9 +634,12 @@ class HullGatherer {
                 for (const auto &c : n.children)
                     if (!gather(*c, parentFromNode * n.matrix, out)) return false;
                 return true;
-            case NodeKind::Primitive: return gatherPrimitive(n, parentFromNode, out);
-            case NodeKind::Intersection: return gatherIntersection(n, parentFromNode, out);
-            case NodeKind::Difference: return gatherDifference(n, parentFromNode, out);
+            case NodeKind::Primitive:
+                return gatherPrimitive(n, parentFromNode, out);
+            case NodeKind::Intersection:
+                return gatherIntersection(n, parentFromNode, out);
+            case NodeKind::Difference:
+                return gatherDifference(n, parentFromNode, out);
         }
         return true;
     }
@@ -669,7 +684,8 @@ class HullGatherer {
                                      " of an intersection() whose operands are not all single "
                                      "convex solids: taken as the intersection of the operands' "
                                      "hulls, which can be larger than OpenSCAD's");
-        if (cut) out.insert(out.end(), cut->polytope.vertices.begin(), cut->polytope.vertices.end());
+        if (cut)
+            out.insert(out.end(), cut->polytope.vertices.begin(), cut->polytope.vertices.end());
         return true;
     }
 
@@ -758,8 +774,11 @@ class ConvexPartGatherer {
                 if (isConvexSolid(n)) return onePart(n, parentFromNode, out);
                 solid_(n, parentFromNode);
                 return true;
-            case NodeKind::Difference: solid_(n, parentFromNode); return true;
-            case NodeKind::Primitive: break;
+            case NodeKind::Difference:
+                solid_(n, parentFromNode);
+                return true;
+            case NodeKind::Primitive:
+                break;
         }
         if (isConvexSolid(n)) return onePart(n, parentFromNode, out);
         if (const auto *m = std::get_if<MeshPrim>(&n.shape)) {
@@ -800,7 +819,8 @@ bool gatherHullPoints(const Node &node, const Scene &scene, DiagnosticSink &diag
 
 bool gatherConvexParts(const Node &node, const Scene &scene, DiagnosticSink &diag,
                        std::vector<std::vector<Vec3>> &out,
-                       const std::function<void(const Node &, const Mat4 &)> &solid, const char *op) {
+                       const std::function<void(const Node &, const Mat4 &)> &solid,
+                       const char *op) {
     return ConvexPartGatherer(scene, diag, op, solid).gather(node, Mat4(), out);
 }
 

@@ -50,50 +50,50 @@ void environmentUv(double rotateDegrees, const Vec3 &d, double *u, double *v) {
 
 Rgb environmentRadiance(const ir::Environment &env, const Vec3 &d) {
     switch (env.kind) {
-    case ir::EnvironmentKind::None:
-        return Rgb(0);
-    case ir::EnvironmentKind::Gradient: {
-        double len = length(d);
-        return gradientAt(env.gradient, len > 0 ? d.z / len : 1);
-    }
-    case ir::EnvironmentKind::Image: {
-        if (!env.image) return Rgb(0);
-        double u, v;
-        environmentUv(env.rotateDegrees, d, &u, &v);
-        return sampleTexture(*env.image, u, v);
-    }
+        case ir::EnvironmentKind::None:
+            return Rgb(0);
+        case ir::EnvironmentKind::Gradient: {
+            double len = length(d);
+            return gradientAt(env.gradient, len > 0 ? d.z / len : 1);
+        }
+        case ir::EnvironmentKind::Image: {
+            if (!env.image) return Rgb(0);
+            double u, v;
+            environmentUv(env.rotateDegrees, d, &u, &v);
+            return sampleTexture(*env.image, u, v);
+        }
     }
     return Rgb(0);
 }
 
 Rgb environmentMean(const ir::Environment &env) {
     switch (env.kind) {
-    case ir::EnvironmentKind::None:
-        return Rgb(0);
-    case ir::EnvironmentKind::Gradient: {
-        // Directions are uniform in z over the sphere (Archimedes), so the mean is the
-        // integral of the piecewise-linear gradient over [-1, 1], halved
-        Rgb sum(0);
-        const auto &g = env.gradient;
-        for (size_t i = 1; i < g.size(); ++i)
-            sum += (g[i - 1].color + g[i].color) * (0.5 * (g[i].z - g[i - 1].z));
-        return sum * 0.5;
-    }
-    case ir::EnvironmentKind::Image: {
-        if (!env.image || env.image->width <= 0) return Rgb(0);
-        const ir::Texture &t = *env.image;
-        Rgb sum(0);
-        double weight = 0;
-        for (int y = 0; y < t.height; ++y) {
-            double w = std::sin(kPi * (y + 0.5) / t.height);  // the row's solid angle
-            for (int x = 0; x < t.width; ++x) {
-                const float *p = &t.rgba[4 * (size_t(y) * t.width + x)];
-                sum += Rgb(p[0], p[1], p[2]) * w;
-            }
-            weight += w * t.width;
+        case ir::EnvironmentKind::None:
+            return Rgb(0);
+        case ir::EnvironmentKind::Gradient: {
+            // Directions are uniform in z over the sphere (Archimedes), so the mean is the
+            // integral of the piecewise-linear gradient over [-1, 1], halved
+            Rgb sum(0);
+            const auto &g = env.gradient;
+            for (size_t i = 1; i < g.size(); ++i)
+                sum += (g[i - 1].color + g[i].color) * (0.5 * (g[i].z - g[i - 1].z));
+            return sum * 0.5;
         }
-        return sum * (1 / weight);
-    }
+        case ir::EnvironmentKind::Image: {
+            if (!env.image || env.image->width <= 0) return Rgb(0);
+            const ir::Texture &t = *env.image;
+            Rgb sum(0);
+            double weight = 0;
+            for (int y = 0; y < t.height; ++y) {
+                double w = std::sin(kPi * (y + 0.5) / t.height);  // the row's solid angle
+                for (int x = 0; x < t.width; ++x) {
+                    const float *p = &t.rgba[4 * (size_t(y) * t.width + x)];
+                    sum += Rgb(p[0], p[1], p[2]) * w;
+                }
+                weight += w * t.width;
+            }
+            return sum * (1 / weight);
+        }
     }
     return Rgb(0);
 }

@@ -16,13 +16,15 @@
 namespace rt {
 
 GeometryBuffer renderGeometry(const RenderScene &scene, int width, int height, int threads) {
-    if (width < 1 || height < 1) throw std::invalid_argument("geometry buffer size must be positive");
+    if (width < 1 || height < 1)
+        throw std::invalid_argument("geometry buffer size must be positive");
     Camera camera(scene.camera(), width, height);
     GeometryBuffer buf;
     buf.width = width;
     buf.height = height;
     buf.samples.resize(size_t(width) * height);
-    int n = threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    int n =
+        threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     n = std::min(n, height);
     std::atomic<int> nextRow{0};
     auto worker = [&]() {
@@ -43,7 +45,8 @@ GeometryBuffer renderGeometry(const RenderScene &scene, int width, int height, i
             }
     };
     std::vector<std::unique_ptr<StackThread>> pool;
-    for (int i = 0; i < n; ++i) pool.push_back(std::make_unique<StackThread>(kWorkerStackBytes, worker));
+    for (int i = 0; i < n; ++i)
+        pool.push_back(std::make_unique<StackThread>(kWorkerStackBytes, worker));
     for (auto &t : pool) t->join();
     return buf;
 }

@@ -59,13 +59,13 @@ struct GeometryTolerances {
 struct GeometryCompareResult {
     bool pass = true;
     int width = 0, height = 0;
-    long bothMiss = 0;       ///< background in both
-    long agreeing = 0;       ///< unmasked hits that agree in depth and normal
-    long silhouette = 0;     ///< masked: a neighbour differs in hit/miss or jumps in depth
-    long tied = 0;           ///< masked: coincident surfaces in either buffer (not silhouette)
-    long coverageDiffer = 0; ///< unmasked pixels hit in one buffer and missed in the other
-    long depthDiffer = 0;    ///< unmasked hits whose depth differs beyond the tolerance
-    long normalDiffer = 0;   ///< unmasked hits whose depth agrees but normal differs
+    long bothMiss = 0;        ///< background in both
+    long agreeing = 0;        ///< unmasked hits that agree in depth and normal
+    long silhouette = 0;      ///< masked: a neighbour differs in hit/miss or jumps in depth
+    long tied = 0;            ///< masked: coincident surfaces in either buffer (not silhouette)
+    long coverageDiffer = 0;  ///< unmasked pixels hit in one buffer and missed in the other
+    long depthDiffer = 0;     ///< unmasked hits whose depth differs beyond the tolerance
+    long normalDiffer = 0;    ///< unmasked hits whose depth agrees but normal differs
     /// Worst unmasked relative depth difference and normal angle (degrees) at the same pixel,
     /// before the one-pixel forgiveness along facet edges
     double maxDepthRel = 0, maxNormalDegrees = 0;

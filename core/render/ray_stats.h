@@ -8,15 +8,15 @@ namespace rt {
 
 struct RayStats {
     int64_t camera = 0;
-    int64_t shadow = 0;         ///< shadow-ray segments (one per surface crossed towards a light)
+    int64_t shadow = 0;  ///< shadow-ray segments (one per surface crossed towards a light)
     int64_t reflection = 0;
-    int64_t refraction = 0;     ///< rays bent by a change of ior
-    int64_t transmission = 0;   ///< rays continuing straight through a transparent surface
+    int64_t refraction = 0;    ///< rays bent by a change of ior
+    int64_t transmission = 0;  ///< rays continuing straight through a transparent surface
     int64_t internalReflection = 0;
-    int64_t distributed = 0;    ///< glossy and frosted rays spread about a principal direction
-    int64_t spanOps = 0;        ///< CSG span-list merges
-    int64_t prunedSubtrees = 0; ///< CSG subtrees skipped by bounds or pruning rules
-    int64_t nonFinite = 0;      ///< NaN or Inf radiance values replaced by black
+    int64_t distributed = 0;     ///< glossy and frosted rays spread about a principal direction
+    int64_t spanOps = 0;         ///< CSG span-list merges
+    int64_t prunedSubtrees = 0;  ///< CSG subtrees skipped by bounds or pruning rules
+    int64_t nonFinite = 0;       ///< NaN or Inf radiance values replaced by black
     int64_t interiorOverflow = 0;
 
     int64_t totalRays() const {

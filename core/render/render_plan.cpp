@@ -43,8 +43,9 @@ RenderPlan makePlan(const RenderScene &scene) {
     plan.monteCarlo = u.glossy + u.frosted + jittered > 0;
     if (plan.monteCarlo) {
         plan.defaultSamples = 4;
-        plan.samplesReason = "Monte Carlo effects: 4 samples average their noise (--aa-tolerance: "
-                             "more samples where the noise is larger)";
+        plan.samplesReason =
+            "Monte Carlo effects: 4 samples average their noise (--aa-tolerance: "
+            "more samples where the noise is larger)";
     } else {
         plan.defaultSamples = 1;
         plan.adaptive = true;
@@ -75,7 +76,8 @@ std::string describePlan(const RenderScene &scene, const ir::ImportStats &import
     if (scene.lights().empty())
         os << "no lights, no shadow rays\n";
     else {
-        os << "rays towards " << casting << " of " << plural(scene.lights().size(), "light", "lights");
+        os << "rays towards " << casting << " of "
+           << plural(scene.lights().size(), "light", "lights");
         if (shadowless) os << " (" << shadowless << " shadowless: none)";
         if (area) os << ", " << plural(area, "area light", "area lights") << " with a grid of rays";
         os << "; none where a light is behind the surface\n";
@@ -89,8 +91,8 @@ std::string describePlan(const RenderScene &scene, const ir::ImportStats &import
     os << "  refraction: ";
     if (u.transparent)
         os << u.transparent << " of " << plural(u.used, "material is", "materials are")
-           << " transparent" << (u.frosted ? " (" + std::to_string(u.frosted) + " frosted)" : std::string())
-           << "\n";
+           << " transparent"
+           << (u.frosted ? " (" + std::to_string(u.frosted) + " frosted)" : std::string()) << "\n";
     else
         os << "no material is transparent: no refraction or transmission rays\n";
     os << "  Monte Carlo: "
@@ -99,16 +101,18 @@ std::string describePlan(const RenderScene &scene, const ir::ImportStats &import
        << "\n";
 
     // Objects
-    os << "  objects: " << plural(st.objects, "solid", "solids") << " kept ("
-       << st.csgObjects << " with CSG span merging, " << plural(st.primitives, "primitive", "primitives");
+    os << "  objects: " << plural(st.objects, "solid", "solids") << " kept (" << st.csgObjects
+       << " with CSG span merging, " << plural(st.primitives, "primitive", "primitives");
     if (st.triangles) os << ", " << st.triangles << " triangles";
     os << ")";
     if (st.unionsSplit)
         os << "; " << plural(st.unionsSplit, "union", "unions")
            << " of disjoint parts split into separate solids (no span merging)";
     os << "\n  dropped: " << st.behindCamera << " behind the camera";
-    if (st.behindCamera) os << " (" << plural(st.behindCameraPrimitives, "primitive", "primitives") << ")";
-    if (!st.behindCameraKept.empty()) os << " (some are behind it but kept: " << st.behindCameraKept << ")";
+    if (st.behindCamera)
+        os << " (" << plural(st.behindCameraPrimitives, "primitive", "primitives") << ")";
+    if (!st.behindCameraKept.empty())
+        os << " (some are behind it but kept: " << st.behindCameraKept << ")";
     os << ", " << imported.backgroundParts << " % background parts, " << imported.disabledParts
        << " * disabled parts, " << plural(st.emptyDropped, "empty subtree", "empty subtrees")
        << ", " << plural(u.unused, "unused material", "unused materials") << " (of "
@@ -121,7 +125,8 @@ std::string describePlan(const RenderScene &scene, const ir::ImportStats &import
     if (st.objects <= 1)
         os << "none (" << plural(st.objects, "solid", "solids") << ")\n";
     else if (st.bvhDepth <= 1)
-        os << "one bounding box around " << st.objects << " solids, tested in turn (no hierarchy)\n";
+        os << "one bounding box around " << st.objects
+           << " solids, tested in turn (no hierarchy)\n";
     else
         os << "BVH over " << st.objects << " solids, depth " << st.bvhDepth << "\n";
     os << "  CSG pruning: "

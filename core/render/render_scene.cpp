@@ -150,7 +150,8 @@ class Compiler {
                   [&](size_t a, size_t b) { return boxes[a].min[axis] < boxes[b].min[axis]; });
         for (size_t i = 0; i < order.size(); ++i) {
             const Bounds3 &a = boxes[order[i]];
-            for (size_t j = i + 1; j < order.size() && boxes[order[j]].min[axis] <= a.max[axis]; ++j)
+            for (size_t j = i + 1; j < order.size() && boxes[order[j]].min[axis] <= a.max[axis];
+                 ++j)
                 if (!intersectBounds(a, boxes[order[j]]).isEmpty()) return false;
         }
         return true;
@@ -158,10 +159,11 @@ class Compiler {
 
     bool checkTransform(const ir::Node &node, const Mat4 &m) {
         if (Transform::fromMatrix(m)) return true;
-        diag_.warning(node.loc, m.isFinite()
-                                    ? "transform is singular (a zero scale?); the object has no "
-                                      "volume and is not rendered"
-                                    : "transform has non-finite entries; the object is not rendered");
+        diag_.warning(node.loc,
+                      m.isFinite()
+                          ? "transform is singular (a zero scale?); the object has no "
+                            "volume and is not rendered"
+                          : "transform has non-finite entries; the object is not rendered");
         ++stats_.emptyDropped;
         return false;
     }
@@ -231,7 +233,8 @@ class Compiler {
                 return unionOf(csg, node, composed);
             }
             case ir::NodeKind::Group:
-            case ir::NodeKind::Union: return unionOf(csg, node, m);
+            case ir::NodeKind::Union:
+                return unionOf(csg, node, m);
             case ir::NodeKind::Intersection: {
                 std::vector<int> kids;
                 for (const auto &c : node.children) {
@@ -273,13 +276,12 @@ class Compiler {
         return kids.size() == 1 ? kids[0] : csg.addOp(CsgShape::Op::Union, std::move(kids));
     }
 
-    void finishObject(Shape &object,
-                      const std::vector<std::unique_ptr<LeafShape>> &leaves) {
+    void finishObject(Shape &object, const std::vector<std::unique_ptr<LeafShape>> &leaves) {
         // The interior (ior, fade) of a CSG solid is that of its first primitive, which is the
         // minuend's for a difference; the solid blocks shadows only if every surface is opaque.
         object.interiorMaterial = leaves.front()->material();
-        object.opaque = std::all_of(leaves.begin(), leaves.end(),
-                                    [](const auto &l) { return l->opaque; });
+        object.opaque =
+            std::all_of(leaves.begin(), leaves.end(), [](const auto &l) { return l->opaque; });
     }
 
     const ir::Scene &scene_;
@@ -437,22 +439,24 @@ SurfaceInteraction RenderScene::surfaceAt(const Ray &ray, const Hit &hit) const 
 // Both bodies are flattened: the walk, the node test and the visitor inlined into one loop
 // (GCC 12 left the visitor out of line when two walks call it, 6 % slower), and the lanes'
 // AVX2 node test can only be inlined into a function compiled for AVX2.
-__attribute__((flatten)) bool RenderScene::closestHitPlanes(const Ray &ray, double tMin, double tMax,
-                                                            Hit *hit, SpanScratch &scratch,
+__attribute__((flatten)) bool RenderScene::closestHitPlanes(const Ray &ray, double tMin,
+                                                            double tMax, Hit *hit,
+                                                            SpanScratch &scratch,
                                                             const VistaLists *vista) const {
     return closestHitWith<Bvh::RaySlabs>(ray, tMin, tMax, hit, scratch, vista);
 }
 
 #if SCADRAY_LANE_SLABS
 SCADRAY_LANES_TARGET __attribute__((flatten)) bool RenderScene::closestHitLanes(
-    const Ray &ray, double tMin, double tMax, Hit *hit, SpanScratch &scratch, const VistaLists *vista) const {
+    const Ray &ray, double tMin, double tMax, Hit *hit, SpanScratch &scratch,
+    const VistaLists *vista) const {
     return closestHitWith<Bvh::LaneSlabs>(ray, tMin, tMax, hit, scratch, vista);
 }
 #endif
 
 template <typename Slabs>
-bool RenderScene::closestHitWith(const Ray &ray, double tMin, double tMax, Hit *hit, SpanScratch &scratch,
-                                 const VistaLists *vista) const {
+bool RenderScene::closestHitWith(const Ray &ray, double tMin, double tMax, Hit *hit,
+                                 SpanScratch &scratch, const VistaLists *vista) const {
     Crossing best;
     constexpr uint32_t kNone = UINT32_MAX;
     uint32_t bestObject = kNone;  // index of the object of `best`
@@ -486,7 +490,7 @@ bool RenderScene::closestHitWith(const Ray &ray, double tMin, double tMax, Hit *
         }
         return false;
     };
-    // The visitor only lowers `closest`, so the lanes' walks may test two boxes side by side
+        // The visitor only lowers `closest`, so the lanes' walks may test two boxes side by side
 #if SCADRAY_LANE_SLABS
     constexpr bool paired = std::is_same_v<Slabs, Bvh::LaneSlabs>;
 #else

@@ -40,13 +40,13 @@ struct CompileOptions {
 };
 
 struct CompileStats {
-    size_t objects = 0;         ///< top-level solids
-    size_t primitives = 0;      ///< primitives and mesh instances in them
-    size_t triangles = 0;       ///< triangles of the distinct meshes
-    size_t csgObjects = 0;      ///< solids that need span merging
-    size_t emptyDropped = 0;    ///< subtrees with no volume (empty operands, singular transforms)
-    size_t unionsSplit = 0;     ///< unions of disjoint parts rendered as separate solids
-    size_t behindCamera = 0;    ///< objects no ray can reach: behind the camera, nothing reflects
+    size_t objects = 0;       ///< top-level solids
+    size_t primitives = 0;    ///< primitives and mesh instances in them
+    size_t triangles = 0;     ///< triangles of the distinct meshes
+    size_t csgObjects = 0;    ///< solids that need span merging
+    size_t emptyDropped = 0;  ///< subtrees with no volume (empty operands, singular transforms)
+    size_t unionsSplit = 0;   ///< unions of disjoint parts rendered as separate solids
+    size_t behindCamera = 0;  ///< objects no ray can reach: behind the camera, nothing reflects
     size_t behindCameraPrimitives = 0;
     /// Why objects behind the camera had to be kept (empty when none were, or none are behind)
     std::string behindCameraKept;
@@ -95,7 +95,8 @@ class RenderScene {
     const ir::Material &material(int index) const { return materials_[index]; }
     const std::vector<ir::Material> &materials() const { return materials_; }
     const ir::Texture *texture(int index) const {
-        return index >= 0 && index < static_cast<int>(textures_.size()) ? textures_[index].get() : nullptr;
+        return index >= 0 && index < static_cast<int>(textures_.size()) ? textures_[index].get()
+                                                                        : nullptr;
     }
     /// The images material `index` reads per texel, resolved once at compile time (all null
     /// for a material without a per-texel description).

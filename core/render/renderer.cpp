@@ -40,8 +40,9 @@ void validateRenderOptions(const RenderOptions &o) {
                                     std::to_string(o.height) + " is outside 1.." +
                                     std::to_string(kMaxImageSide));
     if (int64_t(o.width) * o.height > kMaxImagePixels)
-        throw std::invalid_argument("image size " + std::to_string(o.width) + "x" + std::to_string(o.height) +
-                                    " has more than " + std::to_string(kMaxImagePixels) +
+        throw std::invalid_argument("image size " + std::to_string(o.width) + "x" +
+                                    std::to_string(o.height) + " has more than " +
+                                    std::to_string(kMaxImagePixels) +
                                     " pixels (16384 x 16384), the limit");
     if (o.samplesPerPixel < 1 || o.samplesPerPixel > kMaxSamplesPerPixel)
         throw std::invalid_argument("samples per pixel must be between 1 and " +
@@ -58,9 +59,10 @@ void validateRenderOptions(const RenderOptions &o) {
                                     std::to_string(o.height) + " rows high");
     if (o.adaptive) {
         if (o.adaptiveMax != 1 << (2 * adaptiveLevels(o.adaptiveMax)))
-            throw std::invalid_argument("adaptive antialiasing needs a maximum of 4, 16, 64, 256, "
-                                        "1024 or 4096 samples per pixel, not " +
-                                        std::to_string(o.adaptiveMax));
+            throw std::invalid_argument(
+                "adaptive antialiasing needs a maximum of 4, 16, 64, 256, "
+                "1024 or 4096 samples per pixel, not " +
+                std::to_string(o.adaptiveMax));
         if (!(o.adaptiveThreshold >= 0) || !(o.adaptiveTolerance >= 0))
             throw std::invalid_argument("adaptive threshold and tolerance must not be negative");
         if (o.batches != 1 || o.jitterSingleSample)
@@ -70,8 +72,9 @@ void validateRenderOptions(const RenderOptions &o) {
 
 std::pair<int, int> tileRows(int tile, int tiles, int height) {
     if (tiles < 1 || tiles > height)
-        throw std::invalid_argument("a picture " + std::to_string(height) + " rows high splits into 1 to " +
-                                    std::to_string(height) + " tiles, not " + std::to_string(tiles));
+        throw std::invalid_argument("a picture " + std::to_string(height) +
+                                    " rows high splits into 1 to " + std::to_string(height) +
+                                    " tiles, not " + std::to_string(tiles));
     if (tile < 0 || tile >= tiles)
         throw std::invalid_argument("tile " + std::to_string(tile + 1) + " is not one of 1.." +
                                     std::to_string(tiles));
@@ -90,8 +93,8 @@ namespace {
 
 /// Runs job(0 .. jobs-1) on `threads` threads with a TraceContext each, adds their ray counts to
 /// `stats` and reports progress from `from` to `to` of the whole render.
-void runJobs(int threads, int jobs, const RenderOptions &opts, double from, double to, RayStats &stats,
-             const std::function<void(int, TraceContext &)> &job) {
+void runJobs(int threads, int jobs, const RenderOptions &opts, double from, double to,
+             RayStats &stats, const std::function<void(int, TraceContext &)> &job) {
     if (jobs == 0) return;
     threads = std::min(threads, jobs);
     std::atomic<int> next{0}, done{0};
@@ -112,7 +115,8 @@ void runJobs(int threads, int jobs, const RenderOptions &opts, double from, doub
     };
     std::vector<std::unique_ptr<StackThread>> pool;
     for (int i = 0; i < threads; ++i)
-        pool.push_back(std::make_unique<StackThread>(kWorkerStackBytes, [&worker, i] { worker(i); }));
+        pool.push_back(
+            std::make_unique<StackThread>(kWorkerStackBytes, [&worker, i] { worker(i); }));
     {
         std::unique_lock<std::mutex> lock(mutex);
         while (done.load() < jobs) {
@@ -185,7 +189,8 @@ void renderUniform(const Camera &camera, const WhittedIntegrator &integrator,
                         int s = s0 + k;
                         // The sample's stream jitters its stratum of the pixel, then drives
                         // every distributed ray of its path
-                        Rng rng = Rng::forPixelSample(pixelSeed, uint64_t(b) * opts.samplesPerPixel + s);
+                        Rng rng =
+                            Rng::forPixelSample(pixelSeed, uint64_t(b) * opts.samplesPerPixel + s);
                         double fx = 0.5, fy = 0.5;
                         if (jitter) {
                             fx = ((s % columns) + rng.uniform()) / columns;
@@ -208,9 +213,11 @@ void renderUniform(const Camera &camera, const WhittedIntegrator &integrator,
                 m2 += delta * (batchMean - mean);
             }
             result.image.set(x, y - y0, mean);
-            result.ties.set(x, y - y0, Rgb(double(tiedSamples) / (opts.batches * opts.samplesPerPixel)));
+            result.ties.set(x, y - y0,
+                            Rgb(double(tiedSamples) / (opts.batches * opts.samplesPerPixel)));
             if (opts.batches > 1)
-                result.variance.set(x, y - y0, m2 / double(opts.batches - 1) / double(opts.batches));
+                result.variance.set(x, y - y0,
+                                    m2 / double(opts.batches - 1) / double(opts.batches));
         });
     });
     result.samples = int64_t(opts.width) * bandRows * opts.samplesPerPixel * opts.batches;
@@ -282,7 +289,7 @@ int facingQuadrants(uint8_t sides) {
 /// band of the picture (rowBegin, rowEnd) also traces the centres of the rows bordering it: its
 /// pixels' decisions read them, and must be those of the whole picture.
 FirstPass adaptiveFirstPass(const Camera &camera, const WhittedIntegrator &integrator,
-                                   const RenderOptions &opts, int threads, RenderResult &result) {
+                            const RenderOptions &opts, int threads, RenderResult &result) {
     int y0 = opts.rowBegin, y1 = endRow(opts);
     int e0 = std::max(0, y0 - 1), e1 = std::min(opts.height, y1 + 1);
     Tiles tiles(opts, e0, e1);
@@ -374,8 +381,8 @@ double adaptiveError(const std::vector<Rgb> &display, int k) {
     return std::sqrt(worst);
 }
 
-void renderAdaptive(const Camera &camera, const WhittedIntegrator &integrator, const RenderOptions &opts,
-                    int threads, RenderResult &result) {
+void renderAdaptive(const Camera &camera, const WhittedIntegrator &integrator,
+                    const RenderOptions &opts, int threads, RenderResult &result) {
     // Monte Carlo noise: every pixel from round 1 on, with no centre pass
     FirstPass first;
     int y0 = opts.rowBegin;
@@ -393,83 +400,87 @@ void renderAdaptive(const Camera &camera, const WhittedIntegrator &integrator, c
     result.pixelChecked.assign(result.pixelLevels.size(), 0);
     constexpr int kChunk = 32;
     int chunks = static_cast<int>((refine.size() + kChunk - 1) / kChunk);
-    runJobs(threads, chunks, opts, opts.adaptiveNoise ? 0 : 0.5, 1, result.stats, [&](int chunk, TraceContext &ctx) {
-        std::vector<Rgb> values(opts.adaptiveMax), display(opts.adaptiveMax);
-        std::vector<int> cells(opts.adaptiveMax);
-        std::vector<uint32_t> hits(opts.adaptiveMax);
-        std::vector<int> byCell(size_t(side) * side);
-        size_t end = std::min(refine.size(), size_t(chunk + 1) * kChunk);
-        for (size_t i = size_t(chunk) * kChunk; i < end; ++i) {
-            int pixel = refine[i], x = pixel % opts.width, y = pixel / opts.width;
-            // Its index into the result's vectors and into pass 1's
-            size_t own = size_t(pixel) - size_t(y0) * opts.width;
-            size_t firstOwn = size_t(pixel) - size_t(first.firstRow) * opts.width;
-            uint64_t key = mixBits(uint64_t(pixel) ^ mixBits(opts.seed ^ 0x5ca1ab1e0ddba11ULL));
-            uint64_t pixelSeed = Rng::pixelSeed(uint64_t(pixel), opts.seed);
-            int tied = 0;
-            // Sample j of the pixel: the cell's sample exactly as uniform sampling at
-            // adaptiveMax draws it
-            auto sample = [&](int j) {
-                int column, row;
-                adaptiveCell(j, levels, key, column, row);
-                int cell = row * side + column;
-                ctx.rng = Rng::forPixelSample(pixelSeed, uint64_t(cell));
-                double fx = (column + ctx.rng.uniform()) / side;
-                double fy = (row + ctx.rng.uniform()) / side;
-                ctx.tie = false;
-                ctx.firstHit = nullptr;
-                Rgb c = clampSample(integrator.li(camera.generateRay(x + fx, y + fy), ctx), opts);
-                tied += ctx.tie;
-                values[j] = c;
-                display[j] = displayValue(c);
-                cells[j] = cell;
-                hits[j] = hitKey(ctx.firstHit);
-            };
-            // A pixel first takes the samples of round 1 in the quadrants facing its differing
-            // neighbours (two, or three for neighbours on two adjacent sides). Where all saw the
-            // centre's primitive and display value, the contrast lies in the neighbours' boxes:
-            // the pixel keeps its centre (a checked pixel)
-            int n = 0, k = 0;
-            int facing = opts.adaptiveNoise ? 0xf : facingQuadrants(first.sides[firstOwn]);
-            if (facing != 0xf) {
-                // quadrant q holds sample q ^ (round 1's scramble), as adaptiveCell places them
-                int scramble = static_cast<int>(mixBits(key ^ mixBits(1)) & 3);
-                bool flat = true;
-                int probes = 0;
-                for (int q = 0; q < 4; ++q)
-                    if (facing >> q & 1) {
-                        int j = q ^ scramble;
-                        sample(j);
-                        ++probes;
-                        flat = flat && !samplesDiffer(hits[j], displayBytes(display[j]), first.hits[firstOwn],
-                                                      first.display[firstOwn], kProbeAgreement);
+    runJobs(
+        threads, chunks, opts, opts.adaptiveNoise ? 0 : 0.5, 1, result.stats,
+        [&](int chunk, TraceContext &ctx) {
+            std::vector<Rgb> values(opts.adaptiveMax), display(opts.adaptiveMax);
+            std::vector<int> cells(opts.adaptiveMax);
+            std::vector<uint32_t> hits(opts.adaptiveMax);
+            std::vector<int> byCell(size_t(side) * side);
+            size_t end = std::min(refine.size(), size_t(chunk + 1) * kChunk);
+            for (size_t i = size_t(chunk) * kChunk; i < end; ++i) {
+                int pixel = refine[i], x = pixel % opts.width, y = pixel / opts.width;
+                // Its index into the result's vectors and into pass 1's
+                size_t own = size_t(pixel) - size_t(y0) * opts.width;
+                size_t firstOwn = size_t(pixel) - size_t(first.firstRow) * opts.width;
+                uint64_t key = mixBits(uint64_t(pixel) ^ mixBits(opts.seed ^ 0x5ca1ab1e0ddba11ULL));
+                uint64_t pixelSeed = Rng::pixelSeed(uint64_t(pixel), opts.seed);
+                int tied = 0;
+                // Sample j of the pixel: the cell's sample exactly as uniform sampling at
+                // adaptiveMax draws it
+                auto sample = [&](int j) {
+                    int column, row;
+                    adaptiveCell(j, levels, key, column, row);
+                    int cell = row * side + column;
+                    ctx.rng = Rng::forPixelSample(pixelSeed, uint64_t(cell));
+                    double fx = (column + ctx.rng.uniform()) / side;
+                    double fy = (row + ctx.rng.uniform()) / side;
+                    ctx.tie = false;
+                    ctx.firstHit = nullptr;
+                    Rgb c =
+                        clampSample(integrator.li(camera.generateRay(x + fx, y + fy), ctx), opts);
+                    tied += ctx.tie;
+                    values[j] = c;
+                    display[j] = displayValue(c);
+                    cells[j] = cell;
+                    hits[j] = hitKey(ctx.firstHit);
+                };
+                // A pixel first takes the samples of round 1 in the quadrants facing its differing
+                // neighbours (two, or three for neighbours on two adjacent sides). Where all saw
+                // the centre's primitive and display value, the contrast lies in the neighbours'
+                // boxes: the pixel keeps its centre (a checked pixel)
+                int n = 0, k = 0;
+                int facing = opts.adaptiveNoise ? 0xf : facingQuadrants(first.sides[firstOwn]);
+                if (facing != 0xf) {
+                    // quadrant q holds sample q ^ (round 1's scramble), as adaptiveCell places them
+                    int scramble = static_cast<int>(mixBits(key ^ mixBits(1)) & 3);
+                    bool flat = true;
+                    int probes = 0;
+                    for (int q = 0; q < 4; ++q)
+                        if (facing >> q & 1) {
+                            int j = q ^ scramble;
+                            sample(j);
+                            ++probes;
+                            flat = flat && !samplesDiffer(hits[j], displayBytes(display[j]),
+                                                          first.hits[firstOwn],
+                                                          first.display[firstOwn], kProbeAgreement);
+                        }
+                    if (flat) {
+                        result.pixelChecked[own] = static_cast<uint8_t>(probes);
+                        continue;
                     }
-                if (flat) {
-                    result.pixelChecked[own] = static_cast<uint8_t>(probes);
-                    continue;
+                    for (int q = 0; q < 4; ++q)
+                        if (!(facing >> q & 1)) sample(q ^ scramble);
+                    n = 4;
+                    k = 1;
                 }
-                for (int q = 0; q < 4; ++q)
-                    if (!(facing >> q & 1)) sample(q ^ scramble);
-                n = 4;
-                k = 1;
+                if (k == 0 || (k < levels && adaptiveError(display, k) >= opts.adaptiveTolerance)) {
+                    do {
+                        ++k;
+                        for (int count = 1 << (2 * k); n < count; ++n) sample(n);
+                    } while (k < levels && adaptiveError(display, k) >= opts.adaptiveTolerance);
+                }
+                // Sum in cell order, as uniform sampling does
+                std::fill(byCell.begin(), byCell.end(), -1);
+                for (int j = 0; j < n; ++j) byCell[cells[j]] = j;
+                Rgb sum(0);
+                for (int j : byCell)
+                    if (j >= 0) sum += values[j];
+                result.image.set(x, y - y0, sum * (1.0 / n));
+                result.ties.set(x, y - y0, Rgb(double(tied) / n));
+                result.pixelLevels[own] = static_cast<uint8_t>(k);
             }
-            if (k == 0 || (k < levels && adaptiveError(display, k) >= opts.adaptiveTolerance)) {
-                do {
-                    ++k;
-                    for (int count = 1 << (2 * k); n < count; ++n) sample(n);
-                } while (k < levels && adaptiveError(display, k) >= opts.adaptiveTolerance);
-            }
-            // Sum in cell order, as uniform sampling does
-            std::fill(byCell.begin(), byCell.end(), -1);
-            for (int j = 0; j < n; ++j) byCell[cells[j]] = j;
-            Rgb sum(0);
-            for (int j : byCell)
-                if (j >= 0) sum += values[j];
-            result.image.set(x, y - y0, sum * (1.0 / n));
-            result.ties.set(x, y - y0, Rgb(double(tied) / n));
-            result.pixelLevels[own] = static_cast<uint8_t>(k);
-        }
-    });
+        });
     // Counted over the band's pixels (a band's bordering centres are not among its samples)
     int64_t pixels = int64_t(result.pixelLevels.size());
     result.pixelsBySamples.assign(levels + 1, 0);
@@ -529,7 +540,8 @@ RenderResult renderImage(const RenderScene &scene, const RenderOptions &opts) {
     std::clock_t cpuStart = std::clock();
     Camera camera(scene.camera(), opts.width, opts.height);
     WhittedIntegrator integrator(scene, camera.position());
-    int threads = opts.threads > 0 ? opts.threads : std::max(1u, std::thread::hardware_concurrency());
+    int threads =
+        opts.threads > 0 ? opts.threads : std::max(1u, std::thread::hardware_concurrency());
     RenderResult result;
     result.image = Image(opts.width, endRow(opts) - opts.rowBegin);
     result.ties = Image(opts.width, endRow(opts) - opts.rowBegin);
@@ -538,7 +550,8 @@ RenderResult renderImage(const RenderScene &scene, const RenderOptions &opts) {
         renderAdaptive(camera, integrator, opts, threads, result);
     else
         renderUniform(camera, integrator, opts, threads, result);
-    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     result.cpuSeconds = double(std::clock() - cpuStart) / CLOCKS_PER_SEC;
     return result;
 }

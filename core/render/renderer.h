@@ -42,12 +42,12 @@ struct RenderOptions {
     /// Pass 1 traces each pixel's centre. A pixel is refined when its display value (square
     /// root of the linear one, close to sRGB) differs from that of a pixel sharing an edge
     /// with it by more than adaptiveThreshold in some channel, or its camera ray hit another
-    /// primitive than that neighbour's. Pass 2 gives each such pixel rounds of 4, 16, 64 ... stratified samples,
-    /// the first 4^k of which are the cells of a 2^k x 2^k grid, up to adaptiveMax, stopping
-    /// when the standard error of its mean (estimated from the spread within groups of
-    /// sibling cells, in display units) is below adaptiveTolerance (0: always adaptiveMax).
-    /// A refined pixel first traces the samples of round 1 in the quadrants facing its
-    /// differing neighbours (2, or 3 for neighbours on two adjacent sides; not where they lie
+    /// primitive than that neighbour's. Pass 2 gives each such pixel rounds of 4, 16, 64 ...
+    /// stratified samples, the first 4^k of which are the cells of a 2^k x 2^k grid, up to
+    /// adaptiveMax, stopping when the standard error of its mean (estimated from the spread within
+    /// groups of sibling cells, in display units) is below adaptiveTolerance (0: always
+    /// adaptiveMax). A refined pixel first traces the samples of round 1 in the quadrants facing
+    /// its differing neighbours (2, or 3 for neighbours on two adjacent sides; not where they lie
     /// on opposite sides); where all see the centre's primitive and display value (within
     /// 1/255), the contrast lies in the neighbours' boxes and the pixel keeps its centre (a
     /// "checked" pixel), else the rest of round 1 follows.

@@ -66,11 +66,13 @@ Rgb WhittedIntegrator::trace(const Ray &ray, int level, double weight, const Int
     // The hit first, its surface only where there is one: RenderScene::intersect's
     // SurfaceInteraction would be zeroed (232 bytes, a `rep stos`) on every ray, hit or not
     RenderScene::Hit hit;
-    bool found = scene_.closestHit(ray, 0, kInfinity, &hit, ctx.scratch, level == 0 ? scene_.vista() : nullptr);
+    bool found = scene_.closestHit(ray, 0, kInfinity, &hit, ctx.scratch,
+                                   level == 0 ? scene_.vista() : nullptr);
     ctx.tie = ctx.tie || hit.tie;
     if (level == 0) ctx.firstHit = found ? hit.crossing.leaf : nullptr;  // the camera ray
     if (!found) return missRadiance(s, ray.d);  // the background or the environment
-    return shade(ray, scene_.surfaceAt(ray, hit), continued ? level : level + 1, weight, stack, blurred, ctx);
+    return shade(ray, scene_.surfaceAt(ray, hit), continued ? level : level + 1, weight, stack,
+                 blurred, ctx);
 }
 
 double WhittedIntegrator::relativeIor(const Shape *object, const InteriorStack &stack) const {
@@ -83,9 +85,8 @@ double WhittedIntegrator::relativeIor(const Shape *object, const InteriorStack &
     return iorX / interiorOf(stack.top()).ior;
 }
 
-Rgb WhittedIntegrator::shade(const Ray &ray, const SurfaceInteraction &si, int level,
-                             double weight, const InteriorStack &stack, bool blurred,
-                             TraceContext &ctx) const {
+Rgb WhittedIntegrator::shade(const Ray &ray, const SurfaceInteraction &si, int level, double weight,
+                             const InteriorStack &stack, bool blurred, TraceContext &ctx) const {
     int materialIndex = si.leaf->material();
     const ir::Material &stored = scene_.material(materialIndex);
     // A glTF material with per-texel textures: its classic material and normal at this texel
@@ -94,17 +95,20 @@ Rgb WhittedIntegrator::shade(const Ray &ray, const SurfaceInteraction &si, int l
     if (stored.texel.pbr) {
         TexelShading texel = shadeTexel(stored, scene_.texelImages(materialIndex), si, ray.d);
         // Cut out (alpha MASK): the ray goes on as if the surface were not there
-        if (texel.cutOut) return trace(spawnRay(si, ray.d), level, weight, stack, true, blurred, ctx);
+        if (texel.cutOut)
+            return trace(spawnRay(si, ray.d), level, weight, stack, true, blurred, ctx);
         // A texel's colour has its textures in
         return shadeWith(ray, si, texel.material, texel.normal, texel.material.color, level, weight,
                          stack, blurred, ctx);
     }
-    return shadeWith(ray, si, stored, si.ns, surfaceColour(stored, si), level, weight, stack, blurred, ctx);
+    return shadeWith(ray, si, stored, si.ns, surfaceColour(stored, si), level, weight, stack,
+                     blurred, ctx);
 }
 
-Rgb WhittedIntegrator::shadeWith(const Ray &ray, const SurfaceInteraction &si, const ir::Material &m,
-                                 const Vec3 &ns, const Rgb &c, int level, double weight,
-                                 const InteriorStack &stack, bool blurred, TraceContext &ctx) const {
+Rgb WhittedIntegrator::shadeWith(const Ray &ray, const SurfaceInteraction &si,
+                                 const ir::Material &m, const Vec3 &ns, const Rgb &c, int level,
+                                 double weight, const InteriorStack &stack, bool blurred,
+                                 TraceContext &ctx) const {
     const ir::Finish &f = m.finish;
     const ir::Settings &settings = scene_.settings();
     // Shading normal (a smooth mesh's interpolated one, or the normal map's) faces the ray
@@ -307,7 +311,8 @@ double WhittedIntegrator::lightAttenuation(size_t index, const Vec3 &L, double d
         double cosTheta = dot(-L, k.axis);
         if (!(cosTheta > 0)) return 0;
         att = std::pow(cosTheta, light.spotTightness);
-        if (k.cosRadius > 0 && cosTheta < k.cosRadius) att *= cubicSpline(k.cosFalloff, k.cosRadius, cosTheta);
+        if (k.cosRadius > 0 && cosTheta < k.cosRadius)
+            att *= cubicSpline(k.cosFalloff, k.cosRadius, cosTheta);
     }
     return att * lightFade(light, dist);
 }

@@ -44,8 +44,8 @@ class WhittedIntegrator {
     /// surface with no change of ior) do not count a level.
     /// `blurred` is set below a glossy or frosted split: later blurred surfaces of the path
     /// send one distributed ray each instead of a fan.
-    Rgb trace(const Ray &ray, int level, double weight, const InteriorStack &stack,
-              bool continued, bool blurred, TraceContext &ctx) const;
+    Rgb trace(const Ray &ray, int level, double weight, const InteriorStack &stack, bool continued,
+              bool blurred, TraceContext &ctx) const;
     Rgb shade(const Ray &ray, const SurfaceInteraction &si, int level, double weight,
               const InteriorStack &stack, bool blurred, TraceContext &ctx) const;
     /// Mean of `traceOne(direction)` over a fan of directions spread by `lobe` about `centre`
@@ -57,17 +57,17 @@ class WhittedIntegrator {
     /// Ambient, emission and the sum over lights of diffuse, phong and specular; `c` is the
     /// pigment colour at the hit.
     Rgb localColour(const Ray &ray, const SurfaceInteraction &si, const Vec3 &N,
-                    const ir::Material &m, const Rgb &c, const InteriorStack &stack,
-                    bool blurred, TraceContext &ctx) const;
+                    const ir::Material &m, const Rgb &c, const InteriorStack &stack, bool blurred,
+                    TraceContext &ctx) const;
     /// Pigment colour at a hit: the material's colour times its texture, if any.
     Rgb surfaceColour(const ir::Material &m, const SurfaceInteraction &si) const;
     /// Spotlight cone and fade of light `index` seen in direction L at shadow distance dist.
     double lightAttenuation(size_t index, const Vec3 &L, double dist) const;
     /// shade() with the material, shading normal and colour at the hit resolved (a glTF
     /// material's at its texel).
-    Rgb shadeWith(const Ray &ray, const SurfaceInteraction &si, const ir::Material &m, const Vec3 &ns,
-                  const Rgb &c, int level, double weight, const InteriorStack &stack, bool blurred,
-                  TraceContext &ctx) const;
+    Rgb shadeWith(const Ray &ray, const SurfaceInteraction &si, const ir::Material &m,
+                  const Vec3 &ns, const Rgb &c, int level, double weight,
+                  const InteriorStack &stack, bool blurred, TraceContext &ctx) const;
     /// Filtered light reaching si from the direction L over distance dist (1 = unoccluded),
     /// POV-Ray section 1.4. `stack` is the interior list of the ray that hit si.
     Rgb shadowFilter(const SurfaceInteraction &si, const Vec3 &L, double dist,

@@ -64,15 +64,18 @@ int openChecked(const std::string &path, uint64_t maxBytes, uint64_t &size) {
     FdCloser guard{fd};
     struct stat st {};
     if (::fstat(fd, &st) != 0)
-        throw InputFileError(Reason::Unreadable, "can't read " + name + ": " + std::strerror(errno));
+        throw InputFileError(Reason::Unreadable,
+                             "can't read " + name + ": " + std::strerror(errno));
     if (!S_ISREG(st.st_mode))
-        throw InputFileError(Reason::NotRegular, "can't read " + name + ": not a regular file (" +
-                             (S_ISDIR(st.st_mode) ? "a directory" : "a FIFO, device or socket") +
-                             ")");
+        throw InputFileError(
+            Reason::NotRegular,
+            "can't read " + name + ": not a regular file (" +
+                (S_ISDIR(st.st_mode) ? "a directory" : "a FIFO, device or socket") + ")");
     size = static_cast<uint64_t>(st.st_size);
     if (size > maxBytes)
         throw InputFileError(Reason::TooLarge, name + " is too large: " + std::to_string(size) +
-                             " bytes, more than the limit of " + std::to_string(maxBytes));
+                                                   " bytes, more than the limit of " +
+                                                   std::to_string(maxBytes));
     noteInput(st);
     guard.fd = -1;
     return fd;
@@ -178,11 +181,13 @@ void requireRegularFile(const std::string &path) {
     if (path.empty()) throw std::invalid_argument("an empty file name was given");
     struct stat st {};
     if (::stat(path.c_str(), &st) != 0)
-        throw std::runtime_error(path + ": " + (errno == ENOENT ? "no such file" : std::strerror(errno)));
+        throw std::runtime_error(path + ": " +
+                                 (errno == ENOENT ? "no such file" : std::strerror(errno)));
     if (S_ISDIR(st.st_mode)) throw std::runtime_error(path + ": is a folder, not a file");
     if (!S_ISREG(st.st_mode))
-        throw std::runtime_error(path + ": is not a regular file (a FIFO, device or socket); "
-                                        "scadray reads only regular files");
+        throw std::runtime_error(path +
+                                 ": is not a regular file (a FIFO, device or socket); "
+                                 "scadray reads only regular files");
     // No output of this run may replace it
     noteInputFile(path);
 }

@@ -49,13 +49,14 @@ bool isInsideFolder(const std::filesystem::path &inner, const std::filesystem::p
 /// (NotRegular for one that leads out).
 std::string readInputFileIn(const std::string &folder, const std::string &name, uint64_t maxBytes);
 
-/// Remembers `path` (its device, inode and change time; nothing when it cannot be examined) as a file this
-/// run reads, so that no output of the same run replaces it. readInputFile and checkInputFile
-/// do it themselves; readers that open files another way call it. Thread-safe.
+/// Remembers `path` (its device, inode and change time; nothing when it cannot be examined) as a
+/// file this run reads, so that no output of the same run replaces it. readInputFile and
+/// checkInputFile do it themselves; readers that open files another way call it. Thread-safe.
 void noteInputFile(const std::string &path);
 
 /// Throws std::runtime_error when `target` is (by device, inode and change time, so any other
-/// name or link to it counts too) a file this run has read as input: an output never replaces an input
+/// name or link to it counts too) a file this run has read as input: an output never replaces an
+/// input
 /// (`compare a.png b.png --heat-map a.png`, `check -o` into a model's own folder).
 void refuseOverwritingInput(const std::string &target);
 

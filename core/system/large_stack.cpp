@@ -11,7 +11,7 @@ StackThread::StackThread(size_t stackBytes, std::function<void()> fn)
     pthread_attr_t attr;
     if (pthread_attr_init(&attr) == 0) {
         started = pthread_attr_setstacksize(&attr, stackBytes) == 0 &&
-                   pthread_create(&thread_, &attr, &StackThread::run, task_.get()) == 0;
+                  pthread_create(&thread_, &attr, &StackThread::run, task_.get()) == 0;
         pthread_attr_destroy(&attr);
     }
     // Without the large stack, a thread with the default one; without any thread, an error as

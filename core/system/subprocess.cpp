@@ -97,11 +97,13 @@ ProcessResult runProcess(const std::vector<std::string> &args, const ProcessOpti
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
-    res.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    res.wallSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     res.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     if (!opts.logFile.empty()) {
         std::string logPath = opts.logFile;
-        if (!opts.workingDir.empty() && logPath.front() != '/') logPath = opts.workingDir + "/" + logPath;
+        if (!opts.workingDir.empty() && logPath.front() != '/')
+            logPath = opts.workingDir + "/" + logPath;
         std::ifstream in(logPath);
         std::stringstream ss;
         ss << in.rdbuf();

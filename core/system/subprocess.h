@@ -10,10 +10,10 @@
 namespace rt {
 
 struct ProcessResult {
-    int exitCode = -1;        ///< the program's exit status; -1 when a signal ended it
-    bool timedOut = false;    ///< stopped (with its whole process group) at the time limit
-    double wallSeconds = 0;   ///< from start to exit, the program's start-up included
-    std::string log;          ///< what it wrote to stdout and stderr
+    int exitCode = -1;       ///< the program's exit status; -1 when a signal ended it
+    bool timedOut = false;   ///< stopped (with its whole process group) at the time limit
+    double wallSeconds = 0;  ///< from start to exit, the program's start-up included
+    std::string log;         ///< what it wrote to stdout and stderr
 };
 
 struct ProcessOptions {

@@ -91,8 +91,9 @@ TempFile::TempFile(const std::string &target, const std::string &suffix) : targe
     newFileMode();  // read the umask before any temporary exists
     int fd = ::mkstemps(buf.data(), static_cast<int>(suffix.size()));
     if (fd < 0)
-        throw std::runtime_error("cannot write '" + target + "': cannot create a temporary file in '" +
-                                 dir.string() + "': " + std::strerror(errno));
+        throw std::runtime_error("cannot write '" + target +
+                                 "': cannot create a temporary file in '" + dir.string() +
+                                 "': " + std::strerror(errno));
     path_ = buf.data();
     slot_ = claimSlot(path_);
     ::fchmod(fd, newFileMode());

@@ -63,8 +63,8 @@ class ChildGroupGuard {
 };
 
 /// Installs handlers for SIGINT, SIGTERM and SIGHUP (those not ignored) that unlink every live
-/// TempFile, kill every guarded child process group, and then end the program with the signal's default action, so the exit status
-/// still says which signal ended it. Call once, early in main().
+/// TempFile, kill every guarded child process group, and then end the program with the signal's
+/// default action, so the exit status still says which signal ended it. Call once, early in main().
 void installInterruptCleanup();
 
 /// The most temporary files (and child process groups) alive at once that an interrupt

@@ -24,9 +24,9 @@ std::string rgb(const Rgb &c) {
 std::string matrix(const Mat4 &m) {
     const auto &a = m.m;
     return "matrix <" + num(a[0][0]) + ", " + num(a[1][0]) + ", " + num(a[2][0]) + ",  " +
-           num(a[0][1]) + ", " + num(a[1][1]) + ", " + num(a[2][1]) + ",  " + num(a[0][2]) +
-           ", " + num(a[1][2]) + ", " + num(a[2][2]) + ",  " + num(a[0][3]) + ", " +
-           num(a[1][3]) + ", " + num(a[2][3]) + ">";
+           num(a[0][1]) + ", " + num(a[1][1]) + ", " + num(a[2][1]) + ",  " + num(a[0][2]) + ", " +
+           num(a[1][2]) + ", " + num(a[2][2]) + ",  " + num(a[0][3]) + ", " + num(a[1][3]) + ", " +
+           num(a[2][3]) + ">";
 }
 
 std::string transform(const Mat4 &m) {
@@ -101,11 +101,15 @@ std::string sdlDirectiveProblem(std::string_view sdl) {
         char next = i + 1 < sdl.size() ? sdl[i + 1] : '\0';
         if (c == '\n') ++line;
         if (commentDepth > 0) {  // POV-Ray's block comments nest
-            if (c == '/' && next == '*') ++commentDepth, ++i;
-            else if (c == '*' && next == '/') --commentDepth, ++i;
+            if (c == '/' && next == '*')
+                ++commentDepth, ++i;
+            else if (c == '*' && next == '/')
+                --commentDepth, ++i;
         } else if (inString) {
-            if (c == '\\' && next != '\0' && next != '\n') ++i;
-            else if (c == '"') inString = false;
+            if (c == '\\' && next != '\0' && next != '\n')
+                ++i;
+            else if (c == '"')
+                inString = false;
             else if (c == '\n' || c == '\r')
                 return "line " + std::to_string(line) + ": a string runs past the end of its line";
         } else if (c == '"') {
@@ -122,7 +126,8 @@ std::string sdlDirectiveProblem(std::string_view sdl) {
             std::string_view word = sdl.substr(j, k - j);
             if (word != "version" && word != "declare")
                 return "line " + std::to_string(line) + ": directive #" +
-                       commentText(word.substr(0, 32)) + " (only #version and #declare are allowed)";
+                       commentText(word.substr(0, 32)) +
+                       " (only #version and #declare are allowed)";
             i = k - 1;
         }
     }

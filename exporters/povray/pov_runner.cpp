@@ -39,10 +39,10 @@ constexpr const char *kRestrictedConf =
 /// The .ini options scadray writes (pov_writer.cpp writeIni); any other could make POV-Ray read
 /// or run something (Include_Header, Pre_Scene_Command, ...).
 bool knownIniKey(const std::string &key) {
-    static const char *kKeys[] = {"Input_File_Name", "Output_File_Name", "Width",           "Height",
-                                  "Antialias",       "Output_File_Type", "Bits_Per_Color",  "File_Gamma",
-                                  "Display",         "Verbose",          "Render_Console",  "Pause_When_Done",
-                                  "Work_Threads"};
+    static const char *kKeys[] = {
+        "Input_File_Name",  "Output_File_Name", "Width",       "Height",  "Antialias",
+        "Output_File_Type", "Bits_Per_Color",   "File_Gamma",  "Display", "Verbose",
+        "Render_Console",   "Pause_When_Done",  "Work_Threads"};
     for (const char *k : kKeys)
         if (key == k) return true;
     return false;
@@ -57,20 +57,23 @@ void vetExportedScene(const fs::path &dir, const std::string &iniFile) {
         if (line.empty() || line[0] == ';') continue;
         size_t eq = line.find('=');
         std::string key = line.substr(0, eq);
-        if (eq == std::string::npos || !knownIniKey(key) || !iniSafe(iniFileName(line.substr(eq + 1))))
-            throw std::runtime_error("refusing to run POV-Ray: " + iniFile + " has an option scadray does not write: " +
-                                     commentText(line.substr(0, 80)));
+        if (eq == std::string::npos || !knownIniKey(key) ||
+            !iniSafe(iniFileName(line.substr(eq + 1))))
+            throw std::runtime_error(
+                "refusing to run POV-Ray: " + iniFile +
+                " has an option scadray does not write: " + commentText(line.substr(0, 80)));
         if (key == "Input_File_Name") pov = iniFileName(line.substr(eq + 1));
     }
-    if (pov.empty()) throw std::runtime_error("refusing to run POV-Ray: " + iniFile + " names no scene");
+    if (pov.empty())
+        throw std::runtime_error("refusing to run POV-Ray: " + iniFile + " names no scene");
     std::ifstream in(dir / pov, std::ios::binary);
     std::ostringstream sdl;
     sdl << in.rdbuf();
     if (!in) throw std::runtime_error("cannot read " + (dir / pov).string());
     std::string problem = sdlDirectiveProblem(sdl.str());
     if (!problem.empty())
-        throw std::runtime_error("refusing to run POV-Ray on " + pov + ", which is not what scadray exports: " +
-                                 problem);
+        throw std::runtime_error("refusing to run POV-Ray on " + pov +
+                                 ", which is not what scadray exports: " + problem);
 }
 
 }  // namespace
@@ -99,12 +102,14 @@ PovRunResult runPovRay(const std::string &dir, const std::string &iniFile, int t
     res.wallSeconds = run.wallSeconds;
     res.log = run.log;
     if (run.timedOut)
-        throw std::runtime_error("povray ran past " + std::to_string(timeoutSeconds) + " s and was stopped");
+        throw std::runtime_error("povray ran past " + std::to_string(timeoutSeconds) +
+                                 " s and was stopped");
     if (run.exitCode != 0)
         throw std::runtime_error("povray failed (exit " + std::to_string(run.exitCode) +
                                  "); its last lines:\n" + lastLines(res.log, 12));
     std::istringstream lines(res.log);
-    for (std::string line; std::getline(lines, line);) res.warnings += line.find("Warning") != std::string::npos;
+    for (std::string line; std::getline(lines, line);)
+        res.warnings += line.find("Warning") != std::string::npos;
     res.parseSeconds = parseStatisticsSeconds(res.log, "Parse");
     res.traceSeconds = parseStatisticsSeconds(res.log, "Trace");
     return res;

@@ -21,8 +21,8 @@ bool povrayAvailable();
 
 /// Runs `povray <iniFile>` with `dir` as working folder (so relative names in the .ini resolve
 /// there), refusing (std::runtime_error) an .ini with options scadray does not write or a scene
-/// with directives it does not write (sdlDirectiveProblem). Throws std::runtime_error with the tail of POV-Ray's output when it fails, is not
-/// installed, or runs past `timeoutSeconds`.
+/// with directives it does not write (sdlDirectiveProblem). Throws std::runtime_error with the tail
+/// of POV-Ray's output when it fails, is not installed, or runs past `timeoutSeconds`.
 PovRunResult runPovRay(const std::string &dir, const std::string &iniFile, int threads,
                        int timeoutSeconds);
 

@@ -98,9 +98,9 @@ std::string imageSpec(const std::string &kind, const std::string &file, bool nea
 
 }  // namespace
 
-TexturePigment texturePigment(const ir::Texture &tex, const ir::TextureRef &ref,
-                              const Rgb &factor, const TextureAlpha &alpha, const UvRange &range,
-                              double filter, double transmit, const std::string &fileStem) {
+TexturePigment texturePigment(const ir::Texture &tex, const ir::TextureRef &ref, const Rgb &factor,
+                              const TextureAlpha &alpha, const UvRange &range, double filter,
+                              double transmit, const std::string &fileStem) {
     TexturePigment out;
     UvRange r = range;
     if (r.empty) r.add(0, 0), r.add(1, 1);
@@ -146,8 +146,9 @@ TexturePigment texturePigment(const ir::Texture &tex, const ir::TextureRef &ref,
         matrixLine = "        matrix <" + num(ia) + ", " + num(ic) + ", 0, " + num(ib) + ", " +
                      num(id) + ", 0, 0, 0, 1, " + num(tx) + ", " + num(ty) + ", 0>\n";
     } else if (!identity) {
-        note += "    // scadray: the texture transform collapses the texture to a line or a "
-                "point, which a POV-Ray matrix cannot express; written untransformed\n";
+        note +=
+            "    // scadray: the texture transform collapses the texture to a line or a "
+            "point, which a POV-Ray matrix cannot express; written untransformed\n";
     }
     for (const AxisBake *axis : {&ax, &ay})
         if (axis->limited)
@@ -161,8 +162,8 @@ TexturePigment texturePigment(const ir::Texture &tex, const ir::TextureRef &ref,
     os << note << "    pigment {\n";
     if (alpha.mode == TextureAlpha::Mode::Mask) {
         // The texels that are there; the cut-out ones are body()'s texture_map entry
-        os << "        " << map << " filter all " << num(filter) << " transmit all " << num(transmit)
-           << " }\n    }\n";
+        os << "        " << map << " filter all " << num(filter) << " transmit all "
+           << num(transmit) << " }\n    }\n";
         out.sdl = os.str();
         out.cutOutPattern = "    " + imageSpec("image_pattern", alphaFile, tex.nearest) + " }\n";
         out.matrix = matrixLine;
@@ -170,8 +171,8 @@ TexturePigment texturePigment(const ir::Texture &tex, const ir::TextureRef &ref,
         return out;
     }
     if (!withAlpha) {
-        os << "        " << map << " filter all " << num(filter) << " transmit all " << num(transmit)
-           << " }\n";
+        os << "        " << map << " filter all " << num(filter) << " transmit all "
+           << num(transmit) << " }\n";
     } else {
         os << "        " << imageSpec("image_pattern", alphaFile, tex.nearest) << " }\n"
            << "        pigment_map {\n"

@@ -56,8 +56,8 @@ struct TexturePigment {
 /// The pigment for `tex` read through `ref` (its RGB multiplied by `factor`), with `filter`
 /// and `transmit` for every texel on top of what the alpha says. Image files are named
 /// fileStem + ".png" (+ "_alpha.png").
-TexturePigment texturePigment(const ir::Texture &tex, const ir::TextureRef &ref,
-                              const Rgb &factor, const TextureAlpha &alpha, const UvRange &range,
-                              double filter, double transmit, const std::string &fileStem);
+TexturePigment texturePigment(const ir::Texture &tex, const ir::TextureRef &ref, const Rgb &factor,
+                              const TextureAlpha &alpha, const UvRange &range, double filter,
+                              double transmit, const std::string &fileStem);
 
 }  // namespace rt::pov

@@ -14,11 +14,11 @@
 #include <stdexcept>
 
 #include "core/image/image_io.h"
-#include "core/meshing/facets.h"
-#include "core/meshing/revolved_mesh.h"
 #include "core/materials/pbr_material.h"
 #include "core/materials/texture_sampler.h"
 #include "core/math/degree_trig.h"
+#include "core/meshing/facets.h"
+#include "core/meshing/revolved_mesh.h"
 #include "core/system/temp_file.h"
 #include "exporters/povray/pov_format.h"
 #include "exporters/povray/pov_texture.h"
@@ -177,7 +177,8 @@ class Writer {
             if (const auto *m = std::get_if<ir::MeshPrim>(&n.shape)) {
                 usedMeshes_.insert(m->mesh);
                 meshMaterials_.insert({m->mesh, n.material});
-                if (vertexColoured(m->mesh, n.material)) colouredMeshes_.insert({m->mesh, n.material});
+                if (vertexColoured(m->mesh, n.material))
+                    colouredMeshes_.insert({m->mesh, n.material});
             }
         }
         for (const auto &c : n.children) collectUsed(*c);
@@ -188,7 +189,8 @@ class Writer {
             << "// The scene is right-handed with +Z up, as OpenSCAD's. Geometry is written in\n"
             << "// its own coordinates; the camera's negative `right` vector makes POV-Ray's\n"
             << "// look_at construction right-handed too.\n"
-            << "// Render: povray " << "<this file> +W640 +H480 -A +FN16 File_Gamma=1.0 -D -V -GR\n"
+            << "// Render: povray "
+            << "<this file> +W640 +H480 -A +FN16 File_Gamma=1.0 -D -V -GR\n"
             << "// (or the .ini written beside it).\n"
             << "#version 3.7;\n\n";
     }
@@ -246,9 +248,10 @@ class Writer {
         if (c.fovAxis == ir::FovAxis::Vertical)
             angle = "degrees(2 * atan(tan(radians(" + num(c.fov) +
                     " / 2)) * image_width / image_height))";
-        os_ << comment(c.loc, c.source == ir::CameraSource::Automatic
-                                  ? "camera: automatic, framing the model from OpenSCAD's default view"
-                                  : "camera")
+        os_ << comment(c.loc,
+                       c.source == ir::CameraSource::Automatic
+                           ? "camera: automatic, framing the model from OpenSCAD's default view"
+                           : "camera")
             << "camera {\n"
             << "    perspective\n"
             << "    location " << vec(c.location) << "\n"
@@ -292,14 +295,17 @@ class Writer {
     }
 
     void materials() {
-        os_ << "// Materials: pigment explicit; finish terms that have an effect (ambient and diffuse\n"
+        os_ << "// Materials: pigment explicit; finish terms that have an effect (ambient and "
+               "diffuse\n"
                "// always: POV-Ray's defaults differ)\n";
         for (int i : used_) {
             const ir::Material &m = scene_.materials[i];
             const ir::Finish &f = m.finish;
             os_ << comment(m.loc, "") << blurComment(f) << "#declare " << materialName(i)
                 << " = texture {\n";
-            const ir::Texture *tex = m.baseColorTexture.valid() ? scene_.textures[m.baseColorTexture.texture].get() : nullptr;
+            const ir::Texture *tex = m.baseColorTexture.valid()
+                                         ? scene_.textures[m.baseColorTexture.texture].get()
+                                         : nullptr;
             if (tex) {
                 os_ << "    uv_mapping\n" << texturedPigment(i, m, *tex).body(finish(f));
             } else {
@@ -323,19 +329,24 @@ class Writer {
             << "        ambient " << num(f.ambient) << "\n";
         if (!f.emission.isBlack()) os_ << "        emission " << rgb(f.emission) << "\n";
         os_ << "        diffuse " << num(f.diffuse) << "\n";
-        if (f.diffuse != 0 && f.brilliance != 1) os_ << "        brilliance " << num(f.brilliance) << "\n";
+        if (f.diffuse != 0 && f.brilliance != 1)
+            os_ << "        brilliance " << num(f.brilliance) << "\n";
         if (f.phong != 0) os_ << "        phong " << num(f.phong) << "\n";
-        if (f.phong != 0 && f.phongSize != 40) os_ << "        phong_size " << num(f.phongSize) << "\n";
+        if (f.phong != 0 && f.phongSize != 40)
+            os_ << "        phong_size " << num(f.phongSize) << "\n";
         if (f.specular != 0) os_ << "        specular " << num(f.specular) << "\n";
-        if (f.specular != 0 && f.roughness != 0.05) os_ << "        roughness " << num(f.roughness) << "\n";
+        if (f.specular != 0 && f.roughness != 0.05)
+            os_ << "        roughness " << num(f.roughness) << "\n";
         if ((f.phong != 0 || f.specular != 0) && f.metallic != 0)
             os_ << "        metallic " << num(f.metallic) << "\n";
         if (f.hasReflection()) {
             os_ << "        reflection {\n"
                 << "            " << rgb(f.reflectionMin) << ", " << rgb(f.reflectionMax) << "\n";
             if (f.fresnel) os_ << "            fresnel on\n";
-            if (f.reflectionFalloff != 1) os_ << "            falloff " << num(f.reflectionFalloff) << "\n";
-            if (f.reflectionExponent != 1) os_ << "            exponent " << num(f.reflectionExponent) << "\n";
+            if (f.reflectionFalloff != 1)
+                os_ << "            falloff " << num(f.reflectionFalloff) << "\n";
+            if (f.reflectionExponent != 1)
+                os_ << "            exponent " << num(f.reflectionExponent) << "\n";
             os_ << "        }\n";
         }
         if (f.conserveEnergy) os_ << "        conserve_energy\n";
@@ -379,9 +390,14 @@ class Writer {
         if (!m.texel.pbr) return a;
         const PbrMaterial &p = *m.texel.pbr;
         switch (p.alphaMode) {
-            case PbrMaterial::AlphaMode::Opaque: return a;
-            case PbrMaterial::AlphaMode::Mask: a.mode = TextureAlpha::Mode::Mask; break;
-            case PbrMaterial::AlphaMode::Blend: a.mode = TextureAlpha::Mode::Blend; break;
+            case PbrMaterial::AlphaMode::Opaque:
+                return a;
+            case PbrMaterial::AlphaMode::Mask:
+                a.mode = TextureAlpha::Mode::Mask;
+                break;
+            case PbrMaterial::AlphaMode::Blend:
+                a.mode = TextureAlpha::Mode::Blend;
+                break;
         }
         a.factor = p.alpha;
         a.cutoff = p.alphaCutoff;
@@ -423,8 +439,9 @@ class Writer {
             if (scene_.meshes[mesh].get() == &m && ref.valid()) sets.insert(ref.texCoord);
         }
         if (sets.size() > 1)
-            *note = "    // scadray: textures on this mesh read both TEXCOORD_0 and TEXCOORD_1; "
-                    "mesh2 holds one set: TEXCOORD_0 written\n";
+            *note =
+                "    // scadray: textures on this mesh read both TEXCOORD_0 and TEXCOORD_1; "
+                "mesh2 holds one set: TEXCOORD_0 written\n";
         return sets.size() == 1 && *sets.begin() == 1 && !m.uvs1.empty() ? m.uvs1 : m.uvs;
     }
 
@@ -459,8 +476,9 @@ class Writer {
             const ir::Mesh &m = *scene_.meshes[i];
             std::string note;
             if (!m.colors.empty())
-                note = "// scadray: the vertex colours of this mesh are left out where a material "
-                       "with a base colour texture shows it (POV-Ray's mesh2 takes either)\n";
+                note =
+                    "// scadray: the vertex colours of this mesh are left out where a material "
+                    "with a base colour texture shows it (POV-Ray's mesh2 takes either)\n";
             mesh2(m, "Mesh_" + std::to_string(i), nullptr, note);
         }
         for (const auto &[i, mat] : colouredMeshes_)
@@ -491,7 +509,8 @@ class Writer {
         const auto &uvs = exportedUvs(m, &uvNote);
         if (!uvs.empty()) {
             os_ << uvNote << "    uv_vectors {\n        " << uvs.size();
-            for (const auto &uv : uvs) os_ << ",\n        <" << num(uv[0]) << ", " << num(1.0 - double(uv[1])) << ">";
+            for (const auto &uv : uvs)
+                os_ << ",\n        <" << num(uv[0]) << ", " << num(1.0 - double(uv[1])) << ">";
             os_ << "\n    }\n";
         }
         // Vertex colours: one texture per distinct RGB (alpha is not used, as in the renderer)
@@ -521,10 +540,12 @@ class Writer {
         for (const auto &t : faces) {
             os_ << ",\n        <" << t[0] << ", " << t[1] << ", " << t[2] << ">";
             if (coloured)
-                os_ << ", " << textureOf[t[0]] << ", " << textureOf[t[1]] << ", " << textureOf[t[2]];
+                os_ << ", " << textureOf[t[0]] << ", " << textureOf[t[1]] << ", "
+                    << textureOf[t[2]];
         }
         os_ << "\n    }\n";
-        if (ir::analyzeMesh(m).closed()) os_ << "    inside_vector <0.2718281828, 0.5772156649, 0.7071067811>\n";
+        if (ir::analyzeMesh(m).closed())
+            os_ << "    inside_vector <0.2718281828, 0.5772156649, 0.7071067811>\n";
         os_ << "}\n";
     }
 
@@ -555,7 +576,8 @@ class Writer {
             case ir::NodeKind::Transform:
                 for (const auto &c : n.children) topLevel(*c, m * n.matrix);
                 return;
-            default: break;
+            default:
+                break;
         }
         // One solid, with the interior of its first primitive
         const ir::Node *first = firstPrimitive(n);
@@ -588,7 +610,8 @@ class Writer {
         // A transform of several children is a union of them, placed by its matrix
         if (cur->kind == ir::NodeKind::Transform) cm = cm * cur->matrix;
         std::string tail;
-        if (!objectInterior.empty()) tail += "\n" + std::string(4 * (indent + 1), ' ') + objectInterior;
+        if (!objectInterior.empty())
+            tail += "\n" + std::string(4 * (indent + 1), ' ') + objectInterior;
         if (!cm.isIdentity()) tail += "\n" + std::string(4 * (indent + 1), ' ') + transform(cm);
         if (cur->kind == ir::NodeKind::Primitive) {
             std::string shape;
@@ -605,30 +628,35 @@ class Writer {
                 shape = "intersection {";
                 std::string pad(4 * (indent + 1), ' ');
                 for (const auto &pl : meshing::polytopePlanes(*p))
-                    shape += "\n" + pad + "plane { " + vec(pl.normal) + ", " + num(pl.offset) + " }";
+                    shape +=
+                        "\n" + pad + "plane { " + vec(pl.normal) + ", " + num(pl.offset) + " }";
                 shape += "\n" + pad;
-            }
-            else if (const auto *pr = std::get_if<ir::PrismPrim>(&cur->shape))
+            } else if (const auto *pr = std::get_if<ir::PrismPrim>(&cur->shape))
                 shape = prismShape(*pr);
             else if (std::holds_alternative<ir::TorusPrim>(cur->shape) ||
                      std::holds_alternative<ir::LathePrim>(cur->shape)) {
                 shape = revolvedShape(cur->shape, std::string(4 * (indent + 1), ' '));
-            }
-            else {
+            } else {
                 const auto &c = std::get<ir::CylinderPrim>(cur->shape);
-                shape = "cone { <0, 0, " + num(c.z0) + ">, " + num(c.r1) + ", <0, 0, " +
-                        num(c.z1) + ">, " + num(c.r2);
+                shape = "cone { <0, 0, " + num(c.z0) + ">, " + num(c.r1) + ", <0, 0, " + num(c.z1) +
+                        ">, " + num(c.r2);
             }
             std::string w = where(cur->loc);
-            line(indent, shape + "  texture { " + materialName(cur->material) + " }" + tail +
-                             " }" + (w.empty() ? "" : "  // " + commentText(w)));
+            line(indent, shape + "  texture { " + materialName(cur->material) + " }" + tail + " }" +
+                             (w.empty() ? "" : "  // " + commentText(w)));
             return;
         }
         std::string op;
         switch (cur->kind) {
-            case ir::NodeKind::Intersection: op = "intersection"; break;
-            case ir::NodeKind::Difference: op = "difference"; break;
-            default: op = merge ? "merge" : "union"; break;
+            case ir::NodeKind::Intersection:
+                op = "intersection";
+                break;
+            case ir::NodeKind::Difference:
+                op = "difference";
+                break;
+            default:
+                op = merge ? "merge" : "union";
+                break;
         }
         std::string w = where(cur->loc);
         line(indent, op + " {" + (w.empty() ? "" : "  // " + commentText(w)));
@@ -685,9 +713,10 @@ std::string writeIni(const IniOptions &o) {
     // A newline in a file name would start a new option (Pre_Scene_Command=... runs a shell)
     for (const std::string *name : {&o.povFile, &o.outputFile})
         if (!iniSafe(*name))
-            throw std::runtime_error("the file name '" + commentText(*name) +
-                                     "' has a control character, ';' or '\"', which cannot be written "
-                                     "into a POV-Ray .ini file; choose another name");
+            throw std::runtime_error(
+                "the file name '" + commentText(*name) +
+                "' has a control character, ';' or '\"', which cannot be written "
+                "into a POV-Ray .ini file; choose another name");
     std::ostringstream os;
     os << "; scadray: render " << o.povFile << " headless, quietly and deterministically\n"
        << "Input_File_Name=" << iniValue(o.povFile) << "\n"

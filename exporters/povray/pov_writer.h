@@ -11,8 +11,8 @@
 namespace rt::pov {
 
 struct IniOptions {
-    std::string povFile;      ///< scene file name, relative to the .ini's folder
-    std::string outputFile;   ///< image file name, relative to the .ini's folder
+    std::string povFile;     ///< scene file name, relative to the .ini's folder
+    std::string outputFile;  ///< image file name, relative to the .ini's folder
     int width = 640, height = 480;
     /// Render with k x k samples per pixel by rendering k times larger (box-downsample after).
     int supersample = 1;

@@ -30,38 +30,58 @@ constexpr size_t kMinZeroInitialisedLimit = size_t(1) << 16;
 size_t componentSize(int componentType) {
     switch (componentType) {
         case TINYGLTF_COMPONENT_TYPE_BYTE:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return 1;
         case TINYGLTF_COMPONENT_TYPE_SHORT:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            return 2;
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-        case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
-        default: return 0;
+        case TINYGLTF_COMPONENT_TYPE_FLOAT:
+            return 4;
+        default:
+            return 0;
     }
 }
 
 int componentCount(int type) {
     switch (type) {
-        case TINYGLTF_TYPE_SCALAR: return 1;
-        case TINYGLTF_TYPE_VEC2: return 2;
-        case TINYGLTF_TYPE_VEC3: return 3;
-        case TINYGLTF_TYPE_VEC4: return 4;
-        case TINYGLTF_TYPE_MAT2: return 4;
-        case TINYGLTF_TYPE_MAT3: return 9;
-        case TINYGLTF_TYPE_MAT4: return 16;
-        default: return 0;
+        case TINYGLTF_TYPE_SCALAR:
+            return 1;
+        case TINYGLTF_TYPE_VEC2:
+            return 2;
+        case TINYGLTF_TYPE_VEC3:
+            return 3;
+        case TINYGLTF_TYPE_VEC4:
+            return 4;
+        case TINYGLTF_TYPE_MAT2:
+            return 4;
+        case TINYGLTF_TYPE_MAT3:
+            return 9;
+        case TINYGLTF_TYPE_MAT4:
+            return 16;
+        default:
+            return 0;
     }
 }
 
 const char *typeName(int type) {
     switch (type) {
-        case TINYGLTF_TYPE_SCALAR: return "SCALAR";
-        case TINYGLTF_TYPE_VEC2: return "VEC2";
-        case TINYGLTF_TYPE_VEC3: return "VEC3";
-        case TINYGLTF_TYPE_VEC4: return "VEC4";
-        case TINYGLTF_TYPE_MAT2: return "MAT2";
-        case TINYGLTF_TYPE_MAT3: return "MAT3";
-        case TINYGLTF_TYPE_MAT4: return "MAT4";
-        default: return "unknown type";
+        case TINYGLTF_TYPE_SCALAR:
+            return "SCALAR";
+        case TINYGLTF_TYPE_VEC2:
+            return "VEC2";
+        case TINYGLTF_TYPE_VEC3:
+            return "VEC3";
+        case TINYGLTF_TYPE_VEC4:
+            return "VEC4";
+        case TINYGLTF_TYPE_MAT2:
+            return "MAT2";
+        case TINYGLTF_TYPE_MAT3:
+            return "MAT3";
+        case TINYGLTF_TYPE_MAT4:
+            return "MAT4";
+        default:
+            return "unknown type";
     }
 }
 
@@ -164,7 +184,8 @@ void decode(int componentType, const unsigned char *src, size_t count, int comps
         case TINYGLTF_COMPONENT_TYPE_FLOAT:
             decodeRun<float>(src, count, comps, stride, out, convert);
             break;
-        default: break;  // rejected by readAccessor
+        default:
+            break;  // rejected by readAccessor
     }
 }
 
@@ -291,8 +312,8 @@ void checkAttributeType(const ImportContext &ctx, int index, const std::string &
     bool n = acc.normalized;
     bool isFloat = t == TINYGLTF_COMPONENT_TYPE_FLOAT;
     bool int8or16 = t == TINYGLTF_COMPONENT_TYPE_BYTE || t == TINYGLTF_COMPONENT_TYPE_SHORT;
-    bool uint8or16 = t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
-                     t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+    bool uint8or16 =
+        t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
     auto startsWith = [&](const char *prefix) { return attribute.rfind(prefix, 0) == 0; };
     bool ok = true;
     const char *allowed = "";

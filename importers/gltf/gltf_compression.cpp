@@ -69,8 +69,8 @@ uint64_t meshoptMinBytes(const std::string &mode, uint64_t count, uint64_t strid
     if (mode == "TRIANGLES") return 1 + count / 3 + 16;
     if (mode == "INDICES") return 1 + count + 4;
     uint64_t blockElements = std::min<uint64_t>((8192 / stride) & ~uint64_t(15), 256);
-    uint64_t headerBytes = (count / blockElements) * ceilDiv(blockElements, 64) +
-                           ceilDiv(count % blockElements, 64);
+    uint64_t headerBytes =
+        (count / blockElements) * ceilDiv(blockElements, 64) + ceilDiv(count % blockElements, 64);
     return 1 + stride * headerBytes + std::max<uint64_t>(stride, 32);
 }
 
@@ -124,9 +124,9 @@ std::string dracoDeclaredProblem(const unsigned char *data, size_t size) {
     uint64_t limit = kMaxDracoElementsPerByte * uint64_t(size);
     uint64_t allVertices = uint64_t(vertices) + extraVertices;
     if (faces <= limit && allVertices <= limit) return "";
-    return "declares " + std::to_string(faces) + " triangles and " +
-           std::to_string(allVertices) + " vertices in " + std::to_string(size) +
-           " bytes, more than " + std::to_string(kMaxDracoElementsPerByte) +
+    return "declares " + std::to_string(faces) + " triangles and " + std::to_string(allVertices) +
+           " vertices in " + std::to_string(size) + " bytes, more than " +
+           std::to_string(kMaxDracoElementsPerByte) +
            " of either a byte can hold (corrupt or truncated)";
 }
 
@@ -161,8 +161,7 @@ std::vector<size_t> patchJsonForTinygltf(std::vector<unsigned char> &bytes, bool
     if (meshes != doc.end() && meshes->is_array() && accessors != doc.end() &&
         accessors->is_array())
         for (nlohmann::json &mesh : *meshes) {
-            if (!mesh.is_object() || !mesh.contains("primitives") ||
-                !mesh["primitives"].is_array())
+            if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array())
                 continue;
             for (nlohmann::json &prim : mesh["primitives"]) {
                 if (!prim.is_object() || !prim.contains("extensions") ||
@@ -218,19 +217,19 @@ void decodeMeshoptViews(tinygltf::Model &model, const std::vector<size_t> &fallb
         std::string mode = stringMember(ext, "mode", "");
         std::string filter = stringMember(ext, "filter", "NONE");
         if (buffer >= model.buffers.size())
-            throw ParseError(loc, what + ".buffer: buffer " + std::to_string(buffer) +
-                                      " does not exist");
+            throw ParseError(
+                loc, what + ".buffer: buffer " + std::to_string(buffer) + " does not exist");
         const std::vector<unsigned char> &src = model.buffers[buffer].data;
         if (offset > src.size() || length > src.size() - offset)
             throw ParseError(loc, what + ": bytes " + std::to_string(offset) + "+" +
                                       std::to_string(length) + " lie outside buffer " +
-                                      std::to_string(buffer) + " of " +
-                                      std::to_string(src.size()) + " bytes");
+                                      std::to_string(buffer) + " of " + std::to_string(src.size()) +
+                                      " bytes");
         bool attributes = mode == "ATTRIBUTES", triangles = mode == "TRIANGLES",
              indices = mode == "INDICES";
         if (!attributes && !triangles && !indices)
-            throw ParseError(loc, what + ".mode: '" + mode +
-                                      "' is not ATTRIBUTES, TRIANGLES or INDICES");
+            throw ParseError(
+                loc, what + ".mode: '" + mode + "' is not ATTRIBUTES, TRIANGLES or INDICES");
         if (attributes ? (stride == 0 || stride % 4 != 0 || stride > 256)
                        : (stride != 2 && stride != 4))
             throw ParseError(loc, what + ".byteStride: " + std::to_string(stride) +
@@ -254,8 +253,10 @@ void decodeMeshoptViews(tinygltf::Model &model, const std::vector<size_t> &fallb
                  : triangles ? meshopt_decodeIndexBuffer(out.data(), count, stride, data, length)
                              : meshopt_decodeIndexSequence(out.data(), count, stride, data, length);
         if (rc != 0)
-            throw ParseError(loc, what + ": the compressed data does not decode (meshoptimizer "
-                                         "error " + std::to_string(rc) + ")");
+            throw ParseError(loc, what +
+                                      ": the compressed data does not decode (meshoptimizer "
+                                      "error " +
+                                      std::to_string(rc) + ")");
         if (filter != "NONE") {
             if (!attributes)
                 throw ParseError(loc, what + ".filter: " + filter + " needs mode ATTRIBUTES");
@@ -332,8 +333,8 @@ std::unique_ptr<DracoPrimitive> DracoPrimitive::decode(const ImportContext &ctx,
 
     const unsigned char *compressed = data.data() + bv.byteOffset;
     if (std::string problem = dracoDeclaredProblem(compressed, bv.byteLength); !problem.empty())
-        ctx.fail(what + ": its data (" +
-                 jsonPath("bufferViews", static_cast<size_t>(view)) + ") " + problem);
+        ctx.fail(what + ": its data (" + jsonPath("bufferViews", static_cast<size_t>(view)) + ") " +
+                 problem);
     draco::DecoderBuffer buffer;
     buffer.Init(reinterpret_cast<const char *>(compressed), bv.byteLength);
     draco::Decoder decoder;
@@ -378,11 +379,20 @@ FloatArray DracoPrimitive::floats(const std::string &name, int components) const
     double scale = 1;
     if (acc.normalized && !a->normalized()) {
         switch (a->data_type()) {
-            case draco::DT_UINT8: scale = 1 / 255.0; break;
-            case draco::DT_UINT16: scale = 1 / 65535.0; break;
-            case draco::DT_INT8: scale = 1 / 127.0; break;
-            case draco::DT_INT16: scale = 1 / 32767.0; break;
-            default: break;
+            case draco::DT_UINT8:
+                scale = 1 / 255.0;
+                break;
+            case draco::DT_UINT16:
+                scale = 1 / 65535.0;
+                break;
+            case draco::DT_INT8:
+                scale = 1 / 127.0;
+                break;
+            case draco::DT_INT16:
+                scale = 1 / 32767.0;
+                break;
+            default:
+                break;
         }
     }
     FloatArray out;

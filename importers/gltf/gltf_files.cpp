@@ -9,8 +9,8 @@
 #include <filesystem>
 
 #include "core/system/input_file.h"
-#include "importers/gltf/gltf_internal.h"
 #include "core/system/utf8.h"
+#include "importers/gltf/gltf_internal.h"
 
 namespace rt::gltf::detail {
 
@@ -166,8 +166,7 @@ JsonScan scanJson(std::string_view text) {
         if ((c == '-' || (c >= '0' && c <= '9')) && !scan.emptyBuffer && !stack.empty()) {
             const Container &top = stack.back();
             size_t end = i + 1;
-            while (end < text.size() && std::strchr("0123456789+-.eE", text[end]) != nullptr)
-                ++end;
+            while (end < text.size() && std::strchr("0123456789+-.eE", text[end]) != nullptr) ++end;
             if (top.object && !top.expectKey && top.key == "byteLength" && stack.size() == 3 &&
                 stack[0].object && stack[0].key == "buffers" && !stack[1].object) {
                 std::string number(text.substr(i, end - i));

@@ -22,11 +22,20 @@ namespace {
 
 /// Extensions whose meaning the importer implements; any other in extensionsRequired is refused.
 constexpr std::array<std::string_view, 14> kSupportedExtensions = {
-    "KHR_materials_emissive_strength", "KHR_texture_transform",   "KHR_materials_transmission",
-    "KHR_materials_ior",               "KHR_materials_volume",    "KHR_materials_unlit",
-    "KHR_lights_punctual",             "KHR_mesh_quantization",   "KHR_draco_mesh_compression",
-    "EXT_meshopt_compression",         "EXT_mesh_gpu_instancing", "KHR_materials_clearcoat",
-    "KHR_materials_sheen",             "KHR_materials_specular"};
+    "KHR_materials_emissive_strength",
+    "KHR_texture_transform",
+    "KHR_materials_transmission",
+    "KHR_materials_ior",
+    "KHR_materials_volume",
+    "KHR_materials_unlit",
+    "KHR_lights_punctual",
+    "KHR_mesh_quantization",
+    "KHR_draco_mesh_compression",
+    "EXT_meshopt_compression",
+    "EXT_mesh_gpu_instancing",
+    "KHR_materials_clearcoat",
+    "KHR_materials_sheen",
+    "KHR_materials_specular"};
 
 bool isSupported(const std::string &ext) {
     return std::find(kSupportedExtensions.begin(), kSupportedExtensions.end(), ext) !=
@@ -113,16 +122,19 @@ struct LoadedFile {
 };
 
 /// Line and column (from 1) of the first standalone occurrence of a number token in JSON text.
-std::optional<std::pair<int, int>> findNumberToken(std::string_view text, const std::string &token) {
+std::optional<std::pair<int, int>> findNumberToken(std::string_view text,
+                                                   const std::string &token) {
     auto numberChar = [](char c) {
         return std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == 'e' || c == 'E' ||
                c == '+' || c == '-';
     };
-    for (size_t at = text.find(token); at != std::string_view::npos; at = text.find(token, at + 1)) {
+    for (size_t at = text.find(token); at != std::string_view::npos;
+         at = text.find(token, at + 1)) {
         size_t end = at + token.size();
         if ((at > 0 && numberChar(text[at - 1])) || (end < text.size() && numberChar(text[end])))
             continue;
-        int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+        int line = 1 + static_cast<int>(
+                           std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
         size_t lineStart = text.rfind('\n', at);
         int col = static_cast<int>(lineStart == std::string_view::npos ? at + 1 : at - lineStart);
         return std::pair(line, col);
@@ -242,8 +254,8 @@ void prepareGlb(std::vector<unsigned char> &bytes, const SourceLoc &loc, Diagnos
     }
     if (length < size)
         diag.warning(loc, std::to_string(size - length) +
-                              " bytes after the binary glTF's length (" +
-                              std::to_string(length) + " bytes, at byte 8) are ignored");
+                              " bytes after the binary glTF's length (" + std::to_string(length) +
+                              " bytes, at byte 8) are ignored");
     bytes.resize(length);
     if (rest == 0 || (secondType == detail::kGlbBinChunk && secondLength != 0)) return;
     if (secondType != detail::kGlbBinChunk) {
@@ -255,7 +267,8 @@ void prepareGlb(std::vector<unsigned char> &bytes, const SourceLoc &loc, Diagnos
                                           "0123456789abcdef"[c & 15];
         }
         diag.warning(loc, "binary glTF: the chunk at byte " + std::to_string(second) +
-                              " has the unknown type '" + name + "' and is ignored, with any "
+                              " has the unknown type '" + name +
+                              "' and is ignored, with any "
                               "after it (the BIN chunk can only be the second)");
     }
     bytes.resize(second);

@@ -235,8 +235,7 @@ class Poser {
     /// Moves `mesh`'s vertices (and normals, tangents) by skin `skin` in the pose the file
     /// stores: sum of weight x (joint's global transform x inverse bind matrix), in the glTF
     /// scene's coordinates.
-    void skin(int skin, const AttributeReader &read, const std::string &path,
-              ir::Mesh &mesh);
+    void skin(int skin, const AttributeReader &read, const std::string &path, ir::Mesh &mesh);
     /// Global (scene) transform of node `index` in glTF coordinates.
     const Mat4 &global(size_t index);
 
@@ -260,7 +259,8 @@ class MaterialMapper {
     /// IR material for glTF material `index` (-1: glTF's default material), or nothing when
     /// the material hides its primitives (alphaMode MASK with alpha below the cutoff). Without
     /// the texture coordinates it reads, the base colour texture is left out.
-    std::optional<int> irMaterial(int index, const ir::Mesh &mesh, const std::string &primitivePath);
+    std::optional<int> irMaterial(int index, const ir::Mesh &mesh,
+                                  const std::string &primitivePath);
     /// The texture coordinate set (0 or 1) whose tangents a primitive with glTF material
     /// `index` needs when its file gives none (its normal map's), or -1: no normal map, or the
     /// material hides its primitives. The mesh builder generates them as it builds the mesh.

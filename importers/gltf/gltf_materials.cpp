@@ -103,10 +103,14 @@ constexpr int kMinFilterLastMip = 9987;   // LINEAR_MIPMAP_LINEAR
 
 /// The material extensions the mapping reads (pbr_material.cpp); any other KHR_materials_*
 /// extension a file uses is warned about once.
-constexpr std::array<std::string_view, 8> kMappedExtensions = {
-    "KHR_materials_emissive_strength", "KHR_materials_transmission", "KHR_materials_ior",
-    "KHR_materials_volume",            "KHR_materials_unlit",        "KHR_materials_clearcoat",
-    "KHR_materials_sheen",             "KHR_materials_specular"};
+constexpr std::array<std::string_view, 8> kMappedExtensions = {"KHR_materials_emissive_strength",
+                                                               "KHR_materials_transmission",
+                                                               "KHR_materials_ior",
+                                                               "KHR_materials_volume",
+                                                               "KHR_materials_unlit",
+                                                               "KHR_materials_clearcoat",
+                                                               "KHR_materials_sheen",
+                                                               "KHR_materials_specular"};
 
 const tinygltf::Value *extension(const tinygltf::ExtensionMap &exts, const char *name) {
     auto it = exts.find(name);
@@ -157,7 +161,8 @@ MaterialMapper::MaterialMapper(const ImportContext &ctx, ir::Scene &scene)
         if (ext.rfind("KHR_materials_", 0) == 0 &&
             std::find(kMappedExtensions.begin(), kMappedExtensions.end(), ext) ==
                 kMappedExtensions.end())
-            ctx.warning(ext + " (used by " + ctx.loc.fileName() + ") is not mapped to the classic "
+            ctx.warning(ext + " (used by " + ctx.loc.fileName() +
+                        ") is not mapped to the classic "
                         "material; materials render without it");
 }
 
@@ -422,8 +427,8 @@ ir::Material MaterialMapper::map(int index, bool &hidden) {
 
 double MaterialMapper::textureMean(const ir::TextureRef &ref, int channel) const {
     if (!ref.valid()) return 1;
-    return ir::textureMean(*scene_.textures[static_cast<size_t>(ref.texture)])
-        [static_cast<size_t>(channel)];
+    return ir::textureMean(
+        *scene_.textures[static_cast<size_t>(ref.texture)])[static_cast<size_t>(channel)];
 }
 
 const MaterialMapper::DecodedImage *MaterialMapper::decodedImage(int textureIndex,
@@ -529,7 +534,8 @@ int MaterialMapper::irTexture(int textureIndex, const std::string &what, bool sr
     tex->rgba.resize(img->pixels() * 4);
     for (size_t p = 0; p < img->pixels(); ++p) {
         for (int c = 0; c < 3; ++c)
-            tex->rgba[p * 4 + static_cast<size_t>(c)] = srgb ? img->linear(p, c) : img->channel(p, c);
+            tex->rgba[p * 4 + static_cast<size_t>(c)] =
+                srgb ? img->linear(p, c) : img->channel(p, c);
         tex->rgba[p * 4 + 3] = img->channel(p, 3);
     }
 
@@ -543,9 +549,12 @@ int MaterialMapper::irTexture(int textureIndex, const std::string &what, bool sr
         std::string samplerPath = jsonPath("samplers", static_cast<size_t>(gt.sampler));
         auto wrapMode = [&](int wrap, const char *axis) {
             switch (wrap) {
-                case kWrapRepeat: return ir::Texture::Wrap::Repeat;
-                case kWrapClamp: return ir::Texture::Wrap::ClampToEdge;
-                case kWrapMirror: return ir::Texture::Wrap::MirroredRepeat;
+                case kWrapRepeat:
+                    return ir::Texture::Wrap::Repeat;
+                case kWrapClamp:
+                    return ir::Texture::Wrap::ClampToEdge;
+                case kWrapMirror:
+                    return ir::Texture::Wrap::MirroredRepeat;
                 default:
                     ctx_.warning(samplerPath + "." + axis + ": " + std::to_string(wrap) +
                                  " is not a wrap mode; REPEAT used");
@@ -562,15 +571,17 @@ int MaterialMapper::irTexture(int textureIndex, const std::string &what, bool sr
         else if (s.magFilter != -1 && s.magFilter != kFilterLinear)
             ctx_.warning(samplerPath + ".magFilter: " + std::to_string(s.magFilter) +
                          " is not NEAREST (9728) or LINEAR (9729); LINEAR used");
-        if (s.minFilter != -1 && (s.minFilter < kFilterNearest ||
-                                  (s.minFilter > kFilterLinear && s.minFilter < kMinFilterFirstMip) ||
-                                  s.minFilter > kMinFilterLastMip))
+        if (s.minFilter != -1 &&
+            (s.minFilter < kFilterNearest ||
+             (s.minFilter > kFilterLinear && s.minFilter < kMinFilterFirstMip) ||
+             s.minFilter > kMinFilterLastMip))
             ctx_.warning(samplerPath + ".minFilter: " + std::to_string(s.minFilter) +
                          " is not a glTF minification filter; ignored");
     }
 
     // A file-name-safe name, unique in the scene (a file may be imported more than once)
-    std::string name = ctx_.baseName + "_tex" + std::to_string(textureIndex) + (srgb ? "" : "_data");
+    std::string name =
+        ctx_.baseName + "_tex" + std::to_string(textureIndex) + (srgb ? "" : "_data");
     auto taken = [&](const std::string &n) {
         return std::any_of(scene_.textures.begin(), scene_.textures.end(),
                            [&](const ir::TexturePtr &t) { return t->name == n; });

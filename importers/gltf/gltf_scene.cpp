@@ -36,14 +36,22 @@ constexpr double kLightExposure = 1 / kPi;
 
 const char *modeName(int mode) {
     switch (mode) {
-        case 0: return "POINTS";
-        case 1: return "LINES";
-        case 2: return "LINE_LOOP";
-        case 3: return "LINE_STRIP";
-        case 4: return "TRIANGLES";
-        case 5: return "TRIANGLE_STRIP";
-        case 6: return "TRIANGLE_FAN";
-        default: return "unknown";
+        case 0:
+            return "POINTS";
+        case 1:
+            return "LINES";
+        case 2:
+            return "LINE_LOOP";
+        case 3:
+            return "LINE_STRIP";
+        case 4:
+            return "TRIANGLES";
+        case 5:
+            return "TRIANGLE_STRIP";
+        case 6:
+            return "TRIANGLE_FAN";
+        default:
+            return "unknown";
     }
 }
 
@@ -111,13 +119,16 @@ constexpr size_t kMaxGpuInstances = size_t(1) << 18;
 /// Components per element of an accessor type this file reads.
 int components(int type) {
     switch (type) {
-        case TINYGLTF_TYPE_SCALAR: return 1;
-        case TINYGLTF_TYPE_VEC2: return 2;
-        case TINYGLTF_TYPE_VEC3: return 3;
-        default: return 4;
+        case TINYGLTF_TYPE_SCALAR:
+            return 1;
+        case TINYGLTF_TYPE_VEC2:
+            return 2;
+        case TINYGLTF_TYPE_VEC3:
+            return 3;
+        default:
+            return 4;
     }
 }
-
 
 /// A light that waits for the scene bounds (directional lights are placed outside them).
 struct PendingLight {
@@ -330,8 +341,7 @@ class SceneBuilder {
     /// draw the same IR mesh in the same glTF material (built from the same accessors, indices
     /// and mode) are one surface drawn again in the same place: it is placed once, since each
     /// copy would cost every ray that reaches it (500,000 copies of a triangle: minutes).
-    void addPrimitives(ir::Node &parent, int meshIndex, const Pose &pose,
-                       const std::string &path) {
+    void addPrimitives(ir::Node &parent, int meshIndex, const Pose &pose, const std::string &path) {
         const tinygltf::Mesh &mesh = model_.meshes[static_cast<size_t>(meshIndex)];
         std::set<std::pair<int, int>> placed;
         size_t repeated = 0;
@@ -348,9 +358,8 @@ class SceneBuilder {
             if (options_.materialOverride) {
                 material = *options_.materialOverride;
             } else {
-                std::optional<int> m =
-                    materials_->irMaterial(mesh.primitives[p].material,
-                                           *scene_.meshes[static_cast<size_t>(id)], primPath);
+                std::optional<int> m = materials_->irMaterial(
+                    mesh.primitives[p].material, *scene_.meshes[static_cast<size_t>(id)], primPath);
                 if (!m) continue;
                 material = *m;
             }
@@ -391,10 +400,14 @@ class SceneBuilder {
             auto it = prim.attributes.find(name);
             return it == prim.attributes.end() ? -1 : it->second;
         };
-        PrimitiveKey key{attribute("POSITION"),   attribute("NORMAL"),
-                         attribute("TEXCOORD_0"), attribute("TEXCOORD_1"),
-                         attribute("TANGENT"),    attribute("COLOR_0"),
-                         prim.indices,            prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode,
+        PrimitiveKey key{attribute("POSITION"),
+                         attribute("NORMAL"),
+                         attribute("TEXCOORD_0"),
+                         attribute("TEXCOORD_1"),
+                         attribute("TANGENT"),
+                         attribute("COLOR_0"),
+                         prim.indices,
+                         prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode,
                          tangents};
         auto [shared, isNew] = sharedMeshes_.try_emplace(key, -1);
         if (isNew) shared->second = addMesh(loadPrimitive(meshIndex, primIndex, pose, tangents));
@@ -443,8 +456,7 @@ class SceneBuilder {
         // Attributes come from their accessors, or from the Draco data that replaces them
         std::unique_ptr<DracoPrimitive> draco = DracoPrimitive::decode(ctx_, prim, path);
         if (draco) mode = TINYGLTF_MODE_TRIANGLES;  // Draco data holds triangles
-        AttributeReader read = [&](const std::string &name,
-                                   int type) -> std::optional<FloatArray> {
+        AttributeReader read = [&](const std::string &name, int type) -> std::optional<FloatArray> {
             auto it = prim.attributes.find(name);
             if (it == prim.attributes.end()) return std::nullopt;
             std::string what = path + ".attributes." + name;
@@ -458,8 +470,7 @@ class SceneBuilder {
         };
         auto attributePath = [&](const char *attribute) {
             return path + ".attributes." + attribute + " (" +
-                   jsonPath("accessors", static_cast<size_t>(prim.attributes.at(attribute))) +
-                   ")";
+                   jsonPath("accessors", static_cast<size_t>(prim.attributes.at(attribute))) + ")";
         };
 
         ir::Mesh mesh;
@@ -472,7 +483,8 @@ class SceneBuilder {
         size_t nv = pos.count;
         mesh.positions.resize(nv);
         for (size_t i = 0; i < nv; ++i)
-            mesh.positions[i] = Vec3(pos.values[3 * i], pos.values[3 * i + 1], pos.values[3 * i + 2]);
+            mesh.positions[i] =
+                Vec3(pos.values[3 * i], pos.values[3 * i + 1], pos.values[3 * i + 2]);
         auto countCheck = [&](const FloatArray &a, const char *attribute) {
             if (a.count != nv)
                 ctx_.fail(attributePath(attribute) + ": " + std::to_string(a.count) +
@@ -493,7 +505,7 @@ class SceneBuilder {
         }
         if (!pose.weights.empty()) poser_.morph(prim, path, pose.weights, mesh);
         if (pose.skin >= 0) poser_.skin(pose.skin, read, path, mesh);
-        const char *posed = pose.skin >= 0        ? " (after skinning)"
+        const char *posed = pose.skin >= 0          ? " (after skinning)"
                             : !pose.weights.empty() ? " (after morphing)"
                                                     : "";
         for (size_t i = 0; i < nv; ++i)

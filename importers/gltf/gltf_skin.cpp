@@ -75,8 +75,10 @@ void Poser::morph(const tinygltf::Primitive &prim, const std::string &path,
                     mesh.normals[i] = mesh.normals[i] + delta;
                 } else {
                     for (int c = 0; c < 3; ++c)
-                        mesh.tangents[i][static_cast<size_t>(c)] += static_cast<float>(
-                            c == 0 ? delta.x : c == 1 ? delta.y : delta.z);
+                        mesh.tangents[i][static_cast<size_t>(c)] +=
+                            static_cast<float>(c == 0   ? delta.x
+                                               : c == 1 ? delta.y
+                                                        : delta.z);
                 }
             }
         }
@@ -105,16 +107,15 @@ const Mat4 &Poser::global(size_t index) {
     for (size_t at = index;;) {
         if (globalDone_[at]) break;
         chain.push_back(at);
-        if (chain.size() > n)
-            ctx_.fail(jsonPath("nodes", index) + ": its ancestors form a cycle");
+        if (chain.size() > n) ctx_.fail(jsonPath("nodes", index) + ": its ancestors form a cycle");
         if (parents_[at] < 0) break;
         at = static_cast<size_t>(parents_[at]);
     }
     for (size_t k = chain.size(); k-- > 0;) {
         size_t at = chain[k];
         Mat4 local = localMatrix(ctx_, model.nodes[at], jsonPath("nodes", at));
-        globals_[at] = parents_[at] >= 0 ? globals_[static_cast<size_t>(parents_[at])] * local
-                                         : local;
+        globals_[at] =
+            parents_[at] >= 0 ? globals_[static_cast<size_t>(parents_[at])] * local : local;
         globalDone_[at] = 1;
     }
     return globals_[index];

@@ -41,7 +41,8 @@ bool generateTangents(ir::Mesh &mesh, int texCoord) {
     if (uvs.size() != n || n == 0) return false;
     bool smooth = mesh.normals.size() == n;
     std::vector<Vec3> normal(n, Vec3(0, 0, 0));
-    if (smooth) normal = mesh.normals;
+    if (smooth)
+        normal = mesh.normals;
     else
         for (const auto &tri : mesh.triangles) {
             Vec3 fn = cross(mesh.positions[tri[1]] - mesh.positions[tri[0]],
@@ -93,7 +94,8 @@ bool generateTangents(ir::Mesh &mesh, int texCoord) {
         for (int c = 0; c < 3; ++c)
             for (int d = 1; d < 3; ++d) {
                 uint64_t key = uint64_t(tri[size_t(c)]) << 32 | tri[size_t((c + d) % 3)];
-                auto [it, isNew] = edgeCorner.try_emplace(key, std::array<uint32_t, 2>{kNone, kNone});
+                auto [it, isNew] =
+                    edgeCorner.try_emplace(key, std::array<uint32_t, 2>{kNone, kNone});
                 uint32_t &first = it->second[orient[k] > 0 ? 0 : 1];
                 uint32_t corner = uint32_t(3 * k + size_t(c));
                 if (first == kNone)
@@ -106,8 +108,8 @@ bool generateTangents(ir::Mesh &mesh, int texCoord) {
     // One output vertex per (vertex, group): the first group keeps the vertex, others copy it
     std::vector<uint32_t> cornerVertex(3 * nt);
     std::unordered_map<uint32_t, uint32_t> groupVertex;  // group root -> output vertex
-    std::vector<int64_t> firstGroup(n, -1);  // the root that kept the vertex
-    std::vector<uint32_t> source;             // output vertex -> the vertex it copies
+    std::vector<int64_t> firstGroup(n, -1);              // the root that kept the vertex
+    std::vector<uint32_t> source;                        // output vertex -> the vertex it copies
     source.resize(n);
     std::iota(source.begin(), source.end(), 0u);
     for (size_t k = 0; k < nt; ++k) {
@@ -127,7 +129,8 @@ bool generateTangents(ir::Mesh &mesh, int texCoord) {
     }
     for (size_t k = 0; k < nt; ++k)  // uv-degenerate triangles join their vertices' first group
         if (orient[k] == 0)
-            for (int c = 0; c < 3; ++c) cornerVertex[3 * k + size_t(c)] = mesh.triangles[k][size_t(c)];
+            for (int c = 0; c < 3; ++c)
+                cornerVertex[3 * k + size_t(c)] = mesh.triangles[k][size_t(c)];
 
     size_t m = source.size();
     std::vector<Vec3> tSum(m, Vec3(0, 0, 0)), bSum(m, Vec3(0, 0, 0));

@@ -24,8 +24,7 @@ std::string lowerExtension(const std::string &path) {
 }
 
 /// The environment `-e` names; glTF models get the studio sky unless it says otherwise.
-ir::Environment loadEnvironment(SceneFormat format, DiagnosticSink &diag,
-                                const LoadOptions &opts) {
+ir::Environment loadEnvironment(SceneFormat format, DiagnosticSink &diag, const LoadOptions &opts) {
     std::string name = opts.environment.empty() ? (format == SceneFormat::Gltf ? "studio" : "none")
                                                 : opts.environment;
     ir::Environment env;
@@ -68,8 +67,8 @@ ir::Scene importMesh(const std::string &path, DiagnosticSink &diag) {
     auto mesh = std::make_shared<ir::Mesh>(meshio::readMeshFile(path, diag));
     if (!mesh->triangles.empty()) {
         scene.meshes.push_back(mesh);
-        scene.root->children.push_back(ir::Node::makePrimitive(
-            ir::MeshPrim{0}, scene.addMaterial(ir::Material()), mesh->loc));
+        scene.root->children.push_back(
+            ir::Node::makePrimitive(ir::MeshPrim{0}, scene.addMaterial(ir::Material()), mesh->loc));
     }
     return scene;
 }
@@ -94,9 +93,15 @@ ir::Scene loadScene(const std::string &path, DiagnosticSink &diag, const LoadOpt
     ir::Environment env = loadEnvironment(*format, diag, opts);
     ir::Scene scene;
     switch (*format) {
-        case SceneFormat::Scad: scene = importScad(path, diag, opts); break;
-        case SceneFormat::Gltf: scene = gltf::importGltf(path, diag); break;
-        case SceneFormat::Mesh: scene = importMesh(path, diag); break;
+        case SceneFormat::Scad:
+            scene = importScad(path, diag, opts);
+            break;
+        case SceneFormat::Gltf:
+            scene = gltf::importGltf(path, diag);
+            break;
+        case SceneFormat::Mesh:
+            scene = importMesh(path, diag);
+            break;
     }
     scene.settings.environment = std::move(env);
     // Facets first: the automatic camera frames the solids as they will be drawn

@@ -33,7 +33,7 @@ struct LoadOptions {
     std::vector<std::pair<std::string, std::string>> defines;
     /// How spheres, cylinders, tori and lathes are drawn (`--facets`).
     ir::FacetMode facets = ir::FacetMode::Auto;
-    int64_t maxSteps = scad::kDefaultMaxSteps;  ///< .scad evaluation step cap; 0 = none
+    int64_t maxSteps = scad::kDefaultMaxSteps;        ///< .scad evaluation step cap; 0 = none
     int64_t maxElements = scad::kDefaultMaxElements;  ///< .scad vector elements alive at once
     int64_t maxGeometry = scad::kDefaultMaxGeometry;  ///< .scad geometry budget; 0 = none
     /// `-e`: empty (the file type's default: the studio sky for glTF, none otherwise), "none",

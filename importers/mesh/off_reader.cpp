@@ -4,8 +4,8 @@
 #include <cmath>
 #include <filesystem>
 
-#include "importers/mesh/mesh_reader.h"
 #include "core/meshing/triangulate.h"
+#include "importers/mesh/mesh_reader.h"
 #include "importers/mesh/reader_support.h"
 
 namespace rt::meshio {

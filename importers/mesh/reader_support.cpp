@@ -145,7 +145,8 @@ bool parseCount(std::string_view word, uint64_t &out) {
 // PositionWelder
 
 size_t PositionWelder::KeyHash::operator()(const Key &k) const {
-    return static_cast<size_t>(rt::mixBits(k.bits[0] ^ rt::mixBits(k.bits[1] ^ rt::mixBits(k.bits[2]))));
+    return static_cast<size_t>(
+        rt::mixBits(k.bits[0] ^ rt::mixBits(k.bits[1] ^ rt::mixBits(k.bits[2]))));
 }
 
 uint32_t PositionWelder::add(const Vec3 &p) {

@@ -6,8 +6,8 @@
 #include <exception>
 #include <functional>
 
-#include "core/system/large_stack.h"
 #include "core/ir/diagnostics.h"
+#include "core/system/large_stack.h"
 #include "importers/scad/lang/evaluator.h"
 #include "importers/scad/lang/lexer.h"
 #include "importers/scad/lang/parser.h"
@@ -57,8 +57,7 @@ ir::Scene importScadSource(const std::string &source, const std::string &virtual
 
 ir::Scene importScad(const std::string &path, DiagnosticSink &diag, const ImportOptions &opts) {
     SourceLoc loc(std::make_shared<const std::string>(path), 0, 0);
-    return importScadSource(readInputFileAt(path, loc, kMaxSourceBytes), path,
-                            diag, opts);
+    return importScadSource(readInputFileAt(path, loc, kMaxSourceBytes), path, diag, opts);
 }
 
 }  // namespace rt::scad

@@ -24,10 +24,14 @@ enum class Kind { Plate, Union, SphereIntersection, SlabIntersection };
 
 const char *kindName(Kind k) {
     switch (k) {
-        case Kind::Plate: return "plate";
-        case Kind::Union: return "union";
-        case Kind::SphereIntersection: return "isect_spheres";
-        case Kind::SlabIntersection: return "isect_slabs";
+        case Kind::Plate:
+            return "plate";
+        case Kind::Union:
+            return "union";
+        case Kind::SphereIntersection:
+            return "isect_spheres";
+        case Kind::SlabIntersection:
+            return "isect_slabs";
     }
     return "";
 }
@@ -46,18 +50,20 @@ std::unique_ptr<CsgShape> build(Kind k, int n) {
     switch (k) {
         case Kind::Plate:
             // A side x side x 2 plate with n holes of radius 0.3 on a 1 mm grid
-            ops.push_back(addPrimitive(*s, std::make_unique<Box>(Vec3(0, 0, 0), Vec3(side, side, 2)),
-                                       Mat4(), 0));
+            ops.push_back(addPrimitive(
+                *s, std::make_unique<Box>(Vec3(0, 0, 0), Vec3(side, side, 2)), Mat4(), 0));
             for (int i = 0; i < n; ++i)
                 ops.push_back(addPrimitive(*s, std::make_unique<Cone>(-1, 3, 0.3, 0.3),
-                                           Mat4::translate({i % side + 0.5, i / side + 0.5, 0}), 1));
+                                           Mat4::translate({i % side + 0.5, i / side + 0.5, 0}),
+                                           1));
             s->addOp(CsgShape::Op::Difference, std::move(ops));
             break;
         case Kind::Union:
             // n spheres of radius 0.4 on a 1 mm grid, none touching
             for (int i = 0; i < n; ++i)
                 ops.push_back(addPrimitive(*s, std::make_unique<Sphere>(0.4),
-                                           Mat4::translate({i % side + 0.5, i / side + 0.5, 0.5}), 0));
+                                           Mat4::translate({i % side + 0.5, i / side + 0.5, 0.5}),
+                                           0));
             s->addOp(CsgShape::Op::Union, std::move(ops));
             break;
         case Kind::SphereIntersection: {
@@ -76,7 +82,8 @@ std::unique_ptr<CsgShape> build(Kind k, int n) {
             // n slabs |x| <= 1 (6 long, 2 high) turned about z by 180 i / n degrees: a prism
             // with a 2n-gon of inradius 1 as its section
             for (int i = 0; i < n; ++i)
-                ops.push_back(addPrimitive(*s, std::make_unique<Box>(Vec3(-1, -3, -1), Vec3(1, 3, 1)),
+                ops.push_back(addPrimitive(*s,
+                                           std::make_unique<Box>(Vec3(-1, -3, -1), Vec3(1, 3, 1)),
                                            Mat4::rotateZ(180.0 * i / n), 0));
             s->addOp(CsgShape::Op::Intersection, std::move(ops));
             break;
@@ -107,7 +114,8 @@ Setup &setup(Kind k, int n) {
     SpanScratch scratch;
     for (int y = 0; y < 48; ++y)
         for (int x = 0; x < 64; ++x) {
-            double u = (2 * (x + 0.5) / 64 - 1) * half * 64 / 48, v = (1 - 2 * (y + 0.5) / 48) * half;
+            double u = (2 * (x + 0.5) / 64 - 1) * half * 64 / 48,
+                   v = (1 - 2 * (y + 0.5) / 48) * half;
             Ray r(eye, normalize(forward + right * u + up * v));
             Crossing c;
             (s.shape->firstCrossing(r, 0, kInfinity, &c, scratch) ? s.hits : s.misses).push_back(r);
@@ -121,7 +129,7 @@ void BM_Build(benchmark::State &state, Kind k) {
     state.counters["operands"] = n;
     state.counters["time_per_operand"] =
         benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate |
-                                                              benchmark::Counter::kInvert);
+                                                       benchmark::Counter::kInvert);
 }
 
 /// Closest crossing (what camera and shadow rays ask for) of one ray per iteration.
@@ -142,8 +150,8 @@ void BM_Ray(benchmark::State &state, Kind k, bool hit) {
     }
     state.counters["operands"] = n;
     state.counters["rays"] = static_cast<double>(rays.size());
-    state.counters["merges_per_ray"] =
-        benchmark::Counter(static_cast<double>(scratch.spanOps), benchmark::Counter::kAvgIterations);
+    state.counters["merges_per_ray"] = benchmark::Counter(static_cast<double>(scratch.spanOps),
+                                                          benchmark::Counter::kAvgIterations);
     state.SetItemsProcessed(state.iterations());
 }
 

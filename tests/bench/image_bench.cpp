@@ -59,7 +59,8 @@ Image renderLike(int w, int h) {
                 c = (check & 1) ? Rgb(0.9, 0.9, 0.85) * shade : Rgb(0.2, 0.25, 0.35) * shade;
             }
             double dx = sx - 0.6, dy = sy - 0.5;
-            if (dx * dx + dy * dy < 0.03) c = Rgb(0.9, 0.7, 0.1) * (0.3 + 0.7 * std::max(0.0, -dx * 4 - dy * 3 + 0.5));
+            if (dx * dx + dy * dy < 0.03)
+                c = Rgb(0.9, 0.7, 0.1) * (0.3 + 0.7 * std::max(0.0, -dx * 4 - dy * 3 + 0.5));
             img.set(x, y, c);
         }
     return img;
@@ -67,8 +68,9 @@ Image renderLike(int w, int h) {
 
 void BM_WritePng640x480(benchmark::State &state) {
     Image img = renderLike(640, 480);
-    std::string path =
-        (std::filesystem::temp_directory_path() / ("image_bench_" + std::to_string(getpid()) + ".png")).string();
+    std::string path = (std::filesystem::temp_directory_path() /
+                        ("image_bench_" + std::to_string(getpid()) + ".png"))
+                           .string();
     for (auto _ : state) writeImage(img, path);
     state.counters["bytes"] = double(std::filesystem::file_size(path));
     std::filesystem::remove(path);

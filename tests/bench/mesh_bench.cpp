@@ -29,7 +29,8 @@ void BM_MeshBuild(benchmark::State &state) {
 BENCHMARK(BM_MeshBuild)->DenseRange(4, 8, 2)->Unit(benchmark::kMillisecond);
 
 void BM_MeshClosestHit(benchmark::State &state) {
-    auto mesh = std::make_shared<TriangleMesh>(test::icosphere(static_cast<int>(state.range(0)), 1));
+    auto mesh =
+        std::make_shared<TriangleMesh>(test::icosphere(static_cast<int>(state.range(0)), 1));
     Rng rng(1);
     std::vector<Ray> rays;
     for (int i = 0; i < 4096; ++i) {

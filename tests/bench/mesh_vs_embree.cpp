@@ -30,7 +30,8 @@ namespace rt {
 namespace {
 
 double wallNow() {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
 }
 
 double threadCpuNow() {
@@ -84,7 +85,8 @@ std::vector<Ray> randomRays(size_t n) {
         Vec3 o(rng.uniform() * 2 - 1, rng.uniform() * 2 - 1, rng.uniform() * 2 - 1);
         if (lengthSquared(o) > 1 || lengthSquared(o) < 1e-6) continue;
         o = normalize(o) * 3;
-        Vec3 target(rng.uniform() * 2.4 - 1.2, rng.uniform() * 2.4 - 1.2, rng.uniform() * 2.4 - 1.2);
+        Vec3 target(rng.uniform() * 2.4 - 1.2, rng.uniform() * 2.4 - 1.2,
+                    rng.uniform() * 2.4 - 1.2);
         rays.emplace_back(o, normalize(target - o));
     }
     return rays;
@@ -145,7 +147,8 @@ struct EmbreeScene {
 /// the configuration is printed, and "verbose=2" shows the kernels it picked).
 std::string embreeConfig(int threads) {
     std::string config = "threads=" + std::to_string(threads);
-    if (const char *extra = std::getenv("EMBREE_CONFIG"); extra && *extra) config += std::string(",") + extra;
+    if (const char *extra = std::getenv("EMBREE_CONFIG"); extra && *extra)
+        config += std::string(",") + extra;
     return config;
 }
 
@@ -156,7 +159,8 @@ std::unique_ptr<EmbreeScene> embreeBuild(const std::vector<float> &vertices,
     std::string config = embreeConfig(threads);
     s->device = rtcNewDevice(config.c_str());
     if (!s->device) {
-        std::fprintf(stderr, "mesh_vs_embree: Embree refused the device configuration \"%s\" (error %d)\n",
+        std::fprintf(stderr,
+                     "mesh_vs_embree: Embree refused the device configuration \"%s\" (error %d)\n",
                      config.c_str(), static_cast<int>(rtcGetDeviceError(nullptr)));
         std::exit(1);
     }
@@ -239,8 +243,10 @@ int run(int levels, bool doublePositions) {
         auto floats = TriangleMesh::floatLeaves(*mesh, bvh, threads);
         if (floats.empty()) auto leaves = TriangleMesh::leafOrder(*mesh, bvh);
     };
-    double build1 = bestWall(3, [&] { buildBvh(1); }, &cpu1);
-    double build2 = bestWall(3, [&] { buildBvh(2); }, &cpu2);
+    double build1 = bestWall(
+        3, [&] { buildBvh(1); }, &cpu1);
+    double build2 = bestWall(
+        3, [&] { buildBvh(2); }, &cpu2);
     auto tm = std::make_unique<TriangleMesh>(mesh);
     double bvhBytes = tm->extraBytes() / static_cast<double>(tris);
     {
@@ -250,12 +256,15 @@ int run(int levels, bool doublePositions) {
                 children += c != WideBvh::kEmpty;
                 leaves += c != WideBvh::kEmpty && (c & WideBvh::kLeaf);
             }
-        std::printf("scadray BVH: %zu nodes of %zu bytes, %.2f children a node, %zu leaves of %.2f triangles, "
-                    "depth %d\n",
-                    tm->bvh().nodes().size(), sizeof(WideBvh::Node),
-                    children / static_cast<double>(tm->bvh().nodes().size()), leaves,
-                    tris / static_cast<double>(leaves), tm->bvh().depth());
-        std::printf("scadray leaves hold %s\n", tm->floatLeaves().empty() ? "vertex indices" : "float vertices");
+        std::printf(
+            "scadray BVH: %zu nodes of %zu bytes, %.2f children a node, %zu leaves of %.2f "
+            "triangles, "
+            "depth %d\n",
+            tm->bvh().nodes().size(), sizeof(WideBvh::Node),
+            children / static_cast<double>(tm->bvh().nodes().size()), leaves,
+            tris / static_cast<double>(leaves), tm->bvh().depth());
+        std::printf("scadray leaves hold %s\n",
+                    tm->floatLeaves().empty() ? "vertex indices" : "float vertices");
     }
     auto camera = cameraRays();
     auto random = randomRays(camera.size());
@@ -318,9 +327,10 @@ int run(int levels, bool doublePositions) {
     movedVertices.push_back(0);
     auto fe = embreeBuild(movedVertices, indices, 1);
     TraceResult fr = traceEmbree(fe->scene, movedRays);
-    std::printf("moved by 1e5: camera rays finding the triangle found at the origin: scadray %.3f %%, "
-                "Embree %.3f %%\n",
-                agreement(fs, sc), agreement(fr, ec));
+    std::printf(
+        "moved by 1e5: camera rays finding the triangle found at the origin: scadray %.3f %%, "
+        "Embree %.3f %%\n",
+        agreement(fs, sc), agreement(fr, ec));
 #else
     std::printf("\n");
     std::printf("%-34s %11.3f s\n", "BVH build, 1 thread, wall", build1);
@@ -331,8 +341,9 @@ int run(int levels, bool doublePositions) {
     std::printf("%-34s %11.3f M/s\n", "random rays, 1 thread", sr.raysPerSecond / 1e6);
     std::printf("%-34s %11.1f B\n", "BVH bytes per triangle", bvhBytes);
     std::printf("%-34s %11.1f B\n", "mesh bytes per triangle", meshBytes);
-    std::printf("(Embree 3 not found at configure time: install libembree-dev and rerun cmake for the "
-                "side-by-side figures)\n");
+    std::printf(
+        "(Embree 3 not found at configure time: install libembree-dev and rerun cmake for the "
+        "side-by-side figures)\n");
 #endif
     return 0;
 }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Benchmarks of the .scad evaluator (figures, not a timed test): a 100 000-primitive loop
-// with 10 000 colours, parsed and evaluated into the IR, in primitives per second. Well under a second in RelWithDebInfo.
-// Run: build/tests/scad_eval_bench
+// with 10 000 colours, parsed and evaluated into the IR, in primitives per second. Well under a
+// second in RelWithDebInfo. Run: build/tests/scad_eval_bench
 #include <benchmark/benchmark.h>
 
 #include "importers/scad/scad_importer.h"

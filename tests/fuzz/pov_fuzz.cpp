@@ -103,7 +103,8 @@ rt::ir::Scene sceneNamed(const std::string &meshName, const std::string &fileNam
     scene.meshes.push_back(mesh);
     int mat = scene.addMaterial(rt::ir::Material());
     scene.root = rt::ir::Node::makeGroup(rt::ir::NodeKind::Group, mesh->loc);
-    scene.root->children.push_back(rt::ir::Node::makePrimitive(rt::ir::MeshPrim{0}, mat, mesh->loc));
+    scene.root->children.push_back(
+        rt::ir::Node::makePrimitive(rt::ir::MeshPrim{0}, mat, mesh->loc));
     rt::DiagnosticSink diag;
     rt::ir::completeScene(scene, diag);
     return scene;
@@ -145,8 +146,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         if (!safeIni) fail("writeIni: wrote a name iniSafe refuses");
         ini.outputFile = "out.png";
         std::string plainIni = rt::pov::writeIni(ini);
-        auto lines = [](const std::string &t) { return std::count(t.begin(), t.end(), '\n') +
-                                                       std::count(t.begin(), t.end(), '\r'); };
+        auto lines = [](const std::string &t) {
+            return std::count(t.begin(), t.end(), '\n') + std::count(t.begin(), t.end(), '\r');
+        };
         if (lines(text) != lines(plainIni)) fail("writeIni: a name added a line");
     } catch (const std::runtime_error &) {
         if (safeIni) fail("writeIni: refused a name iniSafe accepts");

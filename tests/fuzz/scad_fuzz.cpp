@@ -37,7 +37,7 @@ void evaluateText(std::string_view text) {
     limits.maxNodes = 5'000;
     limits.maxStringLength = 64 << 10;
     limits.stackReserveBytes = 8u << 20;  // sanitizer frames are large
-    limits.maxGeometryWork = 50'000;       // minkowski() and projection() of big children
+    limits.maxGeometryWork = 50'000;      // minkowski() and projection() of big children
     Evaluator evaluator(diag, limits);
     rt::ir::Scene scene = evaluator.evaluate(*file, loader);
     (void)scene;

@@ -11,7 +11,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     std::string path = rt::fuzz::writeInput(data, size, "in.dat");
     rt::fuzz::expectCleanFailure([&] {
         rt::scad::surface::HeightMap map;
-        auto r = rt::scad::surface::readHeightMap(path, size % 2 == 1, map, [](const std::string &) {});
+        auto r =
+            rt::scad::surface::readHeightMap(path, size % 2 == 1, map, [](const std::string &) {});
         if (r != rt::scad::surface::ReadResult::Ok) return;
         size_t cells = static_cast<size_t>(map.lines) * static_cast<size_t>(map.columns);
         if (cells > rt::scad::surface::kMaxCells || map.values.size() != cells)

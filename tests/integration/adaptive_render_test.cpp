@@ -21,8 +21,8 @@
 namespace rt {
 namespace {
 
-using test::Compiled;
 using test::compile;
+using test::Compiled;
 using test::libraryOptions;
 using test::loadScene;
 using test::options;
@@ -30,8 +30,8 @@ using test::options;
 Compiled loadText(const std::string &text) {
     DiagnosticSink diag;
     return compile(scad::importScadSource("use <scadray.scad>\n" + text,
-                                          std::string(SCADRAY_SOURCE_DIR) + "/scenes/test.scad", diag,
-                                          libraryOptions()));
+                                          std::string(SCADRAY_SOURCE_DIR) + "/scenes/test.scad",
+                                          diag, libraryOptions()));
 }
 
 RenderResult uniform(const RenderScene &rs, int w, int h, int spp) {
@@ -81,10 +81,12 @@ TEST(AdaptiveRender, SamePictureAsUniform64WithAFractionOfTheSamples) {
         CompareResult cmp = compareImages(test, reference);
         EXPECT_TRUE(cmp.pass) << cmp.summary({});
         double fraction = double(a.samples) / (64.0 * w * h);
-        double errorAdaptive = displayRmse(a.image, ref.image), errorOne = displayRmse(one.image, ref.image);
-        std::printf("%s %dx%d: adaptive %.2f spp = %.3f of uniform 64; display RMSE against it %.4f "
-                    "(1 spp: %.4f)\n",
-                    name, w, h, meanSamplesPerPixel(a), fraction, errorAdaptive, errorOne);
+        double errorAdaptive = displayRmse(a.image, ref.image),
+               errorOne = displayRmse(one.image, ref.image);
+        std::printf(
+            "%s %dx%d: adaptive %.2f spp = %.3f of uniform 64; display RMSE against it %.4f "
+            "(1 spp: %.4f)\n",
+            name, w, h, meanSamplesPerPixel(a), fraction, errorAdaptive, errorOne);
         EXPECT_LT(fraction, 0.1);
         // Antialiased: the edges are much closer to uniform 64's than the centres are
         EXPECT_LT(errorAdaptive, 0.5 * errorOne);
@@ -164,7 +166,9 @@ material(color="green") translate([2, -1, 0]) cube([1, 2, 1]);
     RenderResult a = adaptive(*c.rs, w, h), one = uniform(*c.rs, w, h, 1);
     RenderOptions o;
     double threshold = o.adaptiveThreshold + 1.0 / 255;  // the renderer keeps 1/255 steps
-    auto display = [&](int x, int y, int ch) { return std::sqrt(std::clamp(double(one.image.at(x, y)[ch]), 0.0, 1.0)); };
+    auto display = [&](int x, int y, int ch) {
+        return std::sqrt(std::clamp(double(one.image.at(x, y)[ch]), 0.0, 1.0));
+    };
     // Every pixel that differs from a neighbour beyond the threshold is refined or checked
     // (two probe samples on the neighbour's side saw its centre's colour), and the contrast is
     // refined on at least one side of nearly every such pair
@@ -276,9 +280,9 @@ TEST(AdaptiveRender, PlanChoosesAdaptiveForSharpScenesAndSaysWhereSamplesWent) {
     RenderOptions o;
     o.adaptive = true;
     std::string text = describePlan(*sharp.rs, sharp.scene.stats, plan, o, true);
-    EXPECT_NE(text.find("samples: adaptive, each pixel's centre; where a neighbour differs"), std::string::npos);
-    EXPECT_NE(text.find("then 4, 16 ... up to 64 stratified samples"), std::string::npos)
-        << text;
+    EXPECT_NE(text.find("samples: adaptive, each pixel's centre; where a neighbour differs"),
+              std::string::npos);
+    EXPECT_NE(text.find("then 4, 16 ... up to 64 stratified samples"), std::string::npos) << text;
     RenderResult r = adaptive(*sharp.rs, 32, 24);
     std::string where = describeSampling(r);
     EXPECT_EQ(where.rfind("adaptive, pixels by samples: 1: ", 0), 0u) << where;
@@ -291,9 +295,11 @@ TEST(AdaptiveRender, PlanChoosesAdaptiveForSharpScenesAndSaysWhereSamplesWent) {
     o.adaptiveNoise = true;
     o.adaptiveTolerance = kAdaptiveNoiseTolerance;
     text = describePlan(*mc.rs, mc.scene.stats, makePlan(*mc.rs), o, false);
-    EXPECT_NE(text.find("samples: adaptive to Monte Carlo noise, every pixel 4, 16 ... up to 64 stratified "
-                        "samples until the standard error is below 0.02 (given)"),
-              std::string::npos)
+    EXPECT_NE(
+        text.find(
+            "samples: adaptive to Monte Carlo noise, every pixel 4, 16 ... up to 64 stratified "
+            "samples until the standard error is below 0.02 (given)"),
+        std::string::npos)
         << text;
 }
 
@@ -324,7 +330,8 @@ TEST(AdaptiveRender, NoiseModeRefinesEveryPixelFromFourSamplesWithUniformSamplin
             if (a.pixelLevels[size_t(y) * w + x] == 2) {
                 EXPECT_TRUE(a.image.at(x, y) == sixteen.image.at(x, y));
             }
-    EXPECT_EQ(describeSampling(a).rfind("adaptive, pixels by samples: 4: ", 0), 0u) << describeSampling(a);
+    EXPECT_EQ(describeSampling(a).rfind("adaptive, pixels by samples: 4: ", 0), 0u)
+        << describeSampling(a);
     // The same picture for any thread count and tile size
     for (auto [threads, tile] : {std::pair{1, 16}, std::pair{3, 5}}) {
         o.threads = threads;

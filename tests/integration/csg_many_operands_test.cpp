@@ -20,9 +20,9 @@ RenderResult renderText(const std::string &text, bool plan, int width = 80, int 
     DiagnosticSink diag;
     scad::ImportOptions io;
     io.libraryPaths = {std::string(SCADRAY_SOURCE_DIR) + "/scenes"};
-    ir::Scene scene = scad::importScadSource("use <scadray.scad>\n" + text,
-                                             std::string(SCADRAY_SOURCE_DIR) + "/scenes/test.scad",
-                                             diag, io);
+    ir::Scene scene =
+        scad::importScadSource("use <scadray.scad>\n" + text,
+                               std::string(SCADRAY_SOURCE_DIR) + "/scenes/test.scad", diag, io);
     ir::completeScene(scene, diag);
     CompileOptions co;
     co.plan = plan;
@@ -41,8 +41,8 @@ void expectSamePicture(const RenderResult &a, const RenderResult &b) {
     for (int y = 0; y < a.image.height(); ++y)
         for (int x = 0; x < a.image.width(); ++x) {
             Rgb p = a.image.at(x, y), q = b.image.at(x, y);
-            differing += p.r != q.r || p.g != q.g || p.b != q.b ||
-                         a.ties.at(x, y).r != b.ties.at(x, y).r;
+            differing +=
+                p.r != q.r || p.g != q.g || p.b != q.b || a.ties.at(x, y).r != b.ties.at(x, y).r;
         }
     EXPECT_EQ(differing, 0);
 }

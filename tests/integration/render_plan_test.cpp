@@ -58,7 +58,9 @@ ir::Scene loadText(const std::string &text) {
                                   libraryOptions());
 }
 
-std::string scene(const std::string &name) { return std::string(SCADRAY_SOURCE_DIR) + "/scenes/" + name; }
+std::string scene(const std::string &name) {
+    return std::string(SCADRAY_SOURCE_DIR) + "/scenes/" + name;
+}
 
 RenderResult render(const RenderScene &rs, int spp = 1, int width = 96, int height = 72) {
     RenderOptions o;
@@ -94,7 +96,8 @@ void expectSameRender(const RenderResult &a, const RenderResult &b) {
 TEST(RenderPlan, OnlyTheRaysTheMaterialsNeed) {
     // No transparent material: no refraction, transmission or internal reflection rays; no
     // reflective one: no reflection rays; nothing glossy, frosted or jittered: no distributed
-    for (const char *name : {"csg_part.scad", "lecture_csg.scad", "openscad_model.scad", "print_plate.scad"}) {
+    for (const char *name :
+         {"csg_part.scad", "lecture_csg.scad", "openscad_model.scad", "print_plate.scad"}) {
         SCOPED_TRACE(name);
         Compiled c = compileScene(load(scene(name)), true);
         RenderResult r = render(*c.rs, 4);
@@ -116,12 +119,14 @@ TEST(RenderPlan, OnlyTheRaysTheMaterialsNeed) {
 }
 
 TEST(RenderPlan, ShadowlessAndBackFacingLightsCastNoShadowRays) {
-    const std::string body = "camera(location=[0, -8, 3], look_at=[0, 0, 0]);\n"
-                             "material(color=\"white\") translate([-5, -5, -1]) cube([10, 10, 1]);\n"
-                             "material(color=\"red\") sphere(1);\n";
+    const std::string body =
+        "camera(location=[0, -8, 3], look_at=[0, 0, 0]);\n"
+        "material(color=\"white\") translate([-5, -5, -1]) cube([10, 10, 1]);\n"
+        "material(color=\"red\") sphere(1);\n";
     // A shadowless light, and a light below the floor (behind every surface the camera sees,
     // except the underside of the sphere, which is hidden by the floor)
-    Compiled shadowless = compileScene(loadText(body + "point_light([3, -3, 6], shadowless=true);"), true);
+    Compiled shadowless =
+        compileScene(loadText(body + "point_light([3, -3, 6], shadowless=true);"), true);
     EXPECT_EQ(render(*shadowless.rs).stats.shadow, 0);
     Compiled below = compileScene(loadText(body + "point_light([0, 0, -20]);"), true);
     EXPECT_EQ(render(*below.rs).stats.shadow, 0);
@@ -186,7 +191,8 @@ TEST(RenderPlan, SharpSceneIsTheSameAtOneAndSixteenSamplesAwayFromEdges) {
             if (hi - lo > 0.01) continue;
             ++smooth;
             Rgb p = one.image.at(x, y), q = sixteen.image.at(x, y);
-            differing += std::max({std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b)}) > 1.0 / 1024;
+            differing += std::max({std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b)}) >
+                         1.0 / 1024;
         }
     EXPECT_GT(smooth, 160 * 120 / 4);
     EXPECT_EQ(differing, 0) << "of " << smooth;
@@ -261,7 +267,8 @@ TEST(RenderPlan, LaneSlabsNeverChangeThePicture) {
     // Every scene, the scene tree's nodes tested in AVX lanes and one plane at a time (camera
     // rays on the leaf lists in half the scenes, walking the tree in the others): the same
     // picture, ties and ray counts, bit for bit
-    if (!__builtin_cpu_supports("avx2")) GTEST_SKIP() << "this machine has no AVX2: the lanes are not used";
+    if (!__builtin_cpu_supports("avx2"))
+        GTEST_SKIP() << "this machine has no AVX2: the lanes are not used";
     int scenes = 0;
     for (const char *dir : {"", "crosscheck", "stiff", "montecarlo"}) {
         for (const auto &e : fs::directory_iterator(scene(dir))) {
@@ -297,9 +304,10 @@ TEST(RenderPlan, PrintPlateSplitsItsUnionAndDropsTheSpool) {
 
 TEST(RenderPlan, WhatMayBeDroppedBehindTheCamera) {
     // Camera at the origin looking along +y; a red box behind it, a sphere in front
-    const std::string base = "camera(location=[0, 0, 1], look_at=[0, 10, 1]);\n"
-                             "material(color=\"white\") translate([-5, 5, -1]) cube([10, 10, 1]);\n"
-                             "translate([0, 10, 1]) sphere(1);\n";
+    const std::string base =
+        "camera(location=[0, 0, 1], look_at=[0, 10, 1]);\n"
+        "material(color=\"white\") translate([-5, 5, -1]) cube([10, 10, 1]);\n"
+        "translate([0, 10, 1]) sphere(1);\n";
     struct Case {
         std::string extra;
         size_t dropped;
@@ -316,7 +324,8 @@ TEST(RenderPlan, WhatMayBeDroppedBehindTheCamera) {
         {"point_light([2, 4, 6]); material(color=\"red\") translate([-1, -6, 0]) cube(2);"
          "material(reflection=0.5) translate([3, 8, 0]) cube(1);",
          0, "a material reflects"},
-        {"point_light([2, 4, 6]); material(color=\"red\", transmit=0.5) translate([-1, -6, 0]) cube(2);",
+        {"point_light([2, 4, 6]); material(color=\"red\", transmit=0.5) translate([-1, -6, 0]) "
+         "cube(2);",
          0, "a material is transparent"},
         // Straddling the camera plane: kept
         {"point_light([2, 4, 6]); material(color=\"red\") translate([-1, -1, 0]) cube(2);", 0, ""},
@@ -337,7 +346,8 @@ TEST(RenderPlan, UnionsSplitOnlyIntoDisjointPartsWithOneInterior) {
         size_t objects, csg;
     };
     const Case cases[] = {
-        {"union() { sphere(1); translate([3, 0, 0]) sphere(1); translate([6, 0, 0]) cube(1); }", 3, 0},
+        {"union() { sphere(1); translate([3, 0, 0]) sphere(1); translate([6, 0, 0]) cube(1); }", 3,
+         0},
         // Touching boxes fuse: one solid without an inner face
         {"union() { cube(1); translate([1, 0, 0]) cube(1); }", 1, 1},
         {"union() { sphere(1); translate([1.5, 0, 0]) sphere(1); }", 1, 1},
@@ -345,7 +355,8 @@ TEST(RenderPlan, UnionsSplitOnlyIntoDisjointPartsWithOneInterior) {
         {"union() { material(transmit=0.9, ior=1.5) sphere(1);"
          " material(transmit=0.9, ior=1.2) translate([3, 0, 0]) sphere(1); }",
          1, 1},
-        {"material(transmit=0.9, ior=1.5) union() { sphere(1); translate([3, 0, 0]) sphere(1); }", 2, 0},
+        {"material(transmit=0.9, ior=1.5) union() { sphere(1); translate([3, 0, 0]) sphere(1); }",
+         2, 0},
         // Nested: the inner union's parts are disjoint from each other and from the difference
         {"union() { difference() { cube(2); sphere(1); } translate([5, 0, 0]) union() { sphere(1);"
          " translate([3, 0, 0]) sphere(1); } }",
@@ -354,7 +365,8 @@ TEST(RenderPlan, UnionsSplitOnlyIntoDisjointPartsWithOneInterior) {
     for (const Case &c : cases) {
         SCOPED_TRACE(c.src);
         std::string src = std::string("point_light([3, -8, 6]);\n") + c.src;
-        Compiled with = compileScene(loadText(src), true), without = compileScene(loadText(src), false);
+        Compiled with = compileScene(loadText(src), true),
+                 without = compileScene(loadText(src), false);
         EXPECT_EQ(with.rs->stats().objects, c.objects);
         EXPECT_EQ(with.rs->stats().csgObjects, c.csg);
         EXPECT_EQ(maxDifference(render(*with.rs).image, render(*without.rs).image), 0);
@@ -368,13 +380,13 @@ TEST(RenderPlan, DescribesItself) {
     ro.samplesPerPixel = plan.defaultSamples;
     ro.adaptive = plan.adaptive;
     std::string text = describePlan(*c.rs, c.scene.stats, plan, ro, true);
-    for (const char *part : {"shadows: rays towards 1 of 2 lights (1 shadowless: none)",
-                             "no material reflects: no reflection rays",
-                             "no material is transparent: no refraction",
-                             "no distributed rays", "49 solids kept (48 with CSG span merging",
-                             "1 union of disjoint parts split", "dropped: 1 behind the camera",
-                             "1 unused material (of 3)", "BVH over 49 solids",
-                             "samples: adaptive, each pixel's centre", "(chosen: every material is sharp"})
+    for (const char *part :
+         {"shadows: rays towards 1 of 2 lights (1 shadowless: none)",
+          "no material reflects: no reflection rays", "no material is transparent: no refraction",
+          "no distributed rays", "49 solids kept (48 with CSG span merging",
+          "1 union of disjoint parts split", "dropped: 1 behind the camera",
+          "1 unused material (of 3)", "BVH over 49 solids",
+          "samples: adaptive, each pixel's centre", "(chosen: every material is sharp"})
         EXPECT_NE(text.find(part), std::string::npos) << part << " not in:\n" << text;
 }
 

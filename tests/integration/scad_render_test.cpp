@@ -72,7 +72,8 @@ TEST(ScadRender, NegativeScaleIsAMirror) {
 
 TEST(ScadRender, RotateFormsAgree) {
     expectSamePicture("rotate([0,0,90]) cube([4,1,1]);", "rotate(90) cube([4,1,1]);");
-    expectSamePicture("rotate([90,0,0]) cylinder(r=1,h=4);", "rotate(a=90, v=[1,0,0]) cylinder(r=1,h=4);");
+    expectSamePicture("rotate([90,0,0]) cylinder(r=1,h=4);",
+                      "rotate(a=90, v=[1,0,0]) cylinder(r=1,h=4);");
     expectSamePicture("rotate([30,40,50]) cube([3,2,1]);",
                       "rotate([0,0,50]) rotate([0,40,0]) rotate([30,0,0]) cube([3,2,1]);");
 }
@@ -112,15 +113,17 @@ TEST(ScadRender, HullIsTheSolidItBoundsAndTakesPartInCsg) {
     EXPECT_GT(differingFraction(render("cube(2); translate([3, 0, 0]) cube(2);"),
                                 render("cube([5, 2, 2]);")),
               0.01);
-    expectSamePicture("difference() { hull() { cube(2); translate([3, 0, 0]) cube(2); } "
-                      "translate([1, -1, 1]) cube([3, 4, 2]); }",
-                      "difference() { cube([5, 2, 2]); translate([1, -1, 1]) cube([3, 4, 2]); }");
+    expectSamePicture(
+        "difference() { hull() { cube(2); translate([3, 0, 0]) cube(2); } "
+        "translate([1, -1, 1]) cube([3, 4, 2]); }",
+        "difference() { cube([5, 2, 2]); translate([1, -1, 1]) cube([3, 4, 2]); }");
 }
 
 TEST(ScadRender, RoundHullsGiveFinitePixels) {
-    Image img = render("hull() { sphere(2, $fn=24); translate([4, 0, 1]) sphere(1); "
-                       "translate([0, 0, 3]) rotate([10, 20, 30]) cylinder(r1=1, r2=0, h=2); }",
-                       64, 48);
+    Image img = render(
+        "hull() { sphere(2, $fn=24); translate([4, 0, 1]) sphere(1); "
+        "translate([0, 0, 3]) rotate([10, 20, 30]) cylinder(r1=1, r2=0, h=2); }",
+        64, 48);
     double lit = 0;
     for (float v : img.data()) {
         ASSERT_TRUE(std::isfinite(v));

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The stability scenes in scenes/stiff render without a single non-finite value or interior
-// overflow, the same at every scale and offset, and the 1e-6 glass shell shows the world behind it undistorted: its picture equals
-// the picture of the same shell with ior 1 (no bending at all), where an implementation with a
-// fixed 1e-6 epsilon, like POV-Ray, misses the inner surface and bends light as a solid ball.
+// overflow, the same at every scale and offset, and the 1e-6 glass shell shows the world behind it
+// undistorted: its picture equals the picture of the same shell with ior 1 (no bending at all),
+// where an implementation with a fixed 1e-6 epsilon, like POV-Ray, misses the inner surface and
+// bends light as a solid ball.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -81,7 +82,8 @@ TEST(StiffScenes, GroundSphereOfRadiusTenMillionIsAsCleanAsAPlane) {
     for (int y = 70; y < 120; ++y)  // the horizon is at row 57
         for (int x = 0; x < 160; ++x) {
             Rgb p = sphere.image.at(x, y), q = flat.image.at(x, y);
-            differing += std::max({std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b)}) > 1e-3;
+            differing +=
+                std::max({std::abs(p.r - q.r), std::abs(p.g - q.g), std::abs(p.b - q.b)}) > 1e-3;
             ++compared;
         }
     EXPECT_LE(differing, compared / 500) << "of " << compared;

@@ -27,13 +27,14 @@ inline std::shared_ptr<ir::Mesh> cubeMesh(const Vec3 &lo, const Vec3 &hi) {
 inline std::shared_ptr<ir::Mesh> icosphere(int levels, double r, bool normals = false) {
     auto m = std::make_shared<ir::Mesh>();
     double t = (1 + std::sqrt(5.0)) / 2;
-    std::vector<Vec3> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                           {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+    std::vector<Vec3> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0},
+                           {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
+                           {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
     for (auto &p : v) p = normalize(p);
     std::vector<std::array<uint32_t, 3>> f = {
-        {0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-        {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
-        {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+        {0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+        {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+        {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
     for (int l = 0; l < levels; ++l) {
         std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
         auto middle = [&](uint32_t a, uint32_t b) {
@@ -45,7 +46,8 @@ inline std::shared_ptr<ir::Mesh> icosphere(int levels, double r, bool normals = 
         };
         std::vector<std::array<uint32_t, 3>> g;
         for (const auto &tri : f) {
-            uint32_t a = middle(tri[0], tri[1]), b = middle(tri[1], tri[2]), c = middle(tri[2], tri[0]);
+            uint32_t a = middle(tri[0], tri[1]), b = middle(tri[1], tri[2]),
+                     c = middle(tri[2], tri[0]);
             g.push_back({tri[0], a, c});
             g.push_back({tri[1], b, a});
             g.push_back({tri[2], c, b});

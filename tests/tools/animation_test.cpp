@@ -47,15 +47,18 @@ class Animation : public test::CliTest {
     /// Files in the test folder, sorted.
     std::vector<std::string> files() const {
         std::vector<std::string> names;
-        for (const auto &e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+        for (const auto &e : fs::directory_iterator(dir))
+            names.push_back(e.path().filename().string());
         std::sort(names.begin(), names.end());
         return names;
     }
     /// Frames of a video, counted by decoding them all.
     int videoFrames(const std::string &video) {
         std::string out = path("ffprobe.txt");
-        std::string cmd = "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
-                          "stream=nb_read_frames -of csv=p=0 " + video + " >" + out + " 2>&1";
+        std::string cmd =
+            "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+            "stream=nb_read_frames -of csv=p=0 " +
+            video + " >" + out + " 2>&1";
         if (std::system(cmd.c_str()) != 0) return -1;
         return std::atoi(slurp(out).c_str());
     }
@@ -95,7 +98,7 @@ TEST_F(Animation, FramesAreNamedAndCounted) {
     std::string scene = write("box.scad", kSlidingBox);
     // Without ffmpeg on PATH: the frames, one warning naming ffmpeg, exit 0
     CliRun r = run("render -q -W 16 -H 12 --frames 3 " + scene + " -o " + path("a.png"),
-                "PATH=/nonexistent");
+                   "PATH=/nonexistent");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ((std::vector<std::string>{"a_0000.png", "a_0001.png", "a_0002.png", "box.scad",
                                         "stderr", "stdout"}),
@@ -121,7 +124,7 @@ TEST_F(Animation, FramesAreNamedAndCounted) {
 TEST_F(Animation, TimeMovesTheGeometry) {
     std::string scene = write("box.scad", kSlidingBox);
     CliRun r = run("render -q -W 64 -H 48 --frames 4 " + scene + " -o " + path("a.png"),
-                "PATH=/nonexistent");
+                   "PATH=/nonexistent");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     // The box moves right by 5 units a frame; the camera stays
     double previous = -1;
@@ -139,7 +142,7 @@ TEST_F(Animation, TimeMovesTheGeometry) {
 TEST_F(Animation, ViewportVariablesMoveTheCamera) {
     std::string scene = write("turn.scad", kTurningCamera);
     CliRun r = run("render -q -W 48 -H 36 --frames 4 " + scene + " -o " + path("a.png"),
-                "PATH=/nonexistent");
+                   "PATH=/nonexistent");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     Image f0 = readImage(path("a_0000.png")), f1 = readImage(path("a_0001.png"));
     // The model does not move, the pictures do
@@ -156,17 +159,18 @@ TEST_F(Animation, ViewportVariablesMoveTheCamera) {
 TEST_F(Animation, OneFrameOfAJobArrayEqualsTheFullRun) {
     std::string scene = write("turn.scad", kTurningCamera);
     CliRun r = run("render -q -W 40 -H 30 -s 4 --frames 5 " + scene + " -o " + path("all.png"),
-                "PATH=/nonexistent");
+                   "PATH=/nonexistent");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     r = run("render -q -W 40 -H 30 -s 4 --frames 5 --frame 3 " + scene + " -o " + path("one.png"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
     // Only that frame, and no video
-    EXPECT_EQ((std::vector<std::string>{"all_0000.png", "all_0001.png", "all_0002.png",
-                                        "all_0003.png", "all_0004.png", "one_0003.png", "stderr",
-                                        "stdout", "turn.scad"}),
-              files());
+    EXPECT_EQ(
+        (std::vector<std::string>{"all_0000.png", "all_0001.png", "all_0002.png", "all_0003.png",
+                                  "all_0004.png", "one_0003.png", "stderr", "stdout", "turn.scad"}),
+        files());
     EXPECT_EQ(slurp(dir / "all_0003.png"), slurp(dir / "one_0003.png"));
-    EXPECT_EQ(differingShare(readImage(path("all_0003.png")), readImage(path("one_0003.png")), 0), 0);
+    EXPECT_EQ(differingShare(readImage(path("all_0003.png")), readImage(path("one_0003.png")), 0),
+              0);
 }
 
 TEST_F(Animation, FailingFrameIsNamed) {
@@ -176,9 +180,9 @@ TEST_F(Animation, FailingFrameIsNamed) {
     EXPECT_NE(r.err.find("frame 2 of 4"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("too late"), std::string::npos) << r.err;
     // The frames before it are written, nothing of it or after it (no temporary left)
-    EXPECT_EQ((std::vector<std::string>{"a_0000.png", "a_0001.png", "fails.scad", "stderr",
-                                        "stdout"}),
-              files());
+    EXPECT_EQ(
+        (std::vector<std::string>{"a_0000.png", "a_0001.png", "fails.scad", "stderr", "stdout"}),
+        files());
 }
 
 TEST_F(Animation, VideoHasEveryFrame) {
@@ -206,7 +210,7 @@ TEST_F(Animation, EncodeOnlyUsesTheFramesThere) {
     // Frames rendered one by one, as a job array does, then encoded by a last job
     for (int i = 0; i < 4; ++i) {
         CliRun r = run("render -q -W 16 -H 12 --frames 4 --frame " + std::to_string(i) + " " +
-                    scene + " -o " + path("a.png"));
+                       scene + " -o " + path("a.png"));
         ASSERT_EQ(r.exitCode, 0) << r.err;
     }
     EXPECT_FALSE(fs::exists(dir / "a.mp4"));
@@ -229,20 +233,19 @@ TEST_F(Animation, BadCombinationsAreUsageErrors) {
     std::string mesh = write("tri.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
     std::string o = " -o " + path("a.png");
     for (const std::string &args : std::vector<std::string>{
-             "--frame 1 " + scene + o,                             // --frame needs --frames
-             "--fps 10 " + scene + o,                              // so do --fps,
-             "--video " + path("v.mp4") + " " + scene + o,         // --video
-             "--encode-only" + o,                                  // and --encode-only
-             "--frames 0 " + scene + o,                            // at least one frame
-             "--frames 4 --frame 4 " + scene + o,                  // frames 0..3
+             "--frame 1 " + scene + o,                      // --frame needs --frames
+             "--fps 10 " + scene + o,                       // so do --fps,
+             "--video " + path("v.mp4") + " " + scene + o,  // --video
+             "--encode-only" + o,                           // and --encode-only
+             "--frames 0 " + scene + o,                     // at least one frame
+             "--frames 4 --frame 4 " + scene + o,           // frames 0..3
              "--frames 4 --frame 1 --video " + path("v.mp4") + " " + scene + o,  // no video then
-             "--frames 4 --frame 1 --encode-only" + o,
-             "--frames 4 --fps 0 " + scene + o,
+             "--frames 4 --frame 1 --encode-only" + o, "--frames 4 --fps 0 " + scene + o,
              "--frames 4 --video " + path("v.avi") + " " + scene + o,  // .mp4 or .gif
              "--frames 4 " + scene + " -o " + path("a.jpg"),           // .png or .exr frames
-             "--frames 4 " + mesh + o,                             // static scene
-             std::string("--frames 4 --encode-only"),              // which frames?
-             "--frames 4",                                         // no scene
+             "--frames 4 " + mesh + o,                                 // static scene
+             std::string("--frames 4 --encode-only"),                  // which frames?
+             "--frames 4",                                             // no scene
          }) {
         CliRun r = run("render -q -W 8 -H 6 " + args);
         EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.err;
@@ -272,11 +275,13 @@ else
     auto echoes = [](const std::string &text) {
         std::vector<std::string> lines;
         std::regex re("ECHO: [^\n]*");
-        for (auto it = std::sregex_iterator(text.begin(), text.end(), re); it != std::sregex_iterator(); ++it)
+        for (auto it = std::sregex_iterator(text.begin(), text.end(), re);
+             it != std::sregex_iterator(); ++it)
             lines.push_back(it->str());
         return lines;
     };
-    std::string cmd = "cd " + dir.string() + " && openscad --animate 10 -o anim.echo anim.scad "
+    std::string cmd = "cd " + dir.string() +
+                      " && openscad --animate 10 -o anim.echo anim.scad "
                       ">openscad.log 2>&1 && openscad --animate 10 -o g.stl anim.scad "
                       ">>openscad.log 2>&1";
     ASSERT_EQ(std::system(cmd.c_str()), 0) << slurp(dir / "openscad.log");
@@ -284,8 +289,9 @@ else
     ASSERT_EQ(theirs.size(), 10u);
     EXPECT_NE(theirs[3].find("divided = false"), std::string::npos) << theirs[3];
 
-    CliRun r = run("render -W 64 -H 48 --facets openscad --frames 10 " + scene + " -o " +
-                path("ours.png"), "PATH=/nonexistent");
+    CliRun r =
+        run("render -W 64 -H 48 --facets openscad --frames 10 " + scene + " -o " + path("ours.png"),
+            "PATH=/nonexistent");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(echoes(r.err), theirs);
 
@@ -294,8 +300,8 @@ else
     auto theirsFrame = [&](int k, int meshFrame) {
         std::string out = "theirs" + std::to_string(k) + "m" + std::to_string(meshFrame) + ".png";
         CliRun t = run("render -q -W 64 -H 48 --facets openscad --frames 10 --frame " +
-                    std::to_string(k) + " " + scene + " -o " + path(out) + " -D 'mesh=\"" +
-                    path("g0000" + std::to_string(meshFrame) + ".stl") + "\"'");
+                       std::to_string(k) + " " + scene + " -o " + path(out) + " -D 'mesh=\"" +
+                       path("g0000" + std::to_string(meshFrame) + ".stl") + "\"'");
         EXPECT_EQ(t.exitCode, 0) << t.err;
         return readImage(path(out.substr(0, out.size() - 4) + "_000" + std::to_string(k) + ".png"));
     };

@@ -34,8 +34,8 @@ class CliTest : public TempDirTest {
     /// `stdout` and `stderr` of the test folder, which tests listing the folder see.
     CliRun run(const std::string &args, const std::string &env = "") const {
         std::string cmd = (env.empty() ? "" : "/usr/bin/env " + env + " ") +
-                          std::string(SCADRAY_BINARY) + " " + args + " >" + path("stdout") +
-                          " 2>" + path("stderr");
+                          std::string(SCADRAY_BINARY) + " " + args + " >" + path("stdout") + " 2>" +
+                          path("stderr");
         int status = std::system(cmd.c_str());
         return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "stdout"),
                 slurp(dir / "stderr")};

@@ -96,7 +96,8 @@ TEST_F(Cli, BadNumbersAreLocatedNeverACrash) {
         {"multmatrix([[1, 0, 0, 0], [1, 0, 0, 0], [0, 0, 1, 0]]) cube();", 0, "is singular"},
         {"multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 0]]) cube();", 1,
          "non-affine"},
-        {"scale(1e200) cube();", 1, "extends to [0, 0, 0] .. [1e+200, 1e+200, 1e+200], beyond the supported range"},
+        {"scale(1e200) cube();", 1,
+         "extends to [0, 0, 0] .. [1e+200, 1e+200, 1e+200], beyond the supported range"},
         {"scale(1e-200) cube();", 1, "below the supported minimum"},
         {"translate([1e300, 0, 0]) sphere(1);", 1, "beyond the supported range"},
         {"translate([0/0, 0, 0]) cube();", 0, "translate("},
@@ -123,7 +124,8 @@ TEST_F(Cli, BadNumbersAreLocatedNeverACrash) {
     for (const Case &c : cases) {
         SCOPED_TRACE(c.src);
         std::string name = "n" + std::to_string(n++);
-        std::string in = write(name + ".scad", std::string("include <scadray.scad> sphere(0.5);\n") + c.src + "\n");
+        std::string in = write(name + ".scad",
+                               std::string("include <scadray.scad> sphere(0.5);\n") + c.src + "\n");
         std::string out = (dir / (name + ".png")).string();
         CliRun r = run("render -W 24 -H 16 " + in + " -o " + out);
         EXPECT_EQ(r.exitCode, c.exitCode) << r.err;
@@ -146,27 +148,39 @@ TEST_F(Cli, PlanIsPrintedBeforeRendering) {
     EXPECT_LT(plan, summary);
     EXPECT_NE(r.err.find("dropped: 1 behind the camera"), std::string::npos) << r.err;
     // A sharp scene is antialiased adaptively, and the plan says where the samples went
-    EXPECT_NE(r.err.find("samples: adaptive, each pixel's centre; where a neighbour differs"), std::string::npos)
+    EXPECT_NE(r.err.find("samples: adaptive, each pixel's centre; where a neighbour differs"),
+              std::string::npos)
         << r.err;
     EXPECT_NE(r.err.find(", adaptive "), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find("\nplan: samples: adaptive, pixels by samples: 1: "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("\nplan: samples: adaptive, pixels by samples: 1: "), std::string::npos)
+        << r.err;
     // A Monte Carlo scene chooses 4 samples; -s overrides
     CliRun mc = run("render --plan -W 16 -H 12 " + scene("montecarlo/glossy.scad") + " -o " + out);
-    EXPECT_NE(mc.err.find("samples: 4 per pixel (chosen: Monte Carlo"), std::string::npos) << mc.err;
+    EXPECT_NE(mc.err.find("samples: 4 per pixel (chosen: Monte Carlo"), std::string::npos)
+        << mc.err;
     EXPECT_NE(mc.err.find(", 4 spp,"), std::string::npos) << mc.err;
-    CliRun given = run("render --plan -s 2 -W 16 -H 12 " + scene("montecarlo/glossy.scad") + " -o " + out);
+    CliRun given =
+        run("render --plan -s 2 -W 16 -H 12 " + scene("montecarlo/glossy.scad") + " -o " + out);
     EXPECT_NE(given.err.find("samples: 2 per pixel (given)"), std::string::npos) << given.err;
     // --aa-* there asks for sampling adaptive to the noise, at its own tolerance unless given
-    CliRun noise = run("render --plan --aa-max 16 -W 16 -H 12 " + scene("montecarlo/glossy.scad") + " -o " + out);
-    EXPECT_NE(noise.err.find("adaptive to Monte Carlo noise, every pixel 4, 16 ... up to 16 stratified samples "
-                             "until the standard error is below 0.02 (given)"),
+    CliRun noise = run("render --plan --aa-max 16 -W 16 -H 12 " + scene("montecarlo/glossy.scad") +
+                       " -o " + out);
+    EXPECT_NE(
+        noise.err.find(
+            "adaptive to Monte Carlo noise, every pixel 4, 16 ... up to 16 stratified samples "
+            "until the standard error is below 0.02 (given)"),
+        std::string::npos)
+        << noise.err;
+    EXPECT_NE(noise.err.find("\nplan: samples: adaptive, pixels by samples: 4: "),
               std::string::npos)
         << noise.err;
-    EXPECT_NE(noise.err.find("\nplan: samples: adaptive, pixels by samples: 4: "), std::string::npos) << noise.err;
-    CliRun loose = run("render --plan --aa-tolerance 0.5 -W 16 -H 12 " + scene("montecarlo/glossy.scad") + " -o " + out);
-    EXPECT_NE(loose.err.find("until the standard error is below 0.5 (given)"), std::string::npos) << loose.err;
+    CliRun loose = run("render --plan --aa-tolerance 0.5 -W 16 -H 12 " +
+                       scene("montecarlo/glossy.scad") + " -o " + out);
+    EXPECT_NE(loose.err.find("until the standard error is below 0.5 (given)"), std::string::npos)
+        << loose.err;
     // Without the plan nothing is left out
-    CliRun naive = run("render --plan --no-plan -W 16 -H 12 " + scene("print_plate.scad") + " -o " + out);
+    CliRun naive =
+        run("render --plan --no-plan -W 16 -H 12 " + scene("print_plate.scad") + " -o " + out);
     EXPECT_NE(naive.err.find("plan (disabled"), std::string::npos) << naive.err;
     EXPECT_NE(naive.err.find("dropped: 0 behind the camera"), std::string::npos) << naive.err;
     EXPECT_NE(naive.err.find("0 pruned subtrees"), std::string::npos) << naive.err;
@@ -175,7 +189,8 @@ TEST_F(Cli, PlanIsPrintedBeforeRendering) {
 TEST_F(Cli, AdaptiveAntialiasingOptions) {
     std::string out = (dir / "aa.png").string(), in = scene("lecture_csg.scad");
     // The summary line gives the mean samples per pixel
-    CliRun r = run("render -W 32 -H 24 --aa-max 16 --aa-threshold 0.1 --aa-tolerance 0.01 " + in + " -o " + out);
+    CliRun r = run("render -W 32 -H 24 --aa-max 16 --aa-threshold 0.1 --aa-tolerance 0.01 " + in +
+                   " -o " + out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     size_t at = r.err.find("32x24, adaptive ");
     ASSERT_NE(at, std::string::npos) << r.err;
@@ -220,13 +235,15 @@ TEST_F(Cli, BadOptionsAndFiles) {
     EXPECT_NE(missing.err.find("no such file"), std::string::npos);
     CliRun type = run("render " + write("x.txt", "cube(1);"));
     EXPECT_EQ(type.exitCode, 1);
-    CliRun format = run("render -q " + scene("glass.scad") + " -W 8 -H 8 -o " + (dir / "x.bmpx").string());
+    CliRun format =
+        run("render -q " + scene("glass.scad") + " -W 8 -H 8 -o " + (dir / "x.bmpx").string());
     EXPECT_EQ(format.exitCode, 1);
     EXPECT_FALSE(fs::exists(dir / "x.bmpx"));
 }
 
 TEST_F(Cli, PlainScadGetsCameraAndLights) {
-    std::string in = write("plain.scad", "difference() { cube(10, center=true); sphere(6.5, $fn=48); }\n");
+    std::string in =
+        write("plain.scad", "difference() { cube(10, center=true); sphere(6.5, $fn=48); }\n");
     std::string out = (dir / "plain.exr").string();
     CliRun r = run("render -W 48 -H 36 " + in + " -o " + out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -261,7 +278,9 @@ TEST_F(Cli, ExportWritesPovAndIni) {
 TEST_F(Cli, CompareExitCodes) {
     std::string a = (dir / "a.exr").string(), b = (dir / "b.exr").string();
     ASSERT_EQ(run("render -q -W 64 -H 48 -s 4 " + scene("csg_part.scad") + " -o " + a).exitCode, 0);
-    ASSERT_EQ(run("render -q -W 64 -H 48 -s 4 --seed 7 " + scene("csg_part.scad") + " -o " + b).exitCode, 0);
+    ASSERT_EQ(
+        run("render -q -W 64 -H 48 -s 4 --seed 7 " + scene("csg_part.scad") + " -o " + b).exitCode,
+        0);
     CliRun same = run("compare " + a + " " + b);
     EXPECT_EQ(same.exitCode, 0) << same.out;
     EXPECT_NE(same.out.find("PASS"), std::string::npos);
@@ -315,7 +334,8 @@ TEST_F(Cli, BrokenMeshFilesAreLocatedErrorsAndWriteNothing) {
     };
     std::vector<Case> cases = {
         // JSON syntax error: line and column in the file
-        {"syntax.gltf", "{\"asset\": {\"version\": \"2.0\"},\n  \"nodes\": [ }\n", "syntax.gltf:2:"},
+        {"syntax.gltf", "{\"asset\": {\"version\": \"2.0\"},\n  \"nodes\": [ }\n",
+         "syntax.gltf:2:"},
         // Wrong index: the JSON path of the offending value
         {"index.gltf",
          "{\"asset\":{\"version\":\"2.0\"},\"scenes\":[{\"nodes\":[3]}],\"nodes\":[{}]}\n",
@@ -345,8 +365,9 @@ TEST_F(Cli, BrokenMeshFilesAreLocatedErrorsAndWriteNothing) {
 TEST_F(Cli, BadAreaLightIsALocatedErrorForEveryCommand) {
     // A circular light needs a 2 x 2 grid at least: render, export and converge all stop at
     // its line and column and write nothing
-    std::string in = write("area.scad", "use <scadray.scad>\ncube(1);\n"
-                                        "  area_light(samples=[1, 4], circular=true);\n");
+    std::string in = write("area.scad",
+                           "use <scadray.scad>\ncube(1);\n"
+                           "  area_light(samples=[1, 4], circular=true);\n");
     std::string lib = " -L " + std::string(SCADRAY_SOURCE_DIR) + "/scenes";
     for (const std::string &cmd :
          {"render " + in + lib + " -o " + (dir / "a.png").string(),
@@ -357,7 +378,8 @@ TEST_F(Cli, BadAreaLightIsALocatedErrorForEveryCommand) {
         EXPECT_EQ(r.exitCode, 1) << r.err;
         EXPECT_NE(r.err.find("area.scad:3:3"), std::string::npos) << r.err;
         EXPECT_NE(r.err.find("circular and orient need samples of at least [2, 2]"),
-                  std::string::npos) << r.err;
+                  std::string::npos)
+            << r.err;
     }
     EXPECT_FALSE(fs::exists(dir / "a.png"));
     EXPECT_FALSE(fs::exists(dir / "a.pov"));
@@ -388,8 +410,9 @@ TEST_F(Cli, MaxStepsCapsEveryCommandAndIsNamedWhenHit) {
 
 TEST_F(Cli, ProgressOfALongEvaluationOnlyOnATerminal) {
     // About 15 M steps: several seconds here, over the 1 s delay on any machine
-    std::string in = write("long.scad", "function f(n) = n == 0 ? 0 : f(n - 1);\n"
-                                        "x = [for (i = [0:149]) f(100000)];\ncube();\n");
+    std::string in = write("long.scad",
+                           "function f(n) = n == 0 ? 0 : f(n - 1);\n"
+                           "x = [for (i = [0:149]) f(100000)];\ncube();\n");
     CliRun plain = run("dump " + in);
     ASSERT_EQ(plain.exitCode, 0) << plain.err;
     EXPECT_EQ(plain.err.find("evaluating"), std::string::npos) << plain.err;
@@ -431,10 +454,12 @@ TEST_F(Cli, ExportWritesMeshesAsMesh2) {
 }
 
 TEST_F(Cli, FacetsChooseHowRoundPrimitivesAreDrawn) {
-    std::string in = write("f.scad", "cylinder(r=2, h=1, $fn=6);\ntranslate([5,0,0]) sphere(1, $fn=64);\n");
+    std::string in =
+        write("f.scad", "cylinder(r=2, h=1, $fn=6);\ntranslate([5,0,0]) sphere(1, $fn=64);\n");
     auto polytopes = [](const std::string &text) {
         size_t n = 0;
-        for (size_t at = text.find("polytope"); at != std::string::npos; at = text.find("polytope", at + 1))
+        for (size_t at = text.find("polytope"); at != std::string::npos;
+             at = text.find("polytope", at + 1))
             ++n;
         return n;
     };
@@ -459,7 +484,8 @@ TEST_F(Cli, DumpPrintsTheIr) {
     std::string in = write("d.scad", "translate([1,2,3]) cube(2);\n");
     CliRun r = run("dump " + in);
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_NE(r.out.find("transform [[1, 0, 0, 1], [0, 1, 0, 2], [0, 0, 1, 3]]"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("transform [[1, 0, 0, 1], [0, 1, 0, 2], [0, 0, 1, 3]]"), std::string::npos)
+        << r.out;
     EXPECT_NE(r.out.find("box min [0, 0, 0] max [2, 2, 2]"), std::string::npos);
     EXPECT_NE(r.out.find("camera automatic"), std::string::npos);
 }

@@ -274,8 +274,7 @@ class Converge : public test::CliTest {
 TEST_F(Converge, SoftShadowErrorFallsWithSamples) {
     std::string scene = softShadows();
     fs::path out = dir / "out";
-    CliRun r =
-        run("-W 32 -H 24 --max-samples 8 -t 2 --seed 3 -o " + out.string() + " " + scene);
+    CliRun r = run("-W 32 -H 24 --max-samples 8 -t 2 --seed 3 -o " + out.string() + " " + scene);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     std::string header;
     auto table = rows(slurp(out / "soft_converge.csv"), &header);
@@ -376,9 +375,8 @@ TEST_F(Converge, BadOptionsFailClearlyAndWriteNothing) {
 TEST_F(Converge, PovRayMissingIsANote) {
     std::string scene = softShadows();
     fs::path out = dir / "out";
-    CliRun r =
-        run("-W 16 -H 12 --max-samples 2 -t 1 --povray -o " + out.string() + " " + scene,
-            "PATH=/nonexistent");
+    CliRun r = run("-W 16 -H 12 --max-samples 2 -t 1 --povray -o " + out.string() + " " + scene,
+                   "PATH=/nonexistent");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.err.find("POV-Ray not installed; skipped"), std::string::npos) << r.err;
     std::string header;
@@ -392,8 +390,8 @@ TEST_F(Converge, AgainstPovRay) {
         GTEST_SKIP() << "POV-Ray (povray) is not installed";
     std::string scene = softShadows();
     fs::path out = dir / "out";
-    CliRun r = run("-W 32 -H 24 --max-samples 4 -t 2 --povray --supersample 2 -o " +
-                        out.string() + " " + scene);
+    CliRun r = run("-W 32 -H 24 --max-samples 4 -t 2 --povray --supersample 2 -o " + out.string() +
+                   " " + scene);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     std::string header;
     auto table = rows(slurp(out / "soft_converge.csv"), &header);

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // `-e` end to end: glTF models get the studio sky by default (a mirror sphere is not black and
 // shows the gradient), `-e none` turns it off, `-e FILE.hdr` (a Radiance file written here,
-// read through OpenImageIO) is seen and reflected, and a bad environment file is an error that names it
-// and writes nothing.
+// read through OpenImageIO) is seen and reflected, and a bad environment file is an error that
+// names it and writes nothing.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -61,8 +61,9 @@ void writeFlatHdr(const std::string &path, int w, int h, const Rgb &c) {
     int e;
     double m = std::frexp(std::max({c.r, c.g, c.b}), &e);
     double scale = m * 256 / std::max({c.r, c.g, c.b});
-    unsigned char px[4] = {static_cast<unsigned char>(c.r * scale), static_cast<unsigned char>(c.g * scale),
-                           static_cast<unsigned char>(c.b * scale), static_cast<unsigned char>(e + 128)};
+    unsigned char px[4] = {
+        static_cast<unsigned char>(c.r * scale), static_cast<unsigned char>(c.g * scale),
+        static_cast<unsigned char>(c.b * scale), static_cast<unsigned char>(e + 128)};
     for (int i = 0; i < w * h; ++i) out.write(reinterpret_cast<const char *>(px), 4);
 }
 

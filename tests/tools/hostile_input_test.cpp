@@ -3,13 +3,13 @@
 // bounded in memory and output, every numeric option refuses out-of-range values, NaN and
 // infinities before converting them, a FIFO or a device as a scene is refused before it is
 // opened, and neither an interrupt nor a long output name leaves a temporary file behind.
-#include <CLI/CLI.hpp>
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -70,7 +70,8 @@ TEST(DiagnosticSinkFlood, RepeatsAreCountedNotKept) {
     auto file = std::make_shared<const std::string>("flood.scad");
     constexpr int kWarnings = 1'000'000;
     for (int i = 0; i < kWarnings; ++i)
-        diag.warning({file, 1, i + 1}, "Ignoring unknown variable 'x" + std::to_string(i % 7) + "'");
+        diag.warning({file, 1, i + 1},
+                     "Ignoring unknown variable 'x" + std::to_string(i % 7) + "'");
     EXPECT_EQ(heard, kWarningsShownPerKind);
     EXPECT_EQ(diag.all().size(), static_cast<size_t>(kWarningsShownPerKind));
     EXPECT_EQ(diag.count(Severity::Warning), kWarnings);
@@ -209,38 +210,38 @@ TEST(NumericOptions, RangeRefusesOverflowNanAndInfinityBeforeConverting) {
         }
         return "ok";
     };
-    for (const auto &good : std::vector<std::vector<std::string>>{
-             {"-W", "1"},
-             {"-W", "32768"},
-             {"--steps", "9223372036854775807"},
-             {"--seed", "18446744073709551615"},
-             {"--margin", "0"},
-             {"--margin", "1e300"},
-             {"--alpha", "1"},
-             {"--alpha", "1e-300"}})
+    for (const auto &good :
+         std::vector<std::vector<std::string>>{{"-W", "1"},
+                                               {"-W", "32768"},
+                                               {"--steps", "9223372036854775807"},
+                                               {"--seed", "18446744073709551615"},
+                                               {"--margin", "0"},
+                                               {"--margin", "1e300"},
+                                               {"--alpha", "1"},
+                                               {"--alpha", "1e-300"}})
         EXPECT_EQ(parse(good), "ok") << good[0] << " " << good[1];
     struct Bad {
         std::vector<std::string> args;
         std::string message;
     };
-    for (const auto &bad : std::vector<Bad>{
-             {{"-W", "0"}, "-W: must be [1, 32768], not 0"},
-             {{"-W", "32769"}, "must be [1, 32768], not 32769"},
-             {{"-W", "2147483648"}, "must be an integer [1, 32768], not '2147483648'"},
-             {{"-W", "1e3"}, "must be an integer"},
-             {{"-W", "12abc"}, "must be an integer"},
-             {{"-W", ""}, "must be an integer"},
-             {{"--steps", "-1"}, "must be >= 0, not -1"},
-             {{"--steps", "9223372036854775808"}, "must be an integer"},
-             {{"--seed", "-1"}, "must be an integer >= 0, not '-1'"},
-             {{"--seed", "18446744073709551616"}, "must be an integer"},
-             {{"--margin", "nan"}, "--margin: must be a number >= 0, not 'nan'"},
-             {{"--margin", "inf"}, "must be a number"},
-             {{"--margin", "-inf"}, "must be a number"},
-             {{"--margin", "1e999"}, "must be a number"},
-             {{"--margin", "-0.5"}, "must be >= 0, not -0.5"},
-             {{"--alpha", "0"}, "must be (0, 1], not 0"},
-             {{"--alpha", "NaN"}, "must be a number"}}) {
+    for (const auto &bad :
+         std::vector<Bad>{{{"-W", "0"}, "-W: must be [1, 32768], not 0"},
+                          {{"-W", "32769"}, "must be [1, 32768], not 32769"},
+                          {{"-W", "2147483648"}, "must be an integer [1, 32768], not '2147483648'"},
+                          {{"-W", "1e3"}, "must be an integer"},
+                          {{"-W", "12abc"}, "must be an integer"},
+                          {{"-W", ""}, "must be an integer"},
+                          {{"--steps", "-1"}, "must be >= 0, not -1"},
+                          {{"--steps", "9223372036854775808"}, "must be an integer"},
+                          {{"--seed", "-1"}, "must be an integer >= 0, not '-1'"},
+                          {{"--seed", "18446744073709551616"}, "must be an integer"},
+                          {{"--margin", "nan"}, "--margin: must be a number >= 0, not 'nan'"},
+                          {{"--margin", "inf"}, "must be a number"},
+                          {{"--margin", "-inf"}, "must be a number"},
+                          {{"--margin", "1e999"}, "must be a number"},
+                          {{"--margin", "-0.5"}, "must be >= 0, not -0.5"},
+                          {{"--alpha", "0"}, "must be (0, 1], not 0"},
+                          {{"--alpha", "NaN"}, "must be a number"}}) {
         std::string err = parse(bad.args);
         EXPECT_NE(err.find(bad.message), std::string::npos)
             << bad.args[0] << " " << bad.args[1] << ": " << err;
@@ -310,9 +311,10 @@ TEST_F(Hostile, FifoDeviceAndFolderScenesAreRefusedBeforeOpening) {
     struct Case {
         std::string cmd, scene;
     };
-    for (const auto &c : std::vector<Case>{{"render -W 8 -H 8 -o " + (dir / "x.png").string(), fifo},
-                                           {"dump", zero},
-                                           {"export -o " + (dir / "x.pov").string(), folder}}) {
+    for (const auto &c :
+         std::vector<Case>{{"render -W 8 -H 8 -o " + (dir / "x.png").string(), fifo},
+                           {"dump", zero},
+                           {"export -o " + (dir / "x.pov").string(), folder}}) {
         SCOPED_TRACE(c.cmd + " " + c.scene);
         Run r = run(c.cmd + " " + c.scene);
         EXPECT_EQ(r.exitCode, 1) << r.err;
@@ -422,8 +424,9 @@ TEST_F(Hostile, InterruptStopsAnExternalRenderer) {
         installInterruptCleanup();
         ProcessOptions po;
         po.timeoutSeconds = 60;
-        runProcess({"sh", "-c", "echo $$ > " + pidFile + ".tmp && mv " + pidFile + ".tmp " +
-                                    pidFile + " && exec sleep 60"},
+        runProcess({"sh", "-c",
+                    "echo $$ > " + pidFile + ".tmp && mv " + pidFile + ".tmp " + pidFile +
+                        " && exec sleep 60"},
                    po);
         ::_exit(0);
     }
@@ -464,8 +467,7 @@ TEST_F(Hostile, OutputNamesUpToTheFileSystemLimitWork) {
     // The new file has the permissions of any new file, not mkstemp's 0600
     mode_t mask = ::umask(0);
     ::umask(mask);
-    EXPECT_EQ(fs::status(dir / name).permissions(),
-              static_cast<fs::perms>(0666 & ~mask));
+    EXPECT_EQ(fs::status(dir / name).permissions(), static_cast<fs::perms>(0666 & ~mask));
 }
 
 // ---- 5. Other hostile arguments -------------------------------------------------------------

@@ -57,8 +57,8 @@ TEST_F(HostileNames, CheckNamesAreNeverPovRayOptions) {
     // Each name once made `check` fail ("Problem with option setting") or made POV-Ray read
     // another file: a space splits the argument, KEY=VALUE and +X words are options, a '#'
     // or a quote ends a value
-    const std::vector<std::string> names = {"my part", "evil +A0.3", "Include_Ini=evil",
-                                            "a#b", "-x", "q\"uote", "[sq]", "semi;colon"};
+    const std::vector<std::string> names = {
+        "my part", "evil +A0.3", "Include_Ini=evil", "a#b", "-x", "q\"uote", "[sq]", "semi;colon"};
     for (const std::string &name : names) {
         SCOPED_TRACE(name);
         std::string file = name + ".scad";
@@ -191,8 +191,8 @@ TEST_F(HostileNames, ReportFromRefusesPicturesNamedOutsideTheFolder) {
 // ---- Outputs that would replace inputs -------------------------------------------------------
 
 TEST_F(HostileNames, CompareNeverWritesItsHeatMapOverAnInput) {
-    test::CliRun made = runHere("render " + scene("crosscheck/primitives.scad") +
-                                " -W 16 -H 12 -s 1 -o a.png");
+    test::CliRun made =
+        runHere("render " + scene("crosscheck/primitives.scad") + " -W 16 -H 12 -s 1 -o a.png");
     ASSERT_EQ(made.exitCode, 0) << made.err;
     fs::copy_file(dir / "a.png", dir / "b.png");
     fs::create_symlink("a.png", dir / "alias.png");
@@ -209,8 +209,8 @@ TEST_F(HostileNames, CompareNeverWritesItsHeatMapOverAnInput) {
 
 TEST_F(HostileNames, RenderNeverWritesOverAFileTheSceneReads) {
     // A height map the scene reads is no place for its picture
-    test::CliRun made = runHere("render " + scene("crosscheck/primitives.scad") +
-                                " -W 8 -H 8 -s 1 -o map.png");
+    test::CliRun made =
+        runHere("render " + scene("crosscheck/primitives.scad") + " -W 8 -H 8 -s 1 -o map.png");
     ASSERT_EQ(made.exitCode, 0) << made.err;
     write("s.scad", "surface(file=\"map.png\");\n");
     std::string before = slurp(dir / "map.png");
@@ -296,9 +296,10 @@ TEST_F(HostileNames, ExportThatCannotFinishLeavesNoFile) {
     ASSERT_LT(smallest, blocks * 1024);
     ASSERT_GT(largest, blocks * 1024);
     // SIGXFSZ ignored, so that a write past the limit fails with EFBIG as on a full disk
-    test::CliRun r = run("--version >/dev/null; cd '" + dir.string() + "' && trap '' XFSZ && ulimit -f " +
-                         std::to_string(blocks) + " && " + std::string(SCADRAY_BINARY) +
-                         " export " + model + " -o cut.pov </dev/null");
+    test::CliRun r =
+        run("--version >/dev/null; cd '" + dir.string() + "' && trap '' XFSZ && ulimit -f " +
+            std::to_string(blocks) + " && " + std::string(SCADRAY_BINARY) + " export " + model +
+            " -o cut.pov </dev/null");
     EXPECT_NE(r.exitCode, 0);
     for (const std::string &f : allFiles()) {
         EXPECT_NE(f.rfind("cut", 0), 0u) << "left behind: " << f;

@@ -67,8 +67,8 @@ TEST_F(ImageModuleCli, MissingModuleIsAClearErrorAndPngNeedsNone) {
     std::string exr = (dir / "x.exr").string();
     auto [code, err] = run(env, "render " + scene + " -W 2 -H 2 -o " + exr);
     EXPECT_EQ(code, 1) << err;
-    for (const std::string &part : {std::string("scadray_oiio.so"), absent, exr,
-                                    std::string("SCADRAY_OIIO_MODULE")})
+    for (const std::string &part :
+         {std::string("scadray_oiio.so"), absent, exr, std::string("SCADRAY_OIIO_MODULE")})
         EXPECT_NE(err.find(part), std::string::npos) << part << " not in: " << err;
     EXPECT_FALSE(fs::exists(exr));
     // PNG in and out without the module

@@ -21,12 +21,13 @@ class TileMerge : public test::CliTest {
     TileMerge() : CliTest("scadray_tiles_") {}
 
     /// Renders `tiles` tiles of `sceneArgs` as tile_K.exr; the list of their paths.
-    std::string renderTiles(const std::string &sceneArgs, int tiles, const std::string &prefix = "tile_") {
+    std::string renderTiles(const std::string &sceneArgs, int tiles,
+                            const std::string &prefix = "tile_") {
         std::string list;
         for (int k = 1; k <= tiles; ++k) {
             std::string out = path(prefix + std::to_string(k) + ".exr");
-            CliRun r = run("render -q " + sceneArgs + " --tile " + std::to_string(k) + "/" + std::to_string(tiles) +
-                        " -o " + out);
+            CliRun r = run("render -q " + sceneArgs + " --tile " + std::to_string(k) + "/" +
+                           std::to_string(tiles) + " -o " + out);
             EXPECT_EQ(r.exitCode, 0) << r.err;
             list += " " + out;
         }
@@ -55,7 +56,8 @@ class TileMerge : public test::CliTest {
 
 TEST_F(TileMerge, MergedIsTheSingleRenderBitForBit) {
     // Default sampling of a sharp scene: adaptive to edges
-    for (int tiles : {1, 3, 7}) expectMergeIsSingleRender(scene("default.scad") + " -W 45 -H 31", tiles);
+    for (int tiles : {1, 3, 7})
+        expectMergeIsSingleRender(scene("default.scad") + " -W 45 -H 31", tiles);
     // Uniform sampling
     expectMergeIsSingleRender(scene("default.scad") + " -W 45 -H 31 -s 4 --seed 5", 3);
     // Monte Carlo scene: sampling adaptive to its noise
@@ -64,7 +66,9 @@ TEST_F(TileMerge, MergedIsTheSingleRenderBitForBit) {
 
 TEST_F(TileMerge, TileFileSaysWhereItLies) {
     std::string out = path("t.exr");
-    ASSERT_EQ(run("render -q " + scene("default.scad") + " -W 40 -H 30 --tile 2/3 -o " + out).exitCode, 0);
+    ASSERT_EQ(
+        run("render -q " + scene("default.scad") + " -W 40 -H 30 --tile 2/3 -o " + out).exitCode,
+        0);
     ImageMetadata meta;
     ImageEstimate est = readEstimate(out, false, &meta);
     EXPECT_EQ(est.mean.width(), 40);
@@ -98,8 +102,10 @@ TEST_F(TileMerge, RefusesTilesOfAnotherRender) {
     EXPECT_NE(mergeWith(base + " --aa-threshold 0.1").find("aa-threshold"), std::string::npos);
     EXPECT_NE(mergeWith(base + " --facets openscad").find("facets=openscad"), std::string::npos);
     EXPECT_NE(mergeWith(base + " -e studio").find("environment=studio"), std::string::npos);
-    EXPECT_NE(mergeWith(scene("default.scad") + " -W 30 -H 22").find("different picture sizes"), std::string::npos);
-    EXPECT_NE(mergeWith(scene("glass.scad") + " -W 30 -H 20").find("different scenes"), std::string::npos);
+    EXPECT_NE(mergeWith(scene("default.scad") + " -W 30 -H 22").find("different picture sizes"),
+              std::string::npos);
+    EXPECT_NE(mergeWith(scene("glass.scad") + " -W 30 -H 20").find("different scenes"),
+              std::string::npos);
     // A -D that changes the scene
     std::string scad = path("ball.scad");
     std::ofstream(scad) << "r = 1;\nsphere(r);\n";
@@ -142,8 +148,8 @@ TEST_F(TileMerge, RefusesOverlappingAndMissingTiles) {
     EXPECT_NE(m.err.find("not a tile"), std::string::npos) << m.err;
     EXPECT_FALSE(fs::exists(path("m.png")));
     // In any order, the whole set merges
-    ASSERT_EQ(run("merge " + path("tile_4.exr") + " " + path("tile_2.exr") + " " + path("tile_1.exr") + " " +
-                  path("tile_3.exr") + " -o " + path("m.png"))
+    ASSERT_EQ(run("merge " + path("tile_4.exr") + " " + path("tile_2.exr") + " " +
+                  path("tile_1.exr") + " " + path("tile_3.exr") + " -o " + path("m.png"))
                   .exitCode,
               0);
 }

@@ -31,7 +31,7 @@ TEST_F(WorkBudget, DefaultBudgetStopsTheRunawayOffsetWithALocatedError) {
 TEST_F(WorkBudget, TheOptionRaisesTheBudget) {
     // A sphere of 40 x 20 fragments has 802 faces; its shadow examines about 640,000 pairs
     std::string in = write("shadow.scad", "linear_extrude(1) projection() sphere(5, $fn=40);\n");
-    for (const char *cmd : {"dump", "render -q -W 32 -H 24 -o " }) {
+    for (const char *cmd : {"dump", "render -q -W 32 -H 24 -o "}) {
         SCOPED_TRACE(cmd);
         std::string out = std::string(cmd).find("render") == 0 ? path("o.png") + " " : "";
         test::CliRun low = run(std::string(cmd) + out + " --max-geometry 100000 " + in);

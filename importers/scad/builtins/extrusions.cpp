@@ -6,13 +6,13 @@
 
 #include "core/ir/facet_mode.h"
 #include "core/meshing/facets.h"
+#include "importers/scad/builtins/families.h"
 #include "importers/scad/builtins/file_support.h"
 #include "importers/scad/builtins/module_support.h"
 #include "importers/scad/builtins/placeholders2d.h"
 #include "importers/scad/geometry2d/clipper2d.h"
 #include "importers/scad/geometry2d/extrude.h"
 #include "importers/scad/geometry2d/revolve.h"
-#include "importers/scad/builtins/families.h"
 
 namespace rt::scad {
 

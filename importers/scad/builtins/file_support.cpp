@@ -9,11 +9,11 @@
 #include <optional>
 #include <unordered_set>
 
-#include "importers/scad/builtins/file_support.h"
 #include "core/meshing/triangulate.h"
 #include "core/system/input_file.h"
 #include "importers/gltf/gltf_importer.h"
 #include "importers/mesh/mesh_reader.h"
+#include "importers/scad/builtins/file_support.h"
 #include "importers/scad/builtins/placeholders2d.h"
 #include "importers/scad/formats/dxf.h"
 #include "importers/scad/formats/surface.h"

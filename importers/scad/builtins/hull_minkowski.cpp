@@ -13,11 +13,11 @@
 #include "core/meshing/facets.h"
 #include "core/meshing/hull.h"
 #include "importers/scad/builtins/colors.h"
+#include "importers/scad/builtins/families.h"
 #include "importers/scad/builtins/module_support.h"
 #include "importers/scad/builtins/placeholders2d.h"
 #include "importers/scad/geometry2d/clipper2d.h"
 #include "importers/scad/geometry2d/projection.h"
-#include "importers/scad/builtins/families.h"
 
 namespace rt::scad {
 

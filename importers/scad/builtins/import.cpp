@@ -13,13 +13,13 @@
 #include "core/system/input_file.h"
 #include "importers/gltf/gltf_importer.h"
 #include "importers/mesh/mesh_reader.h"
+#include "importers/scad/builtins/families.h"
 #include "importers/scad/builtins/file_support.h"
 #include "importers/scad/builtins/module_support.h"
 #include "importers/scad/builtins/placeholders2d.h"
 #include "importers/scad/formats/dxf.h"
 #include "importers/scad/formats/surface.h"
 #include "importers/scad/formats/svg.h"
-#include "importers/scad/builtins/families.h"
 
 namespace rt::scad {
 

@@ -8,8 +8,8 @@
 #include "core/ir/ir_validate.h"
 #include "core/ir/scene_defaults.h"
 #include "importers/scad/builtins/colors.h"
-#include "importers/scad/builtins/module_support.h"
 #include "importers/scad/builtins/families.h"
+#include "importers/scad/builtins/module_support.h"
 
 namespace rt::scad {
 

@@ -14,13 +14,13 @@
 #include <unordered_set>
 #include <variant>
 
-#include "importers/scad/builtins/module_support.h"
 #include "core/meshing/facets.h"
 #include "core/meshing/hull.h"
 #include "core/meshing/triangulate.h"
 #include "importers/gltf/gltf_importer.h"
 #include "importers/mesh/mesh_reader.h"
 #include "importers/scad/builtins/colors.h"
+#include "importers/scad/builtins/module_support.h"
 #include "importers/scad/geometry2d/clipper2d.h"
 #include "importers/scad/geometry2d/projection.h"
 

@@ -4,13 +4,13 @@
 #include <cmath>
 #include <cstdio>
 
-#include "importers/scad/builtins/placeholders2d.h"
-#include "importers/scad/builtins/families.h"
 #include "core/ir/facet_mode.h"
 #include "core/math/degree_trig.h"
 #include "core/math/float_util.h"
 #include "core/meshing/facets.h"
+#include "importers/scad/builtins/families.h"
 #include "importers/scad/builtins/module_support.h"
+#include "importers/scad/builtins/placeholders2d.h"
 #include "importers/scad/geometry2d/clipper2d.h"
 #include "importers/scad/geometry2d/extrude.h"
 #include "importers/scad/geometry2d/revolve.h"

@@ -16,8 +16,8 @@
 #include "importers/gltf/gltf_importer.h"
 #include "importers/mesh/mesh_reader.h"
 #include "importers/scad/builtins/colors.h"
-#include "importers/scad/builtins/module_support.h"
 #include "importers/scad/builtins/families.h"
+#include "importers/scad/builtins/module_support.h"
 
 namespace rt::scad {
 

@@ -13,12 +13,12 @@
 #include "core/math/float_util.h"
 #include "core/meshing/facets.h"
 #include "core/meshing/hull.h"
+#include "importers/scad/builtins/families.h"
 #include "importers/scad/builtins/module_support.h"
 #include "importers/scad/builtins/placeholders2d.h"
 #include "importers/scad/geometry2d/clipper2d.h"
 #include "importers/scad/geometry2d/extrude.h"
 #include "importers/scad/geometry2d/projection.h"
-#include "importers/scad/builtins/families.h"
 
 namespace rt::scad {
 

@@ -4,10 +4,10 @@
 #include <climits>
 #include <cmath>
 
+#include "importers/scad/builtins/families.h"
 #include "importers/scad/builtins/module_support.h"
 #include "importers/scad/builtins/placeholders2d.h"
 #include "importers/scad/geometry2d/text_render.h"
-#include "importers/scad/builtins/families.h"
 
 namespace rt::scad {
 

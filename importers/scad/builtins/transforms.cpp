@@ -8,9 +8,9 @@
 #include "core/meshing/facets.h"
 #include "core/meshing/hull.h"
 #include "importers/scad/builtins/colors.h"
+#include "importers/scad/builtins/families.h"
 #include "importers/scad/builtins/module_support.h"
 #include "importers/scad/builtins/placeholders2d.h"
-#include "importers/scad/builtins/families.h"
 
 namespace rt::scad {
 

@@ -8,9 +8,9 @@
 
 #include "core/math/degree_trig.h"
 #include "core/system/utf8.h"
-#include "importers/scad/lang/lexer.h"
 #include "importers/scad/builtins/families.h"
 #include "importers/scad/builtins/function_support.h"
+#include "importers/scad/lang/lexer.h"
 
 namespace rt::scad {
 

@@ -10,13 +10,13 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <sstream>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 #include <unordered_map>
 
-#include "core/meshing/facets.h"
 #include "core/math/degree_trig.h"
+#include "core/meshing/facets.h"
 #include "importers/scad/lang/value.h"
 
 namespace rt::scad::dxf {
@@ -172,8 +172,8 @@ void Reader::addLine(double x1, double y1, double x2, double y2) {
     // Entity and block segments together (a block inserted into itself doubles each time)
     if (out_.points.size() >= 2 * kMaxSegments) {
         if (!tooMany_)
-            warn_("more than " + std::to_string(kMaxSegments) + " segments in DXF file '" +
-                  shown_ + "'; the rest are left out");
+            warn_("more than " + std::to_string(kMaxSegments) + " segments in DXF file '" + shown_ +
+                  "'; the rest are left out");
         tooMany_ = true;
         return;
     }
@@ -322,51 +322,72 @@ void Reader::parse(std::istream &stream) {
             const double s = opts_.scale;
             if (id >= 10 && id <= 16) {
                 double v = toDouble(data);
-                coords_[id - 10][0] = inBlocks_                             ? v
-                                      : (id == 11 || id == 12 || id == 16) ? v * s
-                                                                           : (v - opts_.originX) * s;
+                coords_[id - 10][0] = inBlocks_ ? v
+                                      : (id == 11 || id == 12 || id == 16)
+                                          ? v * s
+                                          : (v - opts_.originX) * s;
             }
             if (id >= 20 && id <= 26) {
                 double v = toDouble(data);
-                coords_[id - 20][1] = inBlocks_                             ? v
-                                      : (id == 21 || id == 22 || id == 26) ? v * s
-                                                                           : (v - opts_.originY) * s;
+                coords_[id - 20][1] = inBlocks_ ? v
+                                      : (id == 21 || id == 22 || id == 26)
+                                          ? v * s
+                                          : (v - opts_.originY) * s;
             }
             switch (id) {
-            case 0:
-                finishEntity();
-                mode_ = data;
-                layer_.clear();
-                name_.clear();
-                iddata_.clear();
-                dimtype_ = 0;
-                std::fill(&coords_[0][0], &coords_[0][0] + 14, 0.0);
-                xverts_.clear();
-                yverts_.clear();
-                radius_ = arcStart_ = arcStop_ = 0;
-                ellipseStart_ = ellipseStop_ = mode_ == "INSERT" ? 1.0 : 0.0;
-                break;
-            case 1: name_ = data; break;
-            case 2: iddata_ = data; break;
-            case 8: layer_ = data; break;
-            case 10:
-            case 11:
-                xverts_.push_back(inBlocks_ ? toDouble(data) : (toDouble(data) - opts_.originX) * s);
-                break;
-            case 20:
-            case 21:
-                yverts_.push_back(inBlocks_ ? toDouble(data) : (toDouble(data) - opts_.originY) * s);
-                break;
-            case 40:
-                radius_ = toDouble(data);
-                if (!inBlocks_) radius_ *= s;
-                break;
-            case 41: ellipseStart_ = toDouble(data); break;
-            case 42: ellipseStop_ = toDouble(data); break;
-            case 50: arcStart_ = toDouble(data); break;
-            case 51: arcStop_ = toDouble(data); break;
-            case 70: dimtype_ = toInt(data); break;
-            default: break;
+                case 0:
+                    finishEntity();
+                    mode_ = data;
+                    layer_.clear();
+                    name_.clear();
+                    iddata_.clear();
+                    dimtype_ = 0;
+                    std::fill(&coords_[0][0], &coords_[0][0] + 14, 0.0);
+                    xverts_.clear();
+                    yverts_.clear();
+                    radius_ = arcStart_ = arcStop_ = 0;
+                    ellipseStart_ = ellipseStop_ = mode_ == "INSERT" ? 1.0 : 0.0;
+                    break;
+                case 1:
+                    name_ = data;
+                    break;
+                case 2:
+                    iddata_ = data;
+                    break;
+                case 8:
+                    layer_ = data;
+                    break;
+                case 10:
+                case 11:
+                    xverts_.push_back(inBlocks_ ? toDouble(data)
+                                                : (toDouble(data) - opts_.originX) * s);
+                    break;
+                case 20:
+                case 21:
+                    yverts_.push_back(inBlocks_ ? toDouble(data)
+                                                : (toDouble(data) - opts_.originY) * s);
+                    break;
+                case 40:
+                    radius_ = toDouble(data);
+                    if (!inBlocks_) radius_ *= s;
+                    break;
+                case 41:
+                    ellipseStart_ = toDouble(data);
+                    break;
+                case 42:
+                    ellipseStop_ = toDouble(data);
+                    break;
+                case 50:
+                    arcStart_ = toDouble(data);
+                    break;
+                case 51:
+                    arcStop_ = toDouble(data);
+                    break;
+                case 70:
+                    dimtype_ = toInt(data);
+                    break;
+                default:
+                    break;
             }
         } catch (const BadValue &) {
             warn_("Illegal value '" + data + "'in `" + shown_ + "'");
@@ -501,35 +522,35 @@ bool dimension(const Data &d, const std::string &name, double &value, bool &unsu
         if (!name.empty() && dim.name != name) continue;
         const auto &c = dim.coords;
         switch (dim.type & 7) {
-        case 0: {  // rotated, horizontal or vertical
-            double x = c[4][0] - c[3][0], y = c[4][1] - c[3][1];
-            value = std::fabs(x * cosDegrees(dim.angle) + y * sinDegrees(dim.angle));
-            return true;
-        }
-        case 1: {  // aligned
-            double x = c[4][0] - c[3][0], y = c[4][1] - c[3][1];
-            value = std::sqrt(x * x + y * y);
-            return true;
-        }
-        case 2: {  // angular
-            constexpr double kDeg = 180.0 / M_PI;
-            double a1 = std::atan2(c[0][0] - c[5][0], c[0][1] - c[5][1]) * kDeg;
-            double a2 = std::atan2(c[4][0] - c[3][0], c[4][1] - c[3][1]) * kDeg;
-            value = std::fabs(a1 - a2);
-            return true;
-        }
-        case 3:
-        case 4: {  // diameter, radius
-            double x = c[5][0] - c[0][0], y = c[5][1] - c[0][1];
-            value = std::sqrt(x * x + y * y);
-            return true;
-        }
-        case 6:  // ordinate
-            value = (dim.type & 64) ? c[3][0] : c[3][1];
-            return true;
-        default:
-            unsupportedType = true;
-            return false;
+            case 0: {  // rotated, horizontal or vertical
+                double x = c[4][0] - c[3][0], y = c[4][1] - c[3][1];
+                value = std::fabs(x * cosDegrees(dim.angle) + y * sinDegrees(dim.angle));
+                return true;
+            }
+            case 1: {  // aligned
+                double x = c[4][0] - c[3][0], y = c[4][1] - c[3][1];
+                value = std::sqrt(x * x + y * y);
+                return true;
+            }
+            case 2: {  // angular
+                constexpr double kDeg = 180.0 / M_PI;
+                double a1 = std::atan2(c[0][0] - c[5][0], c[0][1] - c[5][1]) * kDeg;
+                double a2 = std::atan2(c[4][0] - c[3][0], c[4][1] - c[3][1]) * kDeg;
+                value = std::fabs(a1 - a2);
+                return true;
+            }
+            case 3:
+            case 4: {  // diameter, radius
+                double x = c[5][0] - c[0][0], y = c[5][1] - c[0][1];
+                value = std::sqrt(x * x + y * y);
+                return true;
+            }
+            case 6:  // ordinate
+                value = (dim.type & 64) ? c[3][0] : c[3][1];
+                return true;
+            default:
+                unsupportedType = true;
+                return false;
         }
     }
     return false;

@@ -5,8 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 #include <utility>
 
@@ -127,8 +127,7 @@ ReadResult readPng(const std::string &path, bool invert, Cells &cells, const War
 
 }  // namespace
 
-ReadResult readHeightMap(const std::string &path, bool invert, HeightMap &out,
-                         const WarnFn &warn) {
+ReadResult readHeightMap(const std::string &path, bool invert, HeightMap &out, const WarnFn &warn) {
     out = HeightMap();
     // Through the input reader: a FIFO, device or /proc file is refused before it is opened
     // for reading (it would block, or never end), as is a file past the cap
@@ -144,9 +143,8 @@ ReadResult readHeightMap(const std::string &path, bool invert, HeightMap &out,
     }
     Cells cells;
     static const char kPngSignature[] = "\x89PNG\r\n\x1a\n";
-    ReadResult r = bytes.compare(0, 8, kPngSignature, 8) == 0
-                       ? readPng(path, invert, cells, warn)
-                       : readDat(path, bytes, cells, warn);
+    ReadResult r = bytes.compare(0, 8, kPngSignature, 8) == 0 ? readPng(path, invert, cells, warn)
+                                                              : readDat(path, bytes, cells, warn);
     if (r == ReadResult::Ok) cells.into(out);
     return r;
 }
@@ -166,7 +164,8 @@ ir::Mesh surfaceMesh(const HeightMap &map, bool center) {
     auto polygon = [&](std::initializer_list<Vec3> corners) {
         std::vector<uint32_t> ix;
         for (const Vec3 &c : corners) ix.push_back(vertex(c.x, c.y, c.z));
-        for (size_t k = 1; k + 1 < ix.size(); ++k) mesh.triangles.push_back({ix[0], ix[k], ix[k + 1]});
+        for (size_t k = 1; k + 1 < ix.size(); ++k)
+            mesh.triangles.push_back({ix[0], ix[k], ix[k + 1]});
     };
     for (int i = 1; i < lines; ++i)
         for (int j = 1; j < columns; ++j) {

@@ -34,15 +34,14 @@ struct HeightMap {
 using WarnFn = std::function<void(const std::string &)>;
 
 enum class ReadResult {
-    Ok,           ///< `out` holds the map (possibly empty, after a warning)
-    TooLarge,     ///< more than kMaxCells values
+    Ok,        ///< `out` holds the map (possibly empty, after a warning)
+    TooLarge,  ///< more than kMaxCells values
 };
 
 /// Reads a PNG (by its signature) or a DAT file. Problems OpenSCAD warns about are warnings
 /// and leave `out` empty or cut short as OpenSCAD's is (a missing file among them). Throws
 /// InputFileError for what is not a regular file or is larger than kMaxFileBytes.
-ReadResult readHeightMap(const std::string &path, bool invert, HeightMap &out,
-                         const WarnFn &warn);
+ReadResult readHeightMap(const std::string &path, bool invert, HeightMap &out, const WarnFn &warn);
 
 /// OpenSCAD's closed surface mesh of the map (empty when it has fewer than 2 lines or
 /// columns): per cell four triangles to its centre, walls down to `bottom`, a bottom face.

@@ -46,8 +46,8 @@ struct Matrix {
     double a = 1, b = 0, c = 0, d = 1, e = 0, f = 0;
     Vec2 apply(Vec2 p) const { return {a * p.x + c * p.y + e, b * p.x + d * p.y + f}; }
     Matrix operator*(const Matrix &o) const {
-        return {a * o.a + c * o.b,       b * o.a + d * o.b,       a * o.c + c * o.d,
-                b * o.c + d * o.d,       a * o.e + c * o.f + e,   b * o.e + d * o.f + f};
+        return {a * o.a + c * o.b, b * o.a + d * o.b,     a * o.c + c * o.d,
+                b * o.c + d * o.d, a * o.e + c * o.f + e, b * o.e + d * o.f + f};
     }
 };
 
@@ -180,8 +180,10 @@ Alignment parseAlignment(const std::string &s) {
         r.x = r.y = Align::None;
     } else if (w.size() == 8 && w[0] == 'x' && w[4] == 'Y') {
         auto part = [](const std::string &t) {
-            return t == "Min" ? Align::Min : t == "Mid" ? Align::Mid : t == "Max" ? Align::Max
-                                                                                  : Align::None;
+            return t == "Min"   ? Align::Min
+                   : t == "Mid" ? Align::Mid
+                   : t == "Max" ? Align::Max
+                                : Align::None;
         };
         Align ax = part(w.substr(1, 3)), ay = part(w.substr(5, 3));
         if (ax == Align::None || ay == Align::None) return Alignment();
@@ -222,30 +224,34 @@ Matrix parseTransform(const std::string &text) {
         Matrix m;
         auto arg = [&](size_t i, double dflt) { return i < args.size() ? args[i] : dflt; };
         switch (op) {
-        case 'm':
-            if (args.size() == 6) m = {args[0], args[1], args[2], args[3], args[4], args[5]};
-            break;
-        case 't':
-            m.e = arg(0, 0);
-            m.f = arg(1, 0);
-            break;
-        case 's':
-            m.a = arg(0, 1);
-            m.d = arg(1, m.a);
-            break;
-        case 'r': {
-            double a = arg(0, 0) * M_PI / 180;
-            Matrix rot{std::cos(a), std::sin(a), -std::sin(a), std::cos(a), 0, 0};
-            if (args.size() == 3) {
-                Matrix to{1, 0, 0, 1, args[1], args[2]}, back{1, 0, 0, 1, -args[1], -args[2]};
-                m = to * rot * back;
-            } else {
-                m = rot;
+            case 'm':
+                if (args.size() == 6) m = {args[0], args[1], args[2], args[3], args[4], args[5]};
+                break;
+            case 't':
+                m.e = arg(0, 0);
+                m.f = arg(1, 0);
+                break;
+            case 's':
+                m.a = arg(0, 1);
+                m.d = arg(1, m.a);
+                break;
+            case 'r': {
+                double a = arg(0, 0) * M_PI / 180;
+                Matrix rot{std::cos(a), std::sin(a), -std::sin(a), std::cos(a), 0, 0};
+                if (args.size() == 3) {
+                    Matrix to{1, 0, 0, 1, args[1], args[2]}, back{1, 0, 0, 1, -args[1], -args[2]};
+                    m = to * rot * back;
+                } else {
+                    m = rot;
+                }
+                break;
             }
-            break;
-        }
-        case 'x': m.c = std::tan(arg(0, 0) * M_PI / 180); break;
-        case 'y': m.b = std::tan(arg(0, 0) * M_PI / 180); break;
+            case 'x':
+                m.c = std::tan(arg(0, 0) * M_PI / 180);
+                break;
+            case 'y':
+                m.b = std::tan(arg(0, 0) * M_PI / 180);
+                break;
         }
         result = result * m;
         args.clear();
@@ -457,168 +463,204 @@ PathList parsePathData(const std::string &d, const Attrs &attrs) {
         }
         bool rel = std::islower(static_cast<unsigned char>(cmd));
         switch (cmd) {
-        case 'a':
-        case 'A':
-            switch (point) {
-            case 0: rx = std::fabs(p); break;
-            case 1: ry = std::fabs(p); break;
-            case 2: angle = p; break;
-            case 3: large = p > 0.5; break;
-            case 4: sweep = p > 0.5; break;
-            case 5: xx = rel ? x + p : p; break;
-            case 6:
-                yy = rel ? y + p : p;
-                arcTo(list.back(), x, y, rx, ry, xx, yy, angle, large, sweep);
-                advance(false, false);
-                break;
-            }
-            break;
-        case 'l':
-        case 'L':
-            switch (point) {
-            case 0: xx = rel ? x + p : p; break;
-            case 1:
-                yy = rel ? y + p : p;
-                list.back().push_back({xx, yy});
-                advance(false, false);
-                break;
-            }
-            break;
-        case 'c':
-        case 'C':
-            switch (point) {
-            case 0: cx1 = p; break;
-            case 1: cy1 = p; break;
-            case 2: cx2 = p; break;
-            case 3: cy2 = p; break;
-            case 4: xx = rel ? x + p : p; break;
-            case 5:
-                yy = rel ? y + p : p;
-                if (rel) {
-                    cx1 += x;
-                    cy1 += y;
-                    cx2 += x;
-                    cy2 += y;
+            case 'a':
+            case 'A':
+                switch (point) {
+                    case 0:
+                        rx = std::fabs(p);
+                        break;
+                    case 1:
+                        ry = std::fabs(p);
+                        break;
+                    case 2:
+                        angle = p;
+                        break;
+                    case 3:
+                        large = p > 0.5;
+                        break;
+                    case 4:
+                        sweep = p > 0.5;
+                        break;
+                    case 5:
+                        xx = rel ? x + p : p;
+                        break;
+                    case 6:
+                        yy = rel ? y + p : p;
+                        arcTo(list.back(), x, y, rx, ry, xx, yy, angle, large, sweep);
+                        advance(false, false);
+                        break;
                 }
-                cubicTo(list.back(), x, y, cx1, cy1, cx2, cy2, xx, yy);
-                advance(true, false);
                 break;
-            }
-            break;
-        case 's':
-        case 'S':
-            switch (point) {
-            case 0:
-                if (lastCubic) {
-                    cx1 = 2 * x - cx2;
-                    cy1 = 2 * y - cy2;
-                } else {
-                    cx1 = x;
-                    cy1 = y;
+            case 'l':
+            case 'L':
+                switch (point) {
+                    case 0:
+                        xx = rel ? x + p : p;
+                        break;
+                    case 1:
+                        yy = rel ? y + p : p;
+                        list.back().push_back({xx, yy});
+                        advance(false, false);
+                        break;
                 }
-                cx2 = p;
                 break;
-            case 1: cy2 = p; break;
-            case 2: xx = rel ? x + p : p; break;
-            case 3:
-                yy = rel ? y + p : p;
-                if (rel) {
-                    cx2 += x;
-                    cy2 += y;
+            case 'c':
+            case 'C':
+                switch (point) {
+                    case 0:
+                        cx1 = p;
+                        break;
+                    case 1:
+                        cy1 = p;
+                        break;
+                    case 2:
+                        cx2 = p;
+                        break;
+                    case 3:
+                        cy2 = p;
+                        break;
+                    case 4:
+                        xx = rel ? x + p : p;
+                        break;
+                    case 5:
+                        yy = rel ? y + p : p;
+                        if (rel) {
+                            cx1 += x;
+                            cy1 += y;
+                            cx2 += x;
+                            cy2 += y;
+                        }
+                        cubicTo(list.back(), x, y, cx1, cy1, cx2, cy2, xx, yy);
+                        advance(true, false);
+                        break;
                 }
-                cubicTo(list.back(), x, y, cx1, cy1, cx2, cy2, xx, yy);
-                advance(true, false);
                 break;
-            }
-            break;
-        case 'q':
-        case 'Q':
-            switch (point) {
-            case 0: cx1 = p; break;
-            case 1: cy1 = p; break;
-            case 2: xx = rel ? x + p : p; break;
-            case 3:
-                yy = rel ? y + p : p;
-                if (rel) {
-                    cx1 += x;
-                    cy1 += y;
+            case 's':
+            case 'S':
+                switch (point) {
+                    case 0:
+                        if (lastCubic) {
+                            cx1 = 2 * x - cx2;
+                            cy1 = 2 * y - cy2;
+                        } else {
+                            cx1 = x;
+                            cy1 = y;
+                        }
+                        cx2 = p;
+                        break;
+                    case 1:
+                        cy2 = p;
+                        break;
+                    case 2:
+                        xx = rel ? x + p : p;
+                        break;
+                    case 3:
+                        yy = rel ? y + p : p;
+                        if (rel) {
+                            cx2 += x;
+                            cy2 += y;
+                        }
+                        cubicTo(list.back(), x, y, cx1, cy1, cx2, cy2, xx, yy);
+                        advance(true, false);
+                        break;
                 }
-                quadTo(list.back(), x, y, cx1, cy1, xx, yy);
-                advance(false, true);
                 break;
-            }
-            break;
-        case 't':
-        case 'T':
-            switch (point) {
-            case 0:
-                if (lastQuad) {
-                    cx1 = 2 * x - cx1;
-                    cy1 = 2 * y - cy1;
-                } else {
-                    cx1 = x;
-                    cy1 = y;
+            case 'q':
+            case 'Q':
+                switch (point) {
+                    case 0:
+                        cx1 = p;
+                        break;
+                    case 1:
+                        cy1 = p;
+                        break;
+                    case 2:
+                        xx = rel ? x + p : p;
+                        break;
+                    case 3:
+                        yy = rel ? y + p : p;
+                        if (rel) {
+                            cx1 += x;
+                            cy1 += y;
+                        }
+                        quadTo(list.back(), x, y, cx1, cy1, xx, yy);
+                        advance(false, true);
+                        break;
                 }
-                xx = rel ? x + p : p;
                 break;
-            case 1:
-                yy = rel ? y + p : p;
-                quadTo(list.back(), x, y, cx1, cy1, xx, yy);
-                advance(false, true);
+            case 't':
+            case 'T':
+                switch (point) {
+                    case 0:
+                        if (lastQuad) {
+                            cx1 = 2 * x - cx1;
+                            cy1 = 2 * y - cy1;
+                        } else {
+                            cx1 = x;
+                            cy1 = y;
+                        }
+                        xx = rel ? x + p : p;
+                        break;
+                    case 1:
+                        yy = rel ? y + p : p;
+                        quadTo(list.back(), x, y, cx1, cy1, xx, yy);
+                        advance(false, true);
+                        break;
+                }
                 break;
-            }
-            break;
-        case 'm':
-        case 'M':
-            switch (point) {
-            case 0: xx = rel ? x + p : p; break;
-            case 1: {
-                yy = rel ? y + p : p;
-                cmd = rel ? 'l' : 'L';
-                if (!list.back().empty()) {
-                    Path path = list.back();
-                    if (isOpen(path)) {
-                        list.pop_back();
-                        strokePath(list, path, attrs);
+            case 'm':
+            case 'M':
+                switch (point) {
+                    case 0:
+                        xx = rel ? x + p : p;
+                        break;
+                    case 1: {
+                        yy = rel ? y + p : p;
+                        cmd = rel ? 'l' : 'L';
+                        if (!list.back().empty()) {
+                            Path path = list.back();
+                            if (isOpen(path)) {
+                                list.pop_back();
+                                strokePath(list, path, attrs);
+                            }
+                            list.emplace_back();
+                        }
+                        list.back().push_back({xx, yy});
+                        advance(false, false);
+                        break;
                     }
-                    list.emplace_back();
                 }
-                list.back().push_back({xx, yy});
-                advance(false, false);
                 break;
-            }
-            }
-            break;
-        case 'v':
-        case 'V':
-            if (point == 0) {
-                y = rel ? y + p : p;
-                list.back().push_back({x, y});
-                point = -1;
+            case 'v':
+            case 'V':
+                if (point == 0) {
+                    y = rel ? y + p : p;
+                    list.back().push_back({x, y});
+                    point = -1;
+                    lastCubic = lastQuad = false;
+                }
+                break;
+            case 'h':
+            case 'H':
+                if (point == 0) {
+                    x = rel ? x + p : p;
+                    list.back().push_back({x, y});
+                    point = -1;
+                    lastCubic = lastQuad = false;
+                }
+                break;
+            case 'z':
+            case 'Z':
+                if (!list.back().empty()) {
+                    Vec2 first = list.back()[0];
+                    list.back().push_back(first);
+                    x = first.x;
+                    y = first.y;
+                }
+                list.emplace_back();
+                closed = true;
                 lastCubic = lastQuad = false;
-            }
-            break;
-        case 'h':
-        case 'H':
-            if (point == 0) {
-                x = rel ? x + p : p;
-                list.back().push_back({x, y});
-                point = -1;
-                lastCubic = lastQuad = false;
-            }
-            break;
-        case 'z':
-        case 'Z':
-            if (!list.back().empty()) {
-                Vec2 first = list.back()[0];
-                list.back().push_back(first);
-                x = first.x;
-                y = first.y;
-            }
-            list.emplace_back();
-            closed = true;
-            lastCubic = lastQuad = false;
-            break;
+                break;
         }
         ++point;
         if (list.back().size() > kMaxPoints || list.size() > kMaxPoints) throw TooManyPoints{};
@@ -692,19 +734,21 @@ class Reader {
                 double rx = attrs.number("rx"), ry = attrs.number("ry");
                 bool hasRx = !(std::fabs(rx) < 1e-8), hasRy = !(std::fabs(ry) < 1e-8);
                 if (hasRx || hasRy) {
-                    if (!hasRx) rx = ry;
-                    else if (!hasRy) ry = rx;
+                    if (!hasRx)
+                        rx = ry;
+                    else if (!hasRy)
+                        ry = rx;
                     rx = std::min(rx, w / 2);
                     ry = std::min(ry, h / 2);
                     // libsvg writes the rounded rectangle as path data (numbers at the
                     // stream's 6 significant digits) and reads that
                     std::ostringstream d;
                     d << "M " << x + rx << "," << y << " H " << x + w - rx << " A " << rx << ","
-                      << ry << " 0 0,1 " << x + w << "," << y + ry << " V " << y + h - ry
-                      << " A " << rx << "," << ry << " 0 0,1 " << x + w - rx << "," << y + h
-                      << " H " << x + rx << " A " << rx << "," << ry << " 0 0,1 " << x << ","
-                      << y + h - ry << " V " << y + ry << " A " << rx << "," << ry
-                      << " 0 0,1 " << x + rx << "," << y << " z";
+                      << ry << " 0 0,1 " << x + w << "," << y + ry << " V " << y + h - ry << " A "
+                      << rx << "," << ry << " 0 0,1 " << x + w - rx << "," << y + h << " H "
+                      << x + rx << " A " << rx << "," << ry << " 0 0,1 " << x << "," << y + h - ry
+                      << " V " << y + ry << " A " << rx << "," << ry << " 0 0,1 " << x + rx << ","
+                      << y << " z";
                     shape.paths = parsePathData(d.str(), attrs);
                 } else {
                     shape.paths.push_back({{x, y}, {x + w, y}, {x + w, y + h}, {x, y + h}, {x, y}});
@@ -760,15 +804,24 @@ class Reader {
 
 double toMm(const Length &l, double viewBox, bool valid, double dpi) {
     switch (l.unit) {
-    case Unit::None: return kInchToMm * l.number / dpi;
-    case Unit::Px: return kInchToMm * l.number / 96.0;
-    case Unit::Pt: return kInchToMm * l.number / 72.0;
-    case Unit::Pc: return kInchToMm * l.number / 6.0;
-    case Unit::In: return kInchToMm * l.number;
-    case Unit::Cm: return 10 * l.number;
-    case Unit::Mm: return l.number;
-    case Unit::Undefined: return valid ? kInchToMm * viewBox / dpi : 0.0;
-    default: return valid ? viewBox : 0.0;
+        case Unit::None:
+            return kInchToMm * l.number / dpi;
+        case Unit::Px:
+            return kInchToMm * l.number / 96.0;
+        case Unit::Pt:
+            return kInchToMm * l.number / 72.0;
+        case Unit::Pc:
+            return kInchToMm * l.number / 6.0;
+        case Unit::In:
+            return kInchToMm * l.number;
+        case Unit::Cm:
+            return 10 * l.number;
+        case Unit::Mm:
+            return l.number;
+        case Unit::Undefined:
+            return valid ? kInchToMm * viewBox / dpi : 0.0;
+        default:
+            return valid ? viewBox : 0.0;
     }
 }
 
@@ -783,8 +836,9 @@ bool read(const std::string &bytes, const std::string &path, const Options &opts
     }
     // From memory: libxml2 never opens the file itself (nor, without XML_PARSE_DTDLOAD and
     // with XML_PARSE_NONET, anything the file names)
-    xmlDocPtr doc = xmlReadMemory(bytes.data(), static_cast<int>(bytes.size()), path.c_str(),
-                                  nullptr, XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING);
+    xmlDocPtr doc =
+        xmlReadMemory(bytes.data(), static_cast<int>(bytes.size()), path.c_str(), nullptr,
+                      XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING);
     if (!doc) {
         error = "Error parsing file '" + path + "'";
         return false;
@@ -815,11 +869,11 @@ bool read(const std::string &bytes, const std::string &path, const Options &opts
                      valid ? heightMm / pg.viewBox.height : 1.0};
             align = {0, 0};
             if (valid && (pg.alignment.x != Align::None || pg.alignment.y != Align::None)) {
-                scale.x = pg.alignment.meet ? std::min(scale.x, scale.y)
-                                            : std::max(scale.x, scale.y);
+                scale.x =
+                    pg.alignment.meet ? std::min(scale.x, scale.y) : std::max(scale.x, scale.y);
                 scale.y = scale.x;
                 auto place = [](Align a, double pageMm, double k, double vb) {
-                    return a == Align::Mid ? pageMm / 2 - k * vb / 2
+                    return a == Align::Mid   ? pageMm / 2 - k * vb / 2
                            : a == Align::Max ? pageMm - k * vb
                                              : 0.0;
                 };

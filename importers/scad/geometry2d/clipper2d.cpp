@@ -220,11 +220,13 @@ PolygonSet minkowski(const std::vector<PolygonSet> &operands) {
         try {
             clipper.AddPaths(terms, ClipperLib::ptSubject, true);
         } catch (const ClipperLib::clipperException &) {
-            throw RangeError("a 2D Minkowski sum reaches beyond the range of OpenSCAD's 2D "
-                             "geometry (|x| <= 7e13)");
+            throw RangeError(
+                "a 2D Minkowski sum reaches beyond the range of OpenSCAD's 2D "
+                "geometry (|x| <= 7e13)");
         }
         if (i + 1 != operands.size())
-            clipper.Execute(ClipperLib::ctUnion, lhs, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+            clipper.Execute(ClipperLib::ctUnion, lhs, ClipperLib::pftNonZero,
+                            ClipperLib::pftNonZero);
     }
     PolyTree result;
     clipper.Execute(ClipperLib::ctUnion, result, ClipperLib::pftNonZero, ClipperLib::pftNonZero);

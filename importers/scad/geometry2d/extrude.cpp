@@ -7,8 +7,8 @@
 #include <climits>
 #include <cmath>
 
-#include "core/meshing/facets.h"
 #include "core/math/degree_trig.h"
+#include "core/meshing/facets.h"
 #include "importers/mesh/mesh_reader.h"
 
 namespace rt::scad {
@@ -77,14 +77,15 @@ int conicalHelixSlices(double rSqr, double height, double twist, double scale,
 
 int diagonalSlices(double deltaSqr, double height, const ir::Fragments &f) {
     if (std::sqrt(deltaSqr) < meshing::kGridFine) return 1;
-    if (f.fn > 0) return f.fn >= static_cast<double>(INT_MAX) ? INT_MAX : std::max(static_cast<int>(f.fn), 1);
+    if (f.fn > 0)
+        return f.fn >= static_cast<double>(INT_MAX) ? INT_MAX : std::max(static_cast<int>(f.fn), 1);
     return std::max(ceilCount(std::sqrt(deltaSqr + height * height) / f.fs), 1);
 }
 
 }  // namespace
 
-int extrudeSlices(int slices, double height, double twist, Vec2 scale, double rSqr,
-                  double deltaSqr, const ir::Fragments &f) {
+int extrudeSlices(int slices, double height, double twist, Vec2 scale, double rSqr, double deltaSqr,
+                  const ir::Fragments &f) {
     if (slices > 0) return slices;
     if (twist != 0) {
         // 2021.01 uses the straight helix for non-uniform scales too

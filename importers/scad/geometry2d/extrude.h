@@ -36,7 +36,7 @@ bool prismMesh(const ir::PrismPrim &p, ir::Mesh &out);
 /// helix length; non-uniform scale: the longest diagonal path; else 1). rSqr is the largest
 /// squared distance of an outline point from the origin, deltaSqr the largest squared shift
 /// of a point between bottom and top scale.
-int extrudeSlices(int slices, double height, double twist, Vec2 scale, double rSqr,
-                  double deltaSqr, const ir::Fragments &f);
+int extrudeSlices(int slices, double height, double twist, Vec2 scale, double rSqr, double deltaSqr,
+                  const ir::Fragments &f);
 
 }  // namespace rt::scad

@@ -10,10 +10,10 @@
 #include <unordered_map>
 #include <vector>
 
-#include "core/meshing/hull.h"
-#include "core/meshing/revolved_mesh.h"
 #include "core/ir/scene_ir.h"
 #include "core/math/bounds3.h"
+#include "core/meshing/hull.h"
+#include "core/meshing/revolved_mesh.h"
 
 namespace rt::scad {
 
@@ -54,8 +54,8 @@ bool planeMeetsBox(const Plane &pl, const Bounds3 &b) {
     return lo <= 0 && hi >= 0;
 }
 
-/// The loops where the plane cuts the mesh's faces, as points map(p) in the plane. A vertex on the plane
-/// counts as above it when onPlaneAbove, else as below (a consistent rule, so every face
+/// The loops where the plane cuts the mesh's faces, as points map(p) in the plane. A vertex on the
+/// plane counts as above it when onPlaneAbove, else as below (a consistent rule, so every face
 /// meets the plane in pairs of crossings and the loops close). A crossing on an edge is
 /// computed from the edge's lower-numbered end, so the two faces sharing the edge agree on it.
 template <typename Map>
@@ -100,9 +100,8 @@ std::vector<Outline> sliceLoops(const ir::PolytopePrim &mesh, const Plane &pl, b
             // A non-convex face: its crossings in order along the line where it meets the
             // plane, paired from the first
             Vec3 along = cross(pl.normal, faceNormal(v, face));
-            std::sort(cut.begin(), cut.end(), [&](int p, int q) {
-                return dot(along, points[p]) < dot(along, points[q]);
-            });
+            std::sort(cut.begin(), cut.end(),
+                      [&](int p, int q) { return dot(along, points[p]) < dot(along, points[q]); });
             for (size_t k = 0; k + 1 < cut.size(); k += 2) link(cut[k], cut[k + 1]);
         }
     }
@@ -143,7 +142,8 @@ PolygonSet section(const Leaf &leaf, const Plane &pl, const Map &map) {
 }
 
 /// The tree evaluated over polygon sets: each primitive is the set `sets` gives it.
-PolygonSet evaluate(const ir::Node &n, const std::unordered_map<const ir::Node *, PolygonSet> &sets) {
+PolygonSet evaluate(const ir::Node &n,
+                    const std::unordered_map<const ir::Node *, PolygonSet> &sets) {
     if (n.kind == ir::NodeKind::Primitive) {
         auto it = sets.find(&n);
         return it == sets.end() ? PolygonSet{} : it->second;
@@ -156,7 +156,8 @@ PolygonSet evaluate(const ir::Node &n, const std::unordered_map<const ir::Node *
         case ir::NodeKind::Intersection:
             for (const PolygonSet &p : operands)
                 if (p.empty()) return {};
-            return operands.size() == 1 ? operands[0] : clipper2d::apply(operands, BoolOp::Intersection);
+            return operands.size() == 1 ? operands[0]
+                                        : clipper2d::apply(operands, BoolOp::Intersection);
         case ir::NodeKind::Difference:
             if (operands[0].empty()) return {};
             return clipper2d::apply(operands, BoolOp::Difference);
@@ -238,10 +239,12 @@ void boundaryParts(const Tessellation &tess, const ir::Node &tree, const FrameOf
             std::vector<PolygonSet> pieces;
             for (size_t f : faces) {
                 PolygonSet one;
-                if (mappedFace(p.mesh, p.mesh.faces[f], *frame, one)) pieces.push_back(std::move(one));
+                if (mappedFace(p.mesh, p.mesh.faces[f], *frame, one))
+                    pieces.push_back(std::move(one));
             }
             if (pieces.empty()) continue;
-            PolygonSet mapped = pieces.size() == 1 ? pieces[0] : clipper2d::apply(pieces, BoolOp::Union);
+            PolygonSet mapped =
+                pieces.size() == 1 ? pieces[0] : clipper2d::apply(pieces, BoolOp::Union);
             const Vec3 &n = group.normal;
             Plane pl{n, 0};
             for (int i : face) pl.offset += dot(n, p.mesh.vertices[i]);
@@ -254,7 +257,8 @@ void boundaryParts(const Tessellation &tess, const ir::Node &tree, const FrameOf
             sets[p.node] = PolygonSet{};
             PolygonSet without = evaluate(tree, sets);
             if (!with.empty()) visit(*frame, clipper2d::apply({with, without}, BoolOp::Difference));
-            if (!without.empty()) visit(*frame, clipper2d::apply({without, with}, BoolOp::Difference));
+            if (!without.empty())
+                visit(*frame, clipper2d::apply({without, with}, BoolOp::Difference));
         }
     }
 }
@@ -278,8 +282,11 @@ void shadow(const Tessellation &tess, const ir::Node &n, std::vector<PolygonSet>
             for (const auto &c : n.children) shadow(tess, *c, out);
             return;
         case ir::NodeKind::Intersection:
-        case ir::NodeKind::Difference: boundaryShadow(tess, n, out); return;
-        case ir::NodeKind::Primitive: break;
+        case ir::NodeKind::Difference:
+            boundaryShadow(tess, n, out);
+            return;
+        case ir::NodeKind::Primitive:
+            break;
     }
     const ir::PolytopePrim &mesh = tess.leaf(n).mesh;
     for (const auto &face : mesh.faces) {
@@ -292,7 +299,8 @@ void shadow(const Tessellation &tess, const ir::Node &n, std::vector<PolygonSet>
 /// references): its ear-clipped triangles merged across shared edges wherever the merged
 /// polygon stays convex (Hertel and Mehlhorn's greedy pass: at most four times the fewest
 /// convex pieces).
-std::vector<std::vector<std::pair<int, int>>> convexPieces(const std::vector<ir::ProfileOutline> &outlines) {
+std::vector<std::vector<std::pair<int, int>>> convexPieces(
+    const std::vector<ir::ProfileOutline> &outlines) {
     using Ref = std::pair<int, int>;
     auto at = [&](const Ref &r) { return outlines[r.first][r.second]; };
     auto turn = [&](const Ref &a, const Ref &b, const Ref &c) {
@@ -310,7 +318,8 @@ std::vector<std::vector<std::pair<int, int>>> convexPieces(const std::vector<ir:
     // Each interior edge once: the triangle that runs it b -> a is the other side of a -> b
     std::map<std::pair<Ref, Ref>, int> edges;
     for (size_t i = 0; i < polys.size(); ++i)
-        for (int k = 0; k < 3; ++k) edges[{polys[i][k], polys[i][(k + 1) % 3]}] = static_cast<int>(i);
+        for (int k = 0; k < 3; ++k)
+            edges[{polys[i][k], polys[i][(k + 1) % 3]}] = static_cast<int>(i);
     for (size_t i = 0; i < polys.size(); ++i)
         for (int k = 0; k < 3; ++k) {
             Ref a = polys[i][k], b = polys[i][(k + 1) % 3];
@@ -332,7 +341,8 @@ std::vector<std::vector<std::pair<int, int>>> convexPieces(const std::vector<ir:
             for (size_t n = 2; n < Q.size(); ++n) merged.push_back(Q[(jb + n) % Q.size()]);
             bool convex = true;
             for (size_t n = 0; n < merged.size() && convex; ++n)
-                convex = turn(merged[n], merged[(n + 1) % merged.size()], merged[(n + 2) % merged.size()]) >= 0;
+                convex = turn(merged[n], merged[(n + 1) % merged.size()],
+                              merged[(n + 2) % merged.size()]) >= 0;
             if (!convex) continue;
             P = std::move(merged);
             Q.clear();
@@ -340,7 +350,8 @@ std::vector<std::vector<std::pair<int, int>>> convexPieces(const std::vector<ir:
         }
     std::vector<std::vector<Ref>> out;
     for (size_t i = 0; i < polys.size(); ++i)
-        if (find(static_cast<int>(i)) == static_cast<int>(i) && !polys[i].empty()) out.push_back(std::move(polys[i]));
+        if (find(static_cast<int>(i)) == static_cast<int>(i) && !polys[i].empty())
+            out.push_back(std::move(polys[i]));
     return out;
 }
 
@@ -384,15 +395,17 @@ std::vector<const TessellatedLeaf *> Tessellation::leavesUnder(const ir::Node &s
 clipper2d::PolygonSet projectCut(const Tessellation &tess, const ir::Node &root) {
     const Plane z0{Vec3(0, 0, 1), 0};
     std::unordered_map<const ir::Node *, PolygonSet> sets;
-    for (const Leaf *leaf : tess.leavesUnder(root)) sets[leaf->node] = section(*leaf, z0, TopView{});
+    for (const Leaf *leaf : tess.leavesUnder(root))
+        sets[leaf->node] = section(*leaf, z0, TopView{});
     return evaluate(root, sets);
 }
 
 clipper2d::PolygonSet projectShadow(const Tessellation &tess, const ir::Node &root) {
     std::vector<PolygonSet> parts;
     shadow(tess, root, parts);
-    parts.erase(std::remove_if(parts.begin(), parts.end(), [](const PolygonSet &p) { return p.empty(); }),
-                parts.end());
+    parts.erase(
+        std::remove_if(parts.begin(), parts.end(), [](const PolygonSet &p) { return p.empty(); }),
+        parts.end());
     if (parts.empty()) return {};
     return clipper2d::apply(parts, BoolOp::Union);
 }
@@ -420,8 +433,8 @@ std::vector<std::vector<Vec3>> solidBoundary(const Tessellation &tess, const ir:
         if (!(length(n) > 0)) return std::optional<PlaneFrame>();
         n = normalize(n);
         Vec3 axis = std::abs(n.x) <= std::abs(n.y) && std::abs(n.x) <= std::abs(n.z) ? Vec3(1, 0, 0)
-                    : std::abs(n.y) <= std::abs(n.z)                           ? Vec3(0, 1, 0)
-                                                                               : Vec3(0, 0, 1);
+                    : std::abs(n.y) <= std::abs(n.z)                                 ? Vec3(0, 1, 0)
+                                                     : Vec3(0, 0, 1);
         PlaneFrame f;
         f.origin = mesh.vertices[face[0]];
         f.u = normalize(cross(n, axis));
@@ -438,7 +451,8 @@ std::vector<std::vector<Vec3>> solidBoundary(const Tessellation &tess, const ir:
         }
         for (const auto &piece : convexPieces(outlines)) {
             std::vector<Vec3> pts;
-            for (const auto &[k, i] : piece) pts.push_back(f.back({outlines[k][i].r, outlines[k][i].z}));
+            for (const auto &[k, i] : piece)
+                pts.push_back(f.back({outlines[k][i].r, outlines[k][i].z}));
             out.push_back(std::move(pts));
         }
     });

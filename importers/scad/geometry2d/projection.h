@@ -35,7 +35,9 @@ class Tessellation {
     /// Faces of all primitives (a shadow examines each face against every primitive's faces).
     size_t faces() const { return faces_; }
     /// The leaf of a primitive node of the tree.
-    const TessellatedLeaf &leaf(const ir::Node &primitive) const { return leaves_[index_.at(&primitive)]; }
+    const TessellatedLeaf &leaf(const ir::Node &primitive) const {
+        return leaves_[index_.at(&primitive)];
+    }
     /// The leaves under `subtree` (a node of the tree), in tree order.
     std::vector<const TessellatedLeaf *> leavesUnder(const ir::Node &subtree) const;
 

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/meshing/facets.h"
 #include "core/math/degree_trig.h"
+#include "core/meshing/facets.h"
 
 namespace rt::scad {
 
@@ -89,7 +89,8 @@ std::vector<Outline> shapeOutlines(const Shape2d &s) {
 
 size_t shapePointCount(const Shape2d &s) {
     switch (s.kind) {
-        case Shape2dKind::Square: return 4;
+        case Shape2dKind::Square:
+            return 4;
         case Shape2dKind::Circle:
             return static_cast<size_t>(meshing::openscadFragments(s.radius, s.fragments));
         case Shape2dKind::Polygon: {
@@ -258,9 +259,8 @@ std::vector<Region> evenOddRegions(const std::vector<Outline> &outlines) {
             if (i == j || !insideOutline(outlines[i][0], outlines[j])) continue;
             ++depth[i];
             // The innermost container is the one nested deepest
-            if (parent[i] < 0 ||
-                std::abs(twiceSignedArea(outlines[j])) <
-                    std::abs(twiceSignedArea(outlines[parent[i]])))
+            if (parent[i] < 0 || std::abs(twiceSignedArea(outlines[j])) <
+                                     std::abs(twiceSignedArea(outlines[parent[i]])))
                 parent[i] = static_cast<int>(j);
         }
     }

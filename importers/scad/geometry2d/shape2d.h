@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "core/meshing/hull.h"
 #include "core/ir/node.h"
 #include "core/ir/source_loc.h"
+#include "core/meshing/hull.h"
 
 namespace rt::scad {
 
@@ -51,7 +51,7 @@ struct Shape2d {
     /// Polygon: the outlines are sanitized by Clipper (simple, outer counter-clockwise, holes
     /// clockwise, non-zero filled); only with `evaluated`
     bool sanitized = false;
-    int material = -1;              ///< material at the call (top-level 2D keeps its own)
+    int material = -1;  ///< material at the call (top-level 2D keeps its own)
     SourceLoc loc;
 };
 

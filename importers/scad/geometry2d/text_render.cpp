@@ -34,8 +34,8 @@ constexpr const char *kDefaultFont = "Liberation Sans:style=Regular";
 
 /// fontconfig's generic family names, which match some installed font by design.
 bool isGenericFamily(const std::string &family) {
-    static const char *kGeneric[] = {"sans-serif", "sans",    "serif",     "monospace",
-                                     "mono",       "cursive", "fantasy",   "system-ui",
+    static const char *kGeneric[] = {"sans-serif", "sans",    "serif",   "monospace",
+                                     "mono",       "cursive", "fantasy", "system-ui",
                                      "emoji",      "math",    "fangsong"};
     for (const char *g : kGeneric)
         if (strcasecmp(family.c_str(), g) == 0) return true;
@@ -79,8 +79,7 @@ class FontLibrary {
             if (!f.face) return nullptr;
             it = faces_.emplace(font, std::move(f)).first;
         }
-        if (!it->second.fallback.empty())
-            messages.push_back({it->second.fallback, true, kFontArg});
+        if (!it->second.fallback.empty()) messages.push_back({it->second.fallback, true, kFontArg});
         return it->second.face;
     }
 
@@ -188,8 +187,7 @@ class FontLibrary {
             return {};
         }
         FT_Face face = nullptr;
-        FT_Error error =
-            FT_New_Face(library_, reinterpret_cast<const char *>(file), index, &face);
+        FT_Error error = FT_New_Face(library_, reinterpret_cast<const char *>(file), index, &face);
         FcPatternDestroy(match);
         if (error) return {};
 
@@ -292,8 +290,8 @@ class Flattener {
 
   private:
     void addVertex(Vec2 v) {
-        outline_.push_back({size_ * (v.x + offset_.x + advance_.x),
-                            size_ * (v.y + offset_.y + advance_.y)});
+        outline_.push_back(
+            {size_ * (v.x + offset_.x + advance_.x), size_ * (v.y + offset_.y + advance_.y)});
     }
     void closeOutline() {
         if (!outline_.empty()) glyph_.push_back(std::move(outline_));
@@ -354,9 +352,11 @@ double xOffset(const std::string &halign, double width, std::vector<TextMessage>
     if (halign == "right") return -width;
     if (halign == "center") return -width / 2.0;
     if (halign != "left")
-        messages.push_back({"Unknown value for the halign parameter (use \"left\", \"right\" or "
-                            "\"center\"): '" + halign + "'",
-                            false, kHalignArg});
+        messages.push_back(
+            {"Unknown value for the halign parameter (use \"left\", \"right\" or "
+             "\"center\"): '" +
+                 halign + "'",
+             false, kHalignArg});
     return 0;
 }
 
@@ -367,9 +367,11 @@ double yOffset(const std::string &valign, double ascend, double descend,
     if (valign == "center") return descend / 2.0 - ascend / 2.0;
     if (valign == "bottom") return descend;
     if (valign != "baseline")
-        messages.push_back({"Unknown value for the valign parameter (use \"baseline\", \"bottom\", "
-                            "\"top\" or \"center\"): '" + valign + "'",
-                            false, kValignArg});
+        messages.push_back(
+            {"Unknown value for the valign parameter (use \"baseline\", \"bottom\", "
+             "\"top\" or \"center\"): '" +
+                 valign + "'",
+             false, kValignArg});
     return 0;
 }
 
@@ -427,8 +429,8 @@ TextResult renderText(const TextParams &p, const std::vector<std::string> &fontF
     for (const std::string &f : fontFiles) lib.registerFile(f, r.messages);
     FT_Face face = lib.face(p.font, r.messages);
     if (!face) return r;
-    r.fontUsed = std::string(face->family_name ? face->family_name : "") + ":style=" +
-                 (face->style_name ? face->style_name : "");
+    r.fontUsed = std::string(face->family_name ? face->family_name : "") +
+                 ":style=" + (face->style_name ? face->style_name : "");
     if (FT_Set_Char_Size(face, 0, static_cast<FT_F26Dot6>(kFontScale), 100, 100) != 0) {
         r.messages.push_back({"Can't set font size for font " + p.font, false, kFontArg});
         return r;
@@ -474,14 +476,14 @@ TextResult renderText(const TextParams &p, const std::vector<std::string> &fontF
         FT_Glyph g = nullptr;
         if (FT_Load_Glyph(face, index, FT_LOAD_DEFAULT) != 0) {
             r.messages.push_back({"Could not load glyph " + std::to_string(index) +
-                                      " for char at index " + std::to_string(i) + " in text '" +
-                                      p.text + "'"});
+                                  " for char at index " + std::to_string(i) + " in text '" +
+                                  p.text + "'"});
             continue;
         }
         if (FT_Get_Glyph(face->glyph, &g) != 0) {
             r.messages.push_back({"Could not get glyph " + std::to_string(index) +
-                                      " for char at index " + std::to_string(i) + " in text '" +
-                                      p.text + "'"});
+                                  " for char at index " + std::to_string(i) + " in text '" +
+                                  p.text + "'"});
             continue;
         }
         if (g->format != FT_GLYPH_FORMAT_OUTLINE) {

@@ -55,8 +55,8 @@ constexpr int kFontArg = 2, kHalignArg = 6, kValignArg = 7;  ///< text()'s param
 struct TextResult {
     std::vector<std::vector<Outline>> glyphs;
     std::vector<TextMessage> messages;
-    size_t points = 0;  ///< outline points; above kMaxTextPoints none are made
-    std::string fontUsed;        ///< family and style of the face found ("" when none)
+    size_t points = 0;     ///< outline points; above kMaxTextPoints none are made
+    std::string fontUsed;  ///< family and style of the face found ("" when none)
 };
 
 /// FreetypeRenderer::detect_properties: the script (when not given) from the characters'

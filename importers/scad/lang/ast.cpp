@@ -28,11 +28,16 @@ std::string paramsToString(const ParameterList &params) {
 
 const char *binarySpelling(const BinaryExpr &b) {
     switch (b.kind) {
-        case ExprKind::And: return "&&";
-        case ExprKind::Or: return "||";
-        case ExprKind::Equal: return "==";
-        case ExprKind::NotEqual: return "!=";
-        default: return binaryOpSpelling(b.op);
+        case ExprKind::And:
+            return "&&";
+        case ExprKind::Or:
+            return "||";
+        case ExprKind::Equal:
+            return "==";
+        case ExprKind::NotEqual:
+            return "!=";
+        default:
+            return binaryOpSpelling(b.op);
     }
 }
 
@@ -44,8 +49,10 @@ std::string functionLiteralToString(const FunctionLiteralExpr &f) {
 
 std::string exprToString(const Expr &e) {
     switch (e.kind) {
-        case ExprKind::Literal: return static_cast<const LiteralExpr &>(e).value.toEchoString();
-        case ExprKind::Identifier: return static_cast<const IdentifierExpr &>(e).name.str();
+        case ExprKind::Literal:
+            return static_cast<const LiteralExpr &>(e).value.toEchoString();
+        case ExprKind::Identifier:
+            return static_cast<const IdentifierExpr &>(e).name.str();
         case ExprKind::Range: {
             const auto &r = static_cast<const RangeExpr &>(e);
             std::string s = "[" + exprToString(*r.begin) + " : ";

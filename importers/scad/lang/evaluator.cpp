@@ -103,9 +103,10 @@ void Evaluator::stepSlow(const SourceLoc &loc) {
 
 void Evaluator::checkElementBudget(size_t extra, const SourceLoc &loc) {
     if (liveVectorElements() + static_cast<int64_t>(extra) > limits_.maxLiveElements)
-        throw EvalError(loc, "too many elements: vectors would hold more than " +
-                                 std::to_string(limits_.maxLiveElements) +
-                                 " values; if the model needs more, raise the cap with --max-elements N");
+        throw EvalError(
+            loc, "too many elements: vectors would hold more than " +
+                     std::to_string(limits_.maxLiveElements) +
+                     " values; if the model needs more, raise the cap with --max-elements N");
 }
 
 Value Evaluator::makeString(std::string s, const SourceLoc &loc) {
@@ -154,7 +155,8 @@ void Evaluator::chargeGeometryWork(const SourceLoc &loc, const std::string &what
                                  std::to_string(limits_.maxGeometryWork) +
                                  " (--max-geometry N raises it; 0 = no cap)");
     }
-    geometryWork_ = total < 9e18 ? static_cast<int64_t>(total) : std::numeric_limits<int64_t>::max();
+    geometryWork_ =
+        total < 9e18 ? static_cast<int64_t>(total) : std::numeric_limits<int64_t>::max();
 }
 
 ir::Fragments Evaluator::currentFragments(const SourceLoc &loc) {
@@ -200,7 +202,8 @@ ir::Scene Evaluator::evaluate(const SourceFile &main, SourceLoader &loader) {
         void *addr = nullptr;
         size_t size = 0;
         if (pthread_attr_getstack(&attr, &addr, &size) == 0 && size > 2 * limits_.stackReserveBytes)
-            stackLow_ = static_cast<const char *>(addr) + std::max(limits_.stackReserveBytes, size / 4);
+            stackLow_ =
+                static_cast<const char *>(addr) + std::max(limits_.stackReserveBytes, size / 4);
         pthread_attr_destroy(&attr);
     }
     // Value operations (vector arithmetic, comparisons) stop at the same element budget
@@ -302,10 +305,12 @@ Value Evaluator::eval(const Expr &e, const FramePtr &f) {
 
 Value Evaluator::evalUnchecked(const Expr &e, const FramePtr &f) {
     switch (e.kind) {
-        case ExprKind::Literal: return static_cast<const LiteralExpr &>(e).value;
+        case ExprKind::Literal:
+            return static_cast<const LiteralExpr &>(e).value;
         case ExprKind::Identifier:
             return lookupVariable(static_cast<const IdentifierExpr &>(e).name, f.get(), e.loc);
-        case ExprKind::Range: return evalRange(static_cast<const RangeExpr &>(e), f);
+        case ExprKind::Range:
+            return evalRange(static_cast<const RangeExpr &>(e), f);
         case ExprKind::Vector: {
             const auto &v = static_cast<const VectorExpr &>(e);
             if (v.constant) return *v.constant;
@@ -347,12 +352,16 @@ Value Evaluator::evalUnchecked(const Expr &e, const FramePtr &f) {
             const auto &t = static_cast<const TernaryExpr &>(e);
             return eval(*t.cond, f).toBool() ? eval(*t.thenExpr, f) : eval(*t.elseExpr, f);
         }
-        case ExprKind::Call: return evalCall(static_cast<const CallExpr &>(e), f);
-        case ExprKind::Index: return evalIndex(static_cast<const IndexExpr &>(e), f);
-        case ExprKind::Member: return evalMember(static_cast<const MemberExpr &>(e), f);
+        case ExprKind::Call:
+            return evalCall(static_cast<const CallExpr &>(e), f);
+        case ExprKind::Index:
+            return evalIndex(static_cast<const IndexExpr &>(e), f);
+        case ExprKind::Member:
+            return evalMember(static_cast<const MemberExpr &>(e), f);
         case ExprKind::Let:
         case ExprKind::Assert:
-        case ExprKind::Echo: return evalPrefix(static_cast<const PrefixExpr &>(e), f);
+        case ExprKind::Echo:
+            return evalPrefix(static_cast<const PrefixExpr &>(e), f);
         case ExprKind::FunctionLiteral: {
             auto fv = std::make_shared<FunctionValue>();
             fv->def = &static_cast<const FunctionLiteralExpr &>(e);
@@ -472,10 +481,13 @@ void Evaluator::evalElement(const Expr &e, const FramePtr &f, std::vector<Value>
                 evalElement(*lc.body, f, items);
             else
                 items.push_back(eval(*lc.body, f));
-            for (const auto &v : items) forEachElement(*this, v, kMaxComprehensionRange, e.loc, push);
+            for (const auto &v : items)
+                forEachElement(*this, v, kMaxComprehensionRange, e.loc, push);
             return;
         }
-        default: push(eval(e, f)); return;
+        default:
+            push(eval(e, f));
+            return;
     }
 }
 
@@ -534,8 +546,12 @@ Value Evaluator::evalPrefix(const PrefixExpr &p, const FramePtr &f) {
             bindLet(p.args, c);
             return eval(*p.body, c);
         }
-        case ExprKind::Assert: evalAssert(p.args, f, p.loc); break;
-        default: evalEcho(p.args, f, p.loc); break;
+        case ExprKind::Assert:
+            evalAssert(p.args, f, p.loc);
+            break;
+        default:
+            evalEcho(p.args, f, p.loc);
+            break;
     }
     return p.body ? eval(*p.body, f) : Value();
 }

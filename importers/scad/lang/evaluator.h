@@ -30,7 +30,8 @@ struct EvalLimits {
     /// Calls + loop iterations + instantiations; 0 = no cap. A legitimate model may need more
     /// (scadray --max-steps), so the error names the option.
     int64_t maxSteps = kDefaultMaxSteps;
-    int64_t maxLiveElements = kDefaultMaxElements;  ///< vector elements alive at once (~24 bytes each)
+    int64_t maxLiveElements =
+        kDefaultMaxElements;                 ///< vector elements alive at once (~24 bytes each)
     int64_t maxLiveStringBytes = 256 << 20;  ///< bytes of string values alive at once
     int64_t maxNodes = 1'500'000;            ///< IR nodes produced (~300 bytes each)
     /// Deepest node of the scene tree: the root is at depth 1. Later stages walk the tree
@@ -39,8 +40,8 @@ struct EvalLimits {
     /// Nesting of vector values (`[[[...]]]` built by a loop or tail recursion): freeing,
     /// printing or comparing them recurses that deep.
     int maxValueDepth = 100000;
-    size_t maxStringLength = 64u << 20;      ///< bytes in one string value
-    size_t stackReserveBytes = 1u << 20;     ///< stack kept free below the deepest frame
+    size_t maxStringLength = 64u << 20;   ///< bytes in one string value
+    size_t stackReserveBytes = 1u << 20;  ///< stack kept free below the deepest frame
     /// Points and faces the geometry operations make or examine (kDefaultMaxGeometry), over
     /// the whole evaluation; 0 = no cap. Each operation charges its estimate, from its
     /// parameters, before doing the work (scadray --max-geometry), so the error names the

@@ -64,63 +64,114 @@ constexpr Keyword kKeywords[] = {
 
 const char *tokenKindName(TokenKind kind) {
     switch (kind) {
-        case TokenKind::End: return "end of file";
-        case TokenKind::Identifier: return "identifier";
-        case TokenKind::Number: return "number";
-        case TokenKind::String: return "string";
-        case TokenKind::Include: return "include";
-        case TokenKind::Use: return "use";
-        case TokenKind::KwModule: return "'module'";
-        case TokenKind::KwFunction: return "'function'";
-        case TokenKind::KwIf: return "'if'";
-        case TokenKind::KwElse: return "'else'";
-        case TokenKind::KwFor: return "'for'";
-        case TokenKind::KwLet: return "'let'";
-        case TokenKind::KwAssert: return "'assert'";
-        case TokenKind::KwEcho: return "'echo'";
-        case TokenKind::KwEach: return "'each'";
-        case TokenKind::KwTrue: return "'true'";
-        case TokenKind::KwFalse: return "'false'";
-        case TokenKind::KwUndef: return "'undef'";
-        case TokenKind::LParen: return "'('";
-        case TokenKind::RParen: return "')'";
-        case TokenKind::LBracket: return "'['";
-        case TokenKind::RBracket: return "']'";
-        case TokenKind::LBrace: return "'{'";
-        case TokenKind::RBrace: return "'}'";
-        case TokenKind::Semicolon: return "';'";
-        case TokenKind::Comma: return "','";
-        case TokenKind::Dot: return "'.'";
-        case TokenKind::Colon: return "':'";
-        case TokenKind::Question: return "'?'";
-        case TokenKind::Assign: return "'='";
-        case TokenKind::Plus: return "'+'";
-        case TokenKind::Minus: return "'-'";
-        case TokenKind::Star: return "'*'";
-        case TokenKind::Slash: return "'/'";
-        case TokenKind::Percent: return "'%'";
-        case TokenKind::Caret: return "'^'";
-        case TokenKind::Bang: return "'!'";
-        case TokenKind::Hash: return "'#'";
-        case TokenKind::Less: return "'<'";
-        case TokenKind::LessEqual: return "'<='";
-        case TokenKind::Greater: return "'>'";
-        case TokenKind::GreaterEqual: return "'>='";
-        case TokenKind::EqualEqual: return "'=='";
-        case TokenKind::NotEqual: return "'!='";
-        case TokenKind::AndAnd: return "'&&'";
-        case TokenKind::OrOr: return "'||'";
+        case TokenKind::End:
+            return "end of file";
+        case TokenKind::Identifier:
+            return "identifier";
+        case TokenKind::Number:
+            return "number";
+        case TokenKind::String:
+            return "string";
+        case TokenKind::Include:
+            return "include";
+        case TokenKind::Use:
+            return "use";
+        case TokenKind::KwModule:
+            return "'module'";
+        case TokenKind::KwFunction:
+            return "'function'";
+        case TokenKind::KwIf:
+            return "'if'";
+        case TokenKind::KwElse:
+            return "'else'";
+        case TokenKind::KwFor:
+            return "'for'";
+        case TokenKind::KwLet:
+            return "'let'";
+        case TokenKind::KwAssert:
+            return "'assert'";
+        case TokenKind::KwEcho:
+            return "'echo'";
+        case TokenKind::KwEach:
+            return "'each'";
+        case TokenKind::KwTrue:
+            return "'true'";
+        case TokenKind::KwFalse:
+            return "'false'";
+        case TokenKind::KwUndef:
+            return "'undef'";
+        case TokenKind::LParen:
+            return "'('";
+        case TokenKind::RParen:
+            return "')'";
+        case TokenKind::LBracket:
+            return "'['";
+        case TokenKind::RBracket:
+            return "']'";
+        case TokenKind::LBrace:
+            return "'{'";
+        case TokenKind::RBrace:
+            return "'}'";
+        case TokenKind::Semicolon:
+            return "';'";
+        case TokenKind::Comma:
+            return "','";
+        case TokenKind::Dot:
+            return "'.'";
+        case TokenKind::Colon:
+            return "':'";
+        case TokenKind::Question:
+            return "'?'";
+        case TokenKind::Assign:
+            return "'='";
+        case TokenKind::Plus:
+            return "'+'";
+        case TokenKind::Minus:
+            return "'-'";
+        case TokenKind::Star:
+            return "'*'";
+        case TokenKind::Slash:
+            return "'/'";
+        case TokenKind::Percent:
+            return "'%'";
+        case TokenKind::Caret:
+            return "'^'";
+        case TokenKind::Bang:
+            return "'!'";
+        case TokenKind::Hash:
+            return "'#'";
+        case TokenKind::Less:
+            return "'<'";
+        case TokenKind::LessEqual:
+            return "'<='";
+        case TokenKind::Greater:
+            return "'>'";
+        case TokenKind::GreaterEqual:
+            return "'>='";
+        case TokenKind::EqualEqual:
+            return "'=='";
+        case TokenKind::NotEqual:
+            return "'!='";
+        case TokenKind::AndAnd:
+            return "'&&'";
+        case TokenKind::OrOr:
+            return "'||'";
     }
     return "token";
 }
 
 std::string describeToken(const Token &tok) {
     switch (tok.kind) {
-        case TokenKind::End: return "end of file";
-        case TokenKind::String: return "string \"" + tok.text + "\"";
-        case TokenKind::Include: return "include <" + tok.text + ">";
-        case TokenKind::Use: return "use <" + tok.text + ">";
-        default: return "'" + tok.text + "'";
+        case TokenKind::End:
+            return "end of file";
+        case TokenKind::String:
+            return "string \"" + tok.text + "\"";
+        case TokenKind::Include:
+            return "include <" + tok.text + ">";
+        case TokenKind::Use:
+            return "use <" + tok.text + ">";
+        default:
+            return "'" + tok.text + "'";
     }
 }
 
@@ -354,28 +405,72 @@ Token Lexer::lexOperator() {
     if (c == '|' && d == '|') return two(TokenKind::OrOr);
     TokenKind k;
     switch (c) {
-        case '(': k = TokenKind::LParen; break;
-        case ')': k = TokenKind::RParen; break;
-        case '[': k = TokenKind::LBracket; break;
-        case ']': k = TokenKind::RBracket; break;
-        case '{': k = TokenKind::LBrace; break;
-        case '}': k = TokenKind::RBrace; break;
-        case ';': k = TokenKind::Semicolon; break;
-        case ',': k = TokenKind::Comma; break;
-        case '.': k = TokenKind::Dot; break;
-        case ':': k = TokenKind::Colon; break;
-        case '?': k = TokenKind::Question; break;
-        case '=': k = TokenKind::Assign; break;
-        case '+': k = TokenKind::Plus; break;
-        case '-': k = TokenKind::Minus; break;
-        case '*': k = TokenKind::Star; break;
-        case '/': k = TokenKind::Slash; break;
-        case '%': k = TokenKind::Percent; break;
-        case '^': k = TokenKind::Caret; break;
-        case '!': k = TokenKind::Bang; break;
-        case '#': k = TokenKind::Hash; break;
-        case '<': k = TokenKind::Less; break;
-        case '>': k = TokenKind::Greater; break;
+        case '(':
+            k = TokenKind::LParen;
+            break;
+        case ')':
+            k = TokenKind::RParen;
+            break;
+        case '[':
+            k = TokenKind::LBracket;
+            break;
+        case ']':
+            k = TokenKind::RBracket;
+            break;
+        case '{':
+            k = TokenKind::LBrace;
+            break;
+        case '}':
+            k = TokenKind::RBrace;
+            break;
+        case ';':
+            k = TokenKind::Semicolon;
+            break;
+        case ',':
+            k = TokenKind::Comma;
+            break;
+        case '.':
+            k = TokenKind::Dot;
+            break;
+        case ':':
+            k = TokenKind::Colon;
+            break;
+        case '?':
+            k = TokenKind::Question;
+            break;
+        case '=':
+            k = TokenKind::Assign;
+            break;
+        case '+':
+            k = TokenKind::Plus;
+            break;
+        case '-':
+            k = TokenKind::Minus;
+            break;
+        case '*':
+            k = TokenKind::Star;
+            break;
+        case '/':
+            k = TokenKind::Slash;
+            break;
+        case '%':
+            k = TokenKind::Percent;
+            break;
+        case '^':
+            k = TokenKind::Caret;
+            break;
+        case '!':
+            k = TokenKind::Bang;
+            break;
+        case '#':
+            k = TokenKind::Hash;
+            break;
+        case '<':
+            k = TokenKind::Less;
+            break;
+        case '>':
+            k = TokenKind::Greater;
+            break;
         default: {
             std::string shown;
             unsigned char u = static_cast<unsigned char>(c);

@@ -170,7 +170,9 @@ void Parser::parseStatements(Scope &scope) {
 void Parser::parseStatement(Scope &scope) {
     NestingGuard guard(*this);
     switch (cur().kind) {
-        case TokenKind::Semicolon: ++pos_; return;
+        case TokenKind::Semicolon:
+            ++pos_;
+            return;
         case TokenKind::LBrace: {
             // A bare block is not a scope: its statements belong to the enclosing one
             ++pos_;
@@ -181,18 +183,28 @@ void Parser::parseStatement(Scope &scope) {
             ++pos_;
             return;
         }
-        case TokenKind::Include: parseInclude(scope); return;
-        case TokenKind::Use: parseUse(); return;
-        case TokenKind::KwModule: parseModuleDef(scope); return;
-        case TokenKind::KwFunction: parseFunctionDef(scope); return;
+        case TokenKind::Include:
+            parseInclude(scope);
+            return;
+        case TokenKind::Use:
+            parseUse();
+            return;
+        case TokenKind::KwModule:
+            parseModuleDef(scope);
+            return;
+        case TokenKind::KwFunction:
+            parseFunctionDef(scope);
+            return;
         case TokenKind::Identifier:
             if (peekTok().kind == TokenKind::Assign) {
                 parseAssignment(scope);
                 return;
             }
             break;
-        case TokenKind::RBrace: unexpected("(no block to close)");
-        default: break;
+        case TokenKind::RBrace:
+            unexpected("(no block to close)");
+        default:
+            break;
     }
     scope.instantiations.push_back(parseInstantiation());
 }
@@ -343,8 +355,10 @@ std::unique_ptr<ModuleInstantiation> Parser::parseInstantiation() {
         case TokenKind::KwFor:
         case TokenKind::KwLet:
         case TokenKind::KwAssert:
-        case TokenKind::KwEcho: break;
-        default: unexpected("where a statement was expected");
+        case TokenKind::KwEcho:
+            break;
+        default:
+            unexpected("where a statement was expected");
     }
     inst->loc = cur().loc;
     inst->name = Symbol::intern(cur().text);
@@ -362,11 +376,19 @@ void Parser::parseChildStatement(Scope &scope) {
     if (accept(TokenKind::LBrace)) {
         while (!accept(TokenKind::RBrace)) {
             switch (cur().kind) {
-                case TokenKind::End: expect(TokenKind::RBrace, "to close the child block"); break;
+                case TokenKind::End:
+                    expect(TokenKind::RBrace, "to close the child block");
+                    break;
                 case TokenKind::LBrace:
-                case TokenKind::Semicolon: parseChildStatement(scope); break;
-                case TokenKind::Include: parseInclude(scope); break;
-                case TokenKind::Use: parseUse(); break;
+                case TokenKind::Semicolon:
+                    parseChildStatement(scope);
+                    break;
+                case TokenKind::Include:
+                    parseInclude(scope);
+                    break;
+                case TokenKind::Use:
+                    parseUse();
+                    break;
                 case TokenKind::KwModule:
                 case TokenKind::KwFunction:
                     unexpected("(definitions are not allowed inside a module's child block)");
@@ -376,7 +398,8 @@ void Parser::parseChildStatement(Scope &scope) {
                         break;
                     }
                     [[fallthrough]];
-                default: scope.instantiations.push_back(parseInstantiation());
+                default:
+                    scope.instantiations.push_back(parseInstantiation());
             }
         }
         return;
@@ -425,12 +448,15 @@ ExprPtr Parser::parseExpr() {
                 case TokenKind::Comma:
                 case TokenKind::Colon:
                 case TokenKind::RBrace:
-                case TokenKind::End: break;
-                default: static_cast<PrefixExpr &>(*e).body = parseExpr();
+                case TokenKind::End:
+                    break;
+                default:
+                    static_cast<PrefixExpr &>(*e).body = parseExpr();
             }
             return e;
         }
-        default: return parseTernary();
+        default:
+            return parseTernary();
     }
 }
 
@@ -491,11 +517,20 @@ ExprPtr Parser::parseComparison() {
     for (;;) {
         BinaryOp op;
         switch (cur().kind) {
-            case TokenKind::Less: op = BinaryOp::Less; break;
-            case TokenKind::LessEqual: op = BinaryOp::LessEqual; break;
-            case TokenKind::Greater: op = BinaryOp::Greater; break;
-            case TokenKind::GreaterEqual: op = BinaryOp::GreaterEqual; break;
-            default: return e;
+            case TokenKind::Less:
+                op = BinaryOp::Less;
+                break;
+            case TokenKind::LessEqual:
+                op = BinaryOp::LessEqual;
+                break;
+            case TokenKind::Greater:
+                op = BinaryOp::Greater;
+                break;
+            case TokenKind::GreaterEqual:
+                op = BinaryOp::GreaterEqual;
+                break;
+            default:
+                return e;
         }
         SourceLoc loc = cur().loc;
         ++pos_;
@@ -524,10 +559,17 @@ ExprPtr Parser::parseMultiplication() {
     for (;;) {
         BinaryOp op;
         switch (cur().kind) {
-            case TokenKind::Star: op = BinaryOp::Mul; break;
-            case TokenKind::Slash: op = BinaryOp::Div; break;
-            case TokenKind::Percent: op = BinaryOp::Mod; break;
-            default: return e;
+            case TokenKind::Star:
+                op = BinaryOp::Mul;
+                break;
+            case TokenKind::Slash:
+                op = BinaryOp::Div;
+                break;
+            case TokenKind::Percent:
+                op = BinaryOp::Mod;
+                break;
+            default:
+                return e;
         }
         SourceLoc loc = cur().loc;
         ++pos_;
@@ -612,7 +654,9 @@ ExprPtr Parser::parsePrimary() {
         case TokenKind::KwFalse:
             ++pos_;
             return std::make_unique<LiteralExpr>(Value::boolean(false), t.loc);
-        case TokenKind::KwUndef: ++pos_; return std::make_unique<LiteralExpr>(Value(), t.loc);
+        case TokenKind::KwUndef:
+            ++pos_;
+            return std::make_unique<LiteralExpr>(Value(), t.loc);
         case TokenKind::Identifier:
             ++pos_;
             return std::make_unique<IdentifierExpr>(Symbol::intern(t.text), t.loc);
@@ -622,8 +666,10 @@ ExprPtr Parser::parsePrimary() {
             expect(TokenKind::RParen, "to close the parenthesis");
             return e;
         }
-        case TokenKind::LBracket: return parseBracket();
-        default: unexpected("where an expression was expected");
+        case TokenKind::LBracket:
+            return parseBracket();
+        default:
+            unexpected("where an expression was expected");
     }
 }
 
@@ -692,7 +738,8 @@ ExprPtr Parser::parseElement() {
             }
             return parseExpr();
         }
-        default: return parseExpr();
+        default:
+            return parseExpr();
     }
 }
 
@@ -788,8 +835,8 @@ void SourceLoader::registerFont(const std::string &name, const std::string &from
     // OpenSCAD goes on without the font in both failure cases (its messages are unlocated)
     std::string path = resolve(name, fromDir);
     if (path.empty()) {
-        diag_.warning(loc, "Can't open library '" + name + "': can't read font with path '" +
-                               name + "'");
+        diag_.warning(
+            loc, "Can't open library '" + name + "': can't read font with path '" + name + "'");
         return;
     }
     // Through the input reader's checks: FreeType opens the file itself later, so it must

@@ -38,9 +38,10 @@ StringData::~StringData() { tlLiveStringBytes -= static_cast<int64_t>(text.size(
 
 VectorData::VectorData(std::vector<Value> v) : items(std::move(v)) {
     if (tlLiveElements + static_cast<int64_t>(items.size()) > tlLimits.maxLiveElements)
-        throw ValueLimitError("too many elements: vectors would hold more than " +
-                              std::to_string(tlLimits.maxLiveElements) +
-                              " values; if the model needs more, raise the cap with --max-elements N");
+        throw ValueLimitError(
+            "too many elements: vectors would hold more than " +
+            std::to_string(tlLimits.maxLiveElements) +
+            " values; if the model needs more, raise the cap with --max-elements N");
     for (const auto &e : items) depth = std::max(depth, e.depth() + 1);
     if (depth > tlLimits.maxDepth)
         throw ValueLimitError("vectors nested too deep: more than " +
@@ -86,13 +87,20 @@ const Value &Value::emptyVector() {
 
 bool Value::toBool() const {
     switch (type()) {
-        case Type::Undef: return false;
-        case Type::Bool: return boolValue();
-        case Type::Number: return toNumber() != 0;
-        case Type::String: return !toStr().empty();
-        case Type::Vector: return !toVector().empty();
-        case Type::Range: return true;
-        case Type::Function: return true;
+        case Type::Undef:
+            return false;
+        case Type::Bool:
+            return boolValue();
+        case Type::Number:
+            return toNumber() != 0;
+        case Type::String:
+            return !toStr().empty();
+        case Type::Vector:
+            return !toVector().empty();
+        case Type::Range:
+            return true;
+        case Type::Function:
+            return true;
     }
     return false;
 }
@@ -139,10 +147,10 @@ bool equalValues(const Value &a, const Value &b, int64_t &visits) {
     if (x.size() != y.size()) return false;
     visits += static_cast<int64_t>(x.size());
     if (visits > tlLimits.maxVisits)
-        throw ValueLimitError("comparison too large: more than " +
-                              std::to_string(tlLimits.maxVisits) +
-                              " elements compared (vectors sharing sub-vectors?); raise the cap with "
-                              "--max-elements N");
+        throw ValueLimitError(
+            "comparison too large: more than " + std::to_string(tlLimits.maxVisits) +
+            " elements compared (vectors sharing sub-vectors?); raise the cap with "
+            "--max-elements N");
     for (size_t i = 0; i < x.size(); ++i)
         if (!equalValues(x[i], y[i], visits)) return false;
     return true;
@@ -153,10 +161,14 @@ bool equalValues(const Value &a, const Value &b, int64_t &visits) {
 bool Value::operator==(const Value &o) const {
     if (type() != o.type()) return false;
     switch (type()) {
-        case Type::Undef: return true;
-        case Type::Bool: return boolValue() == o.boolValue();
-        case Type::Number: return toNumber() == o.toNumber();
-        case Type::String: return toStr() == o.toStr();
+        case Type::Undef:
+            return true;
+        case Type::Bool:
+            return boolValue() == o.boolValue();
+        case Type::Number:
+            return toNumber() == o.toNumber();
+        case Type::String:
+            return toStr() == o.toStr();
         case Type::Vector: {
             int64_t visits = 0;
             return equalValues(*this, o, visits);
@@ -165,20 +177,28 @@ bool Value::operator==(const Value &o) const {
             const auto &a = toRange(), &b = o.toRange();
             return a.begin == b.begin && a.step == b.step && a.end == b.end;
         }
-        case Type::Function: return std::get<FunctionPtr>(v_) == std::get<FunctionPtr>(o.v_);
+        case Type::Function:
+            return std::get<FunctionPtr>(v_) == std::get<FunctionPtr>(o.v_);
     }
     return false;
 }
 
 const char *Value::typeName(Type t) {
     switch (t) {
-        case Type::Undef: return "undefined";
-        case Type::Bool: return "bool";
-        case Type::Number: return "number";
-        case Type::String: return "string";
-        case Type::Vector: return "vector";
-        case Type::Range: return "range";
-        case Type::Function: return "function";
+        case Type::Undef:
+            return "undefined";
+        case Type::Bool:
+            return "bool";
+        case Type::Number:
+            return "number";
+        case Type::String:
+            return "string";
+        case Type::Vector:
+            return "vector";
+        case Type::Range:
+            return "range";
+        case Type::Function:
+            return "function";
     }
     return "?";
 }
@@ -229,10 +249,14 @@ std::string formatNumber(double d) {
 
 std::string Value::toString(bool quoteStrings, size_t limit) const {
     switch (type()) {
-        case Type::Undef: return "undef";
-        case Type::Bool: return boolValue() ? "true" : "false";
-        case Type::Number: return formatNumber(toNumber());
-        case Type::String: return quoteStrings ? "\"" + toStr() + "\"" : toStr();
+        case Type::Undef:
+            return "undef";
+        case Type::Bool:
+            return boolValue() ? "true" : "false";
+        case Type::Number:
+            return formatNumber(toNumber());
+        case Type::String:
+            return quoteStrings ? "\"" + toStr() + "\"" : toStr();
         case Type::Vector: {
             std::string s;
             appendEchoString(s, limit);
@@ -247,7 +271,8 @@ std::string Value::toString(bool quoteStrings, size_t limit) const {
             return "[" + formatNumber(r.begin) + " : " + formatNumber(r.step) + " : " +
                    formatNumber(r.end) + "]";
         }
-        case Type::Function: return functionLiteralToString(*toFunction().def);
+        case Type::Function:
+            return functionLiteralToString(*toFunction().def);
     }
     return "";
 }
@@ -278,16 +303,26 @@ void Value::appendEchoString(std::string &out, size_t limit) const {
 
 const char *binaryOpSpelling(BinaryOp op) {
     switch (op) {
-        case BinaryOp::Add: return "+";
-        case BinaryOp::Sub: return "-";
-        case BinaryOp::Mul: return "*";
-        case BinaryOp::Div: return "/";
-        case BinaryOp::Mod: return "%";
-        case BinaryOp::Pow: return "^";
-        case BinaryOp::Less: return "<";
-        case BinaryOp::LessEqual: return "<=";
-        case BinaryOp::Greater: return ">";
-        case BinaryOp::GreaterEqual: return ">=";
+        case BinaryOp::Add:
+            return "+";
+        case BinaryOp::Sub:
+            return "-";
+        case BinaryOp::Mul:
+            return "*";
+        case BinaryOp::Div:
+            return "/";
+        case BinaryOp::Mod:
+            return "%";
+        case BinaryOp::Pow:
+            return "^";
+        case BinaryOp::Less:
+            return "<";
+        case BinaryOp::LessEqual:
+            return "<=";
+        case BinaryOp::Greater:
+            return ">";
+        case BinaryOp::GreaterEqual:
+            return ">=";
     }
     return "?";
 }
@@ -430,19 +465,27 @@ Value multiply(const Value &a, const Value &b, std::string &warning) {
 Value compare(BinaryOp op, const Value &a, const Value &b, std::string &warning) {
     auto result = [op](int c) {
         switch (op) {
-            case BinaryOp::Less: return c < 0;
-            case BinaryOp::LessEqual: return c <= 0;
-            case BinaryOp::Greater: return c > 0;
-            default: return c >= 0;
+            case BinaryOp::Less:
+                return c < 0;
+            case BinaryOp::LessEqual:
+                return c <= 0;
+            case BinaryOp::Greater:
+                return c > 0;
+            default:
+                return c >= 0;
         }
     };
     if (a.isNumber() && b.isNumber()) {
         double x = a.toNumber(), y = b.toNumber();
         switch (op) {
-            case BinaryOp::Less: return Value::boolean(x < y);
-            case BinaryOp::LessEqual: return Value::boolean(x <= y);
-            case BinaryOp::Greater: return Value::boolean(x > y);
-            default: return Value::boolean(x >= y);
+            case BinaryOp::Less:
+                return Value::boolean(x < y);
+            case BinaryOp::LessEqual:
+                return Value::boolean(x <= y);
+            case BinaryOp::Greater:
+                return Value::boolean(x > y);
+            default:
+                return Value::boolean(x >= y);
         }
     }
     if (a.isString() && b.isString()) return Value::boolean(result(a.toStr().compare(b.toStr())));
@@ -480,7 +523,8 @@ Value applyBinary(BinaryOp op, const Value &a, const Value &b, std::string &warn
                                                          : a.toNumber() - b.toNumber());
             if (a.isVector() && b.isVector()) return elementwise(op, a.toVector(), b.toVector());
             break;
-        case BinaryOp::Mul: return multiply(a, b, warning);
+        case BinaryOp::Mul:
+            return multiply(a, b, warning);
         case BinaryOp::Div:
             if (a.isNumber() && b.isNumber()) return Value::number(a.toNumber() / b.toNumber());
             if (a.isVector() && b.isNumber()) return withScalar(op, a.toVector(), b, false);
@@ -494,7 +538,8 @@ Value applyBinary(BinaryOp op, const Value &a, const Value &b, std::string &warn
             if (a.isNumber() && b.isNumber())
                 return Value::number(std::pow(a.toNumber(), b.toNumber()));
             break;
-        default: return compare(op, a, b, warning);
+        default:
+            return compare(op, a, b, warning);
     }
     warning = undefinedOperation(op, a, b);
     return Value();

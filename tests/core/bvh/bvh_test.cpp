@@ -75,8 +75,8 @@ TEST(Bvh, VisitsEveryBoxTheRayMeets) {
     for (double scale : {1e-6, 1.0, 1e6}) {
         SCOPED_TRACE(scale);
         for (int i = 0; i < 600; ++i) {
-            Vec3 o = Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) *
-                     (20 * scale);
+            Vec3 o =
+                Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) * (20 * scale);
             Vec3 d = normalize(Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5));
             // One ray in three runs parallel to one or two axes, some with a -0.0 component
             if (i % 3 == 1) d[i % 2] = (i & 4) ? -0.0 : 0.0;
@@ -131,22 +131,28 @@ TEST(Bvh, VisitsEveryBoxTheRayMeets) {
 // inf, at scales 1e-6 to 1e6. The node's offset and count, which the lanes load with the box,
 // are set to words that read as NaN, infinity and subnormals.
 TEST(Bvh, LaneSlabsDecideEveryNodeAsRaySlabs) {
-    if (!__builtin_cpu_supports("avx2")) GTEST_SKIP() << "this machine has no AVX2: the lanes are not used";
+    if (!__builtin_cpu_supports("avx2"))
+        GTEST_SKIP() << "this machine has no AVX2: the lanes are not used";
     Rng rng(41);
-    const uint32_t words[][2] = {{0, 0}, {1, 0}, {0, 0x7ff00000}, {1, 0x7ff80000}, {0, 0x80000001}, {7, 3}};
+    const uint32_t words[][2] = {{0, 0},          {1, 0},          {0, 0x7ff00000},
+                                 {1, 0x7ff80000}, {0, 0x80000001}, {7, 3}};
     auto pick = [&](std::initializer_list<double> values) {
         return *(values.begin() + static_cast<size_t>(rng.uniform() * values.size()));
     };
     long long tested = 0, hits = 0, laterTested = 0;
     for (double scale : {1e-6, 1.0, 1e6}) {
         for (int i = 0; i < 4000; ++i) {
-            Vec3 o = Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) * (20 * scale);
+            Vec3 o =
+                Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) * (20 * scale);
             Vec3 d(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5);
             for (int a = 0; a < 3; ++a) {
                 double u = rng.uniform();
-                if (u < 0.15) d[a] = 0.0;
-                else if (u < 0.3) d[a] = -0.0;
-                else if (u < 0.35) d[a] = (u < 0.325 ? 1 : -1) * 1e-310;
+                if (u < 0.15)
+                    d[a] = 0.0;
+                else if (u < 0.3)
+                    d[a] = -0.0;
+                else if (u < 0.35)
+                    d[a] = (u < 0.325 ? 1 : -1) * 1e-310;
             }
             Ray ray(o, d);
             Bvh::RaySlabs one(ray);
@@ -167,7 +173,8 @@ TEST(Bvh, LaneSlabsDecideEveryNodeAsRaySlabs) {
                         lo[a] = -kInfinity;
                         hi[a] = pick({-kInfinity, o[a], kInfinity});
                     } else {
-                        double c = (rng.uniform() - 0.5) * 30 * scale, w = rng.uniform() * 10 * scale;
+                        double c = (rng.uniform() - 0.5) * 30 * scale,
+                               w = rng.uniform() * 10 * scale;
                         lo[a] = c;
                         hi[a] = c + w;
                     }
@@ -182,8 +189,8 @@ TEST(Bvh, LaneSlabsDecideEveryNodeAsRaySlabs) {
                 double tMax = pick({kInfinity, rng.uniform() * 40 * scale, 0.0, -kInfinity});
                 bool expected = one.hit(node, tMin, tMax);
                 ASSERT_EQ(lanes.hit(node, tMin, tMax), expected)
-                    << "box " << lo.toString() << " " << hi.toString() << " ray " << o.toString() << " "
-                    << d.toString() << " tMin " << tMin << " tMax " << tMax;
+                    << "box " << lo.toString() << " " << hi.toString() << " ray " << o.toString()
+                    << " " << d.toString() << " tMin " << tMin << " tMax " << tMax;
                 ++tested;
                 hits += expected;
                 // Two nodes side by side: the same answers, and a passing node's t0 gives the
@@ -191,7 +198,8 @@ TEST(Bvh, LaneSlabsDecideEveryNodeAsRaySlabs) {
                 double t0[2];
                 int pair = lanes.hitPair(previous, node, tMin, tMax, t0);
                 ASSERT_EQ(pair, int(one.hit(previous, tMin, tMax)) | int(expected) << 1)
-                    << "box " << lo.toString() << " " << hi.toString() << " tMin " << tMin << " tMax " << tMax;
+                    << "box " << lo.toString() << " " << hi.toString() << " tMin " << tMin
+                    << " tMax " << tMax;
                 const Bvh::Node *pairNodes[2] = {&previous, &node};
                 for (int p = 0; p < 2; ++p) {
                     if (!(pair >> p & 1)) continue;
@@ -218,7 +226,8 @@ TEST(Bvh, LaneSlabsDecideEveryNodeAsRaySlabs) {
 // And a whole walk with the lanes makes the same visits, in the same order, with the same tMax;
 // so does the walk that tests two children at once (for visitors that only lower tMax).
 TEST(Bvh, LaneSlabsWalkVisitsAsTheOnePlaneWalk) {
-    if (!__builtin_cpu_supports("avx2")) GTEST_SKIP() << "this machine has no AVX2: the lanes are not used";
+    if (!__builtin_cpu_supports("avx2"))
+        GTEST_SKIP() << "this machine has no AVX2: the lanes are not used";
     Rng rng(43);
     for (int scene = 0; scene < 40; ++scene) {
         std::vector<Bounds3> boxes;
@@ -244,7 +253,9 @@ TEST(Bvh, LaneSlabsWalkVisitsAsTheOnePlaneWalk) {
                 });
                 return visits;
             };
-            auto one = walk([&](const Ray &r, double *tMax, auto &&v) { bvh.traverse(r, -kInfinity, tMax, v); });
+            auto one = walk([&](const Ray &r, double *tMax, auto &&v) {
+                bvh.traverse(r, -kInfinity, tMax, v);
+            });
             auto lanes = walk([&](const Ray &r, double *tMax, auto &&v) {
                 bvh.traverseWith(Bvh::LaneSlabs(r), -kInfinity, tMax, v);
             });
@@ -306,7 +317,10 @@ TEST(Bvh, HandlesCoincidentCentroidsAndEmptyInput) {
     Bvh empty(std::vector<Bounds3>{});
     double t = kInfinity;
     int visits = 0;
-    empty.traverse(Ray(Vec3(0), Vec3(1, 0, 0)), 0, &t, [&](uint32_t, double *) { ++visits; return false; });
+    empty.traverse(Ray(Vec3(0), Vec3(1, 0, 0)), 0, &t, [&](uint32_t, double *) {
+        ++visits;
+        return false;
+    });
     EXPECT_EQ(visits, 0);
 }
 

@@ -43,11 +43,20 @@ std::vector<Bounds3> randomBoxes(Rng &rng, int count, double scale, const Vec3 &
         Vec3 c(rng.uniform() * 20 - 10, rng.uniform() * 20 - 10, rng.uniform() * 20 - 10);
         Vec3 h(rng.uniform(), rng.uniform(), rng.uniform());
         switch (i % 5) {
-        case 0: h[i % 3] = 0; break;                  // flat, as a face of a mesh
-        case 1: h = h * 1e-4; break;                  // tiny
-        case 2: if (i % 15 == 2) c = Vec3(0); break;  // around the apex
-        case 3: h = h * 8; break;                     // large
-        default: break;
+            case 0:
+                h[i % 3] = 0;
+                break;  // flat, as a face of a mesh
+            case 1:
+                h = h * 1e-4;
+                break;  // tiny
+            case 2:
+                if (i % 15 == 2) c = Vec3(0);
+                break;  // around the apex
+            case 3:
+                h = h * 8;
+                break;  // large
+            default:
+                break;
         }
         boxes.push_back(Bounds3((c - h) * scale + apex, (c + h) * scale + apex));
     }
@@ -102,15 +111,18 @@ TEST(VistaLists, SameVisitsAsTheWholeTree) {
                 if (!cell) continue;
                 ++served;
                 bvh.traverseLeaves(cell->leaves, cell->count, ray, 0, &tListed, listed);
-                ASSERT_EQ(whole.visits, listed.visits) << "direction " << d.x << " " << d.y << " " << d.z;
+                ASSERT_EQ(whole.visits, listed.visits)
+                    << "direction " << d.x << " " << d.y << " " << d.z;
                 ASSERT_EQ(tWhole, tListed);
 #if SCADRAY_LANE_SLABS
                 // Two listed leaves tested side by side (RenderScene::closestHit with AVX2)
                 if (__builtin_cpu_supports("avx2")) {
                     Recorder paired{boxes, ray, 0, {}};
                     double tPaired = kInfinity;
-                    bvh.traverseLeavesPairs(cell->leaves, cell->count, Bvh::LaneSlabs(ray), 0, &tPaired, paired);
-                    ASSERT_EQ(whole.visits, paired.visits) << "direction " << d.x << " " << d.y << " " << d.z;
+                    bvh.traverseLeavesPairs(cell->leaves, cell->count, Bvh::LaneSlabs(ray), 0,
+                                            &tPaired, paired);
+                    ASSERT_EQ(whole.visits, paired.visits)
+                        << "direction " << d.x << " " << d.y << " " << d.z;
                     ASSERT_EQ(tWhole, tPaired);
                 }
 #endif
@@ -129,7 +141,8 @@ TEST(VistaLists, TinyBoxesOnTheBordersOfCells) {
     for (double scale : {1e-6, 1.0, 1e6}) {
         Vec3 apex = Vec3(0.75, -1.5, 0.25) * scale;
         std::vector<Vec3> border;
-        for (int i = 0; i < 300; ++i) border.push_back(normalize(borderDirection(rng, i % 3, i % 2 ? 1 : -1)));
+        for (int i = 0; i < 300; ++i)
+            border.push_back(normalize(borderDirection(rng, i % 3, i % 2 ? 1 : -1)));
         std::vector<Bounds3> boxes = randomBoxes(rng, 30, scale, apex);
         for (const Vec3 &d : border) {
             Vec3 c = apex + d * (3 * scale);
@@ -148,7 +161,8 @@ TEST(VistaLists, TinyBoxesOnTheBordersOfCells) {
             if (!cell) continue;
             ++served;
             bvh.traverseLeaves(cell->leaves, cell->count, ray, 0, &tListed, listed);
-            ASSERT_EQ(whole.visits, listed.visits) << "direction " << d.x << " " << d.y << " " << d.z;
+            ASSERT_EQ(whole.visits, listed.visits)
+                << "direction " << d.x << " " << d.y << " " << d.z;
         }
         EXPECT_GT(served, 200);
     }
@@ -194,7 +208,8 @@ TEST(VistaLists, LastCellServesOnlyRaysItHolds) {
                 const Lists &L = lists[l];
                 for (int step = run * 100; step < run * 100 + 100; ++step) {
                     double t = (step < 20000 ? step : 40000 - step) * (2 * kPi / 20000);
-                    Ray ray(L.apex, normalize(Vec3(std::cos(t), 0.8 * std::sin(t), 0.3 + 0.9 * std::sin(3 * t))));
+                    Ray ray(L.apex, normalize(Vec3(std::cos(t), 0.8 * std::sin(t),
+                                                   0.3 + 0.9 * std::sin(3 * t))));
                     ++rays;
                     Recorder whole{L.boxes, ray, 0, {}}, listed{L.boxes, ray, 0, {}};
                     double tWhole = kInfinity, tListed = kInfinity;
@@ -224,10 +239,11 @@ TEST(VistaLists, RefusesRaysItCannotServe) {
     VistaLists vista(bvh, apex);
     Vec3 d = normalize(Vec3(0.3, -0.4, 0.8));
     EXPECT_NE(vista.find(Ray(apex, d), 0, kInfinity), nullptr);
-    EXPECT_EQ(vista.find(Ray(apex + Vec3(1e-9, 0, 0), d), 0, kInfinity), nullptr);  // not from the apex
-    EXPECT_EQ(vista.find(Ray(apex, d), 0, 10), nullptr);                           // bounded
-    EXPECT_EQ(vista.find(Ray(apex, d), 1e-3, kInfinity), nullptr);                 // not from its start
-    EXPECT_EQ(vista.find(Ray(apex, Vec3(0, 0.6, 0.8)), 0, kInfinity), nullptr);     // a zero component
+    EXPECT_EQ(vista.find(Ray(apex + Vec3(1e-9, 0, 0), d), 0, kInfinity),
+              nullptr);                                             // not from the apex
+    EXPECT_EQ(vista.find(Ray(apex, d), 0, 10), nullptr);            // bounded
+    EXPECT_EQ(vista.find(Ray(apex, d), 1e-3, kInfinity), nullptr);  // not from its start
+    EXPECT_EQ(vista.find(Ray(apex, Vec3(0, 0.6, 0.8)), 0, kInfinity), nullptr);  // a zero component
     EXPECT_EQ(vista.find(Ray(apex, Vec3(-0.0, 0.6, 0.8)), 0, kInfinity), nullptr);
     EXPECT_GT(vista.cellsListing(), 0u);
 

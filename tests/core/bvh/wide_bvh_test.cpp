@@ -61,7 +61,9 @@ Expected bruteClosest(const TriangleMesh &mesh, const Ray &r, double tMin, doubl
     Expected e;
     for (uint32_t tri = 0; tri < mesh.triangleCount(); ++tri) {
         TriangleMesh::Hit h;
-        if (!mesh.intersectTriangle(r, tri, &h) || !(h.t > tMin) || !(h.t < tMax) || h.t <= h.tError) continue;
+        if (!mesh.intersectTriangle(r, tri, &h) || !(h.t > tMin) || !(h.t < tMax) ||
+            h.t <= h.tError)
+            continue;
         if (h.t < e.t) {
             e = {true, h.t, tri};
         }
@@ -75,12 +77,21 @@ std::vector<Ray> testRays(const ir::Mesh &m, double scale, const Vec3 &offset, i
     Rng rng(5);
     std::vector<Ray> rays;
     for (int i = 0; i < count; ++i) {
-        Vec3 o = Vec3(rng.uniform() * 6 - 3, rng.uniform() * 6 - 3, rng.uniform() * 6 - 3) * scale + offset;
+        Vec3 o = Vec3(rng.uniform() * 6 - 3, rng.uniform() * 6 - 3, rng.uniform() * 6 - 3) * scale +
+                 offset;
         Vec3 target;
         switch (i % 3) {
-        case 0: target = m.positions[static_cast<size_t>(rng.uniform() * m.positions.size())]; break;
-        case 1: target = Vec3(rng.uniform() * 2 - 1, rng.uniform() * 2 - 1, rng.uniform() * 2 - 1) * scale + offset; break;
-        default: target = o + Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5); break;
+            case 0:
+                target = m.positions[static_cast<size_t>(rng.uniform() * m.positions.size())];
+                break;
+            case 1:
+                target = Vec3(rng.uniform() * 2 - 1, rng.uniform() * 2 - 1, rng.uniform() * 2 - 1) *
+                             scale +
+                         offset;
+                break;
+            default:
+                target = o + Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5);
+                break;
         }
         if (target == o) continue;
         rays.emplace_back(o, normalize(target - o));
@@ -147,7 +158,8 @@ TEST(WideBvh, FloatLeavesHoldEachLeafsTrianglesAndVerticesSideBySide) {
     ASSERT_EQ(same.nodes().size(), mesh.bvh().nodes().size());
     const auto &order = same.itemOrder();
     const auto &words = mesh.floatLeaves();
-    ASSERT_EQ(words.size(), TriangleMesh::kFloatLeafWords * order.size() + TriangleMesh::kLeafPadding);
+    ASSERT_EQ(words.size(),
+              TriangleMesh::kFloatLeafWords * order.size() + TriangleMesh::kLeafPadding);
     size_t leafTriangles = 0;
     uint32_t largest = 0;
     for (const auto &node : mesh.bvh().nodes())
@@ -163,7 +175,8 @@ TEST(WideBvh, FloatLeavesHoldEachLeafsTrianglesAndVerticesSideBySide) {
             for (uint32_t i = 0; i < n; ++i) {
                 ASSERT_EQ(leaf[i], order[first + i]);
                 for (int j = 0; j < 9; ++j)
-                    ASSERT_EQ(std::bit_cast<float>(leaf[n + j * n + i]), m->positions[m->triangles[leaf[i]][j / 3]][j % 3]);
+                    ASSERT_EQ(std::bit_cast<float>(leaf[n + j * n + i]),
+                              m->positions[m->triangles[leaf[i]][j / 3]][j % 3]);
             }
         }
     EXPECT_EQ(leafTriangles, order.size());
@@ -184,8 +197,9 @@ TEST(WideBvh, FloatLeavesHoldEachLeafsTrianglesAndVerticesSideBySide) {
         for (int c = 0; c < WideBvh::kWidth; ++c) {
             if (node.child[c] == WideBvh::kEmpty || !(node.child[c] & WideBvh::kLeaf)) continue;
             largest = std::max(largest, WideBvh::leafCount(node.child[c]));
-            ASSERT_TRUE(fetchLineHolds(indexed.bvh(), node, c,
-                                       &indexed.leafTriangles()[WideBvh::leafFirst(node.child[c])]));
+            ASSERT_TRUE(
+                fetchLineHolds(indexed.bvh(), node, c,
+                               &indexed.leafTriangles()[WideBvh::leafFirst(node.child[c])]));
         }
     EXPECT_EQ(largest > 4, TriangleMesh::fourWideLeaves());
 }
@@ -215,11 +229,13 @@ void expectAllHitsMatchBruteForce(const TriangleMesh &mesh, const Ray &r) {
 TEST(WideBvh, AllHitsAreEveryCrossingOfTheLine) {
     auto m = troubleMesh(3, 1, Vec3(0));
     TriangleMesh mesh(m);
-    for (const Ray &r : testRays(*m, 1, Vec3(0), 600)) ASSERT_NO_FATAL_FAILURE(expectAllHitsMatchBruteForce(mesh, r));
+    for (const Ray &r : testRays(*m, 1, Vec3(0), 600))
+        ASSERT_NO_FATAL_FAILURE(expectAllHitsMatchBruteForce(mesh, r));
     auto f = test::inFloats(troubleMesh(3, 1, Vec3(0)));
     TriangleMesh floats(f);
     ASSERT_FALSE(floats.floatLeaves().empty());
-    for (const Ray &r : testRays(*f, 1, Vec3(0), 600)) ASSERT_NO_FATAL_FAILURE(expectAllHitsMatchBruteForce(floats, r));
+    for (const Ray &r : testRays(*f, 1, Vec3(0), 600))
+        ASSERT_NO_FATAL_FAILURE(expectAllHitsMatchBruteForce(floats, r));
 }
 
 /// Every triangle once in leaf order, leaves of 1..4 triangles, and each leaf's float box holds
@@ -317,7 +333,8 @@ TEST(WideBvh, EachChildsPrefetchLineIsItsNodeOrItsLeafsData) {
                 }
                 ASSERT_TRUE(fetchLineHolds(bvh, n, c, uintptr_t(target)))
                     << "child " << c << " ref " << r << ": line "
-                    << int64_t(reinterpret_cast<uintptr_t>(bvh.fetchLine(n, c))) - root << ", target " << target - root;
+                    << int64_t(reinterpret_cast<uintptr_t>(bvh.fetchLine(n, c))) - root
+                    << ", target " << target - root;
             }
         if (data) {
             EXPECT_GT(leaves, 100u);
@@ -373,7 +390,8 @@ TEST(WideBvh, SmallEmptyAndCoincidentMeshes) {
     WideBvh none(empty, 2);
     double t = kInfinity;
     int visits = 0;
-    none.traverse(Ray(Vec3(0), Vec3(1, 0, 0)), 0, &t, [&](uint32_t, double *) { return ++visits, false; });
+    none.traverse(Ray(Vec3(0), Vec3(1, 0, 0)), 0, &t,
+                  [&](uint32_t, double *) { return ++visits, false; });
     EXPECT_EQ(visits, 0);
     // 40 copies of one triangle: all centroids coincide, split by count into leaves of <= 4
     ir::Mesh same;
@@ -397,8 +415,8 @@ TEST(WideBvh, SmallEmptyAndCoincidentMeshes) {
 
 std::string describe(const Ray &r) {
     char s[200];
-    std::snprintf(s, sizeof s, "ray [%.17g, %.17g, %.17g] + t [%.17g, %.17g, %.17g]", r.o.x, r.o.y, r.o.z, r.d.x, r.d.y,
-                  r.d.z);
+    std::snprintf(s, sizeof s, "ray [%.17g, %.17g, %.17g] + t [%.17g, %.17g, %.17g]", r.o.x, r.o.y,
+                  r.o.z, r.d.x, r.d.y, r.d.z);
     return s;
 }
 
@@ -427,7 +445,9 @@ void expectSameAsBruteForce(const TriangleMesh &mesh, const std::vector<Ray> &ra
 std::vector<Ray> stiffRays(const ir::Mesh &m, const WideBvh &bvh, double scale, int count) {
     Rng rng(11);
     std::vector<Ray> rays;
-    auto vertex = [&] { return m.positions[static_cast<size_t>(rng.uniform() * m.positions.size())]; };
+    auto vertex = [&] {
+        return m.positions[static_cast<size_t>(rng.uniform() * m.positions.size())];
+    };
     for (int i = 0; i < count; ++i) {
         int axis = i % 3;
         double sign = i % 2 ? 1 : -1;
@@ -439,7 +459,8 @@ std::vector<Ray> stiffRays(const ir::Mesh &m, const WideBvh &bvh, double scale, 
         const auto &node = bvh.nodes()[static_cast<size_t>(rng.uniform() * bvh.nodes().size())];
         int c = static_cast<int>(rng.uniform() * 4);
         if (node.child[c] != WideBvh::kEmpty) {
-            Vec3 o = target + Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) * (3 * scale);
+            Vec3 o = target + Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) *
+                                  (3 * scale);
             o[axis] = i % 2 ? node.lo[axis][c] : node.hi[axis][c];
             if (o != target) rays.emplace_back(o, normalize(target - o));
             // and along the plane
@@ -529,13 +550,26 @@ TEST(WideBvh, OverItemBoxesVisitsEveryBoxTheRayMeetsEvenEmptyInfiniteAndHugeOnes
         Vec3 h(rng.uniform(), rng.uniform() * 0.1, rng.uniform() * 2);
         Bounds3 b(c - h, c + h);
         switch (i % 97) {
-            case 0: b = Bounds3(); break;            // empty
-            case 1: b = Bounds3::infinite(); break;  // unbounded
-            case 2: b.max.x = kInfinity; break;      // a half space
-            case 3: b.min.y = -1e300; break;         // beyond the float range
-            case 4: b = Bounds3(Vec3(1e39), Vec3(2e39)); break;
-            case 5: b = Bounds3(c, c); break;        // a point
-            default: break;
+            case 0:
+                b = Bounds3();
+                break;  // empty
+            case 1:
+                b = Bounds3::infinite();
+                break;  // unbounded
+            case 2:
+                b.max.x = kInfinity;
+                break;  // a half space
+            case 3:
+                b.min.y = -1e300;
+                break;  // beyond the float range
+            case 4:
+                b = Bounds3(Vec3(1e39), Vec3(2e39));
+                break;
+            case 5:
+                b = Bounds3(c, c);
+                break;  // a point
+            default:
+                break;
         }
         boxes.push_back(b);
     }
@@ -555,10 +589,10 @@ TEST(WideBvh, OverItemBoxesVisitsEveryBoxTheRayMeetsEvenEmptyInfiniteAndHugeOnes
     for (int k = 0; k < 800; ++k) {
         Vec3 o(rng.uniform() * 30 - 15, rng.uniform() * 30 - 15, rng.uniform() * 30 - 15);
         Vec3 d(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5);
-        if (k % 4 == 1) d[k % 3] = 0;                   // flat directions
+        if (k % 4 == 1) d[k % 3] = 0;                     // flat directions
         if (k % 4 == 2) o = boxes[k % boxes.size()].min;  // from a box corner
         if (k % 8 == 3) d[(k + 1) % 3] = 1e-300;
-        if (k % 16 == 5) o = o * 1e31;                  // beyond the float range: the double test
+        if (k % 16 == 5) o = o * 1e31;  // beyond the float range: the double test
         if (lengthSquared(d) == 0) continue;
         Ray r(o, d);
         // From 0 and beyond it (the forward test) and from -inf (the whole line)
@@ -566,11 +600,13 @@ TEST(WideBvh, OverItemBoxesVisitsEveryBoxTheRayMeetsEvenEmptyInfiniteAndHugeOnes
             double tMax = k % 3 ? kInfinity : 7.5;
             std::vector<char> visited(boxes.size(), 0);
             double far = tMax;
-            bvh.traverse(r, tMin, &far, [&](uint32_t i, double *) { return visited[i] = 1, false; });
+            bvh.traverse(r, tMin, &far,
+                         [&](uint32_t i, double *) { return visited[i] = 1, false; });
             for (size_t i = 0; i < boxes.size(); ++i)
                 if (meets(boxes[i], r, tMin, tMax)) {
                     ++met;
-                    ASSERT_TRUE(visited[i]) << "box " << i << ", ray " << k << ", tMin " << tMin << ", " << describe(r);
+                    ASSERT_TRUE(visited[i])
+                        << "box " << i << ", ray " << k << ", tMin " << tMin << ", " << describe(r);
                 }
         }
     }
@@ -605,15 +641,19 @@ TEST(WideBvh, EmptySlotsAreNeverVisited) {
                     if (lengthSquared(d) == 0) continue;
                     for (int k = 0; k < 4; ++k) {
                         const Bounds3 &b = boxes[k % n];
-                        Vec3 o = k == 0 ? b.min : k == 1 ? Vec3(b.max.x, 0, b.min.z) : k == 2 ? Vec3(0) : Vec3(1e31);
+                        Vec3 o = k == 0   ? b.min
+                                 : k == 1 ? Vec3(b.max.x, 0, b.min.z)
+                                 : k == 2 ? Vec3(0)
+                                          : Vec3(1e31);
                         Ray r(o, d);
                         for (double tMin : {0.0, 1e-300, -kInfinity})
                             for (double tMax : {kInfinity, 7.5}) {
                                 double far = tMax;
-                                bvh.traverseLeaves(r, tMin, &far, [&](uint32_t first, uint32_t count, double *) {
-                                    EXPECT_LE(first + count, uint32_t(n)) << describe(r);
-                                    return false;
-                                });
+                                bvh.traverseLeaves(
+                                    r, tMin, &far, [&](uint32_t first, uint32_t count, double *) {
+                                        EXPECT_LE(first + count, uint32_t(n)) << describe(r);
+                                        return false;
+                                    });
                                 ++rays;
                             }
                     }

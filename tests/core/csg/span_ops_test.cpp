@@ -15,9 +15,8 @@ namespace rt {
 namespace {
 
 std::unique_ptr<PrimitiveInstance> sphereAt(const Vec3 &c, double r, int material = 0) {
-    return std::make_unique<PrimitiveInstance>(std::make_unique<Sphere>(r),
-                                               *Transform::fromMatrix(Mat4::translate(c)),
-                                               material);
+    return std::make_unique<PrimitiveInstance>(
+        std::make_unique<Sphere>(r), *Transform::fromMatrix(Mat4::translate(c)), material);
 }
 
 /// z coordinates of the span boundaries along the lecture's ray, which runs up the z axis
@@ -97,7 +96,8 @@ struct FakeLeaf {
     std::unique_ptr<PrimitiveInstance> leaf;
 };
 
-SpanList spansOf(std::initializer_list<std::pair<double, double>> iv, const PrimitiveInstance *leaf) {
+SpanList spansOf(std::initializer_list<std::pair<double, double>> iv,
+                 const PrimitiveInstance *leaf) {
     SpanList l;
     for (auto [a, b] : iv) l.push_back({{a, leaf, 0}, {b, leaf, 1}});
     return l;
@@ -199,17 +199,22 @@ TEST_F(TieBreak, OneSpanEachGivesTheSweepsResult) {
     auto position = [&]() {
         double t = std::floor(rng.uniform() * 6);
         switch (static_cast<int>(rng.uniform() * 5)) {
-            case 0: return t + 0.5 * eps;
-            case 1: return t + 1.5 * eps;
-            case 2: return rng.uniform() < 0.5 ? -kInfinity : kInfinity;
-            default: return t;
+            case 0:
+                return t + 0.5 * eps;
+            case 1:
+                return t + 1.5 * eps;
+            case 2:
+                return rng.uniform() < 0.5 ? -kInfinity : kInfinity;
+            default:
+                return t;
         }
     };
     auto span = [&](const PrimitiveInstance *leaf) -> std::optional<Span> {
         double a = position(), b = position();
         if (a > b) std::swap(a, b);
         if (!(a < b)) return std::nullopt;
-        Span s{{a, leaf, static_cast<int>(rng.uniform() * 6)}, {b, leaf, static_cast<int>(rng.uniform() * 6)}};
+        Span s{{a, leaf, static_cast<int>(rng.uniform() * 6)},
+               {b, leaf, static_cast<int>(rng.uniform() * 6)}};
         s.in.tie = rng.uniform() < 0.2;
         s.out.tie = rng.uniform() < 0.2;
         return s;
@@ -226,7 +231,8 @@ TEST_F(TieBreak, OneSpanEachGivesTheSweepsResult) {
             combineSpansBySweep(a, b, op, want, eps, &wantTie);
             ASSERT_EQ(got.size(), want.size()) << i;
             for (size_t k = 0; k < got.size(); ++k)
-                for (auto [g, w] : {std::pair{got[k].in, want[k].in}, std::pair{got[k].out, want[k].out}}) {
+                for (auto [g, w] :
+                     {std::pair{got[k].in, want[k].in}, std::pair{got[k].out, want[k].out}}) {
                     EXPECT_EQ(g.t, w.t) << i;
                     EXPECT_EQ(g.leaf, w.leaf) << i;
                     EXPECT_EQ(g.face, w.face) << i;
@@ -286,7 +292,8 @@ TEST(CsgShape, TangentSpheres) {
     ASSERT_EQ(grazing.size(), 1u);
     double chord = 2 * std::sqrt(1 - (1 - 1e-9) * (1 - 1e-9));
     EXPECT_NEAR(grazing[0].out.t - grazing[0].in.t, chord, 1e-6 * chord);
-    EXPECT_TRUE(eval(CsgShape::Op::Intersection, Ray(Vec3(1 - 1e-9, -5, 0), Vec3(0, 1, 0))).empty());
+    EXPECT_TRUE(
+        eval(CsgShape::Op::Intersection, Ray(Vec3(1 - 1e-9, -5, 0), Vec3(0, 1, 0))).empty());
 }
 
 TEST(CsgShape, WindowedEvaluationAgreesWithFullEvaluation) {
@@ -303,7 +310,8 @@ TEST(CsgShape, WindowedEvaluationAgreesWithFullEvaluation) {
             else
                 nodes.push_back(s.addLeaf(std::make_unique<PrimitiveInstance>(
                     std::make_unique<Box>(Vec3(-1, -0.7, -0.4), Vec3(0.8, 1, 1.2)),
-                    *Transform::fromMatrix(Mat4::translate(c) * Mat4::rotateAxis(30 * i, Vec3(1, 1, 0))),
+                    *Transform::fromMatrix(Mat4::translate(c) *
+                                           Mat4::rotateAxis(30 * i, Vec3(1, 1, 0))),
                     i)));
         }
         while (nodes.size() > 1) {
@@ -324,8 +332,16 @@ TEST(CsgShape, WindowedEvaluationAgreesWithFullEvaluation) {
             Crossing expected;
             bool want = false;
             for (const Span &sp : full) {
-                if (sp.in.t > tMin) { expected = sp.in; want = true; break; }
-                if (sp.out.t > tMin) { expected = sp.out; want = true; break; }
+                if (sp.in.t > tMin) {
+                    expected = sp.in;
+                    want = true;
+                    break;
+                }
+                if (sp.out.t > tMin) {
+                    expected = sp.out;
+                    want = true;
+                    break;
+                }
             }
             Crossing got;
             bool have = s.firstCrossing(r, tMin, kInfinity, &got, scratch);
@@ -340,7 +356,8 @@ TEST(CsgShape, WindowedEvaluationAgreesWithFullEvaluation) {
             for (const Span &sp : full) inSpan |= sp.in.t < probe && probe < sp.out.t;
             bool nearBoundary = false;
             for (const Span &sp : full)
-                nearBoundary |= std::abs(sp.in.t - probe) < 1e-9 || std::abs(sp.out.t - probe) < 1e-9;
+                nearBoundary |=
+                    std::abs(sp.in.t - probe) < 1e-9 || std::abs(sp.out.t - probe) < 1e-9;
             if (!nearBoundary) {
                 EXPECT_EQ(s.inside(r.at(probe)), inSpan);
             }
@@ -413,10 +430,12 @@ TEST(CsgShape, ManyOperandsInsideTestsOnTheirBoundsFaces) {
         std::vector<int> diff{s.addLeaf(cube({0, 0, 0}, {4, 4, 1}, 0))};
         for (int i = 0; i < 4; ++i)
             for (int j = 0; j < 4; ++j)
-                diff.push_back(s.addLeaf(cube({i + 0.25, j + 0.25, 0.5}, {i + 0.75, j + 0.75, 2}, 1)));
+                diff.push_back(
+                    s.addLeaf(cube({i + 0.25, j + 0.25, 0.5}, {i + 0.75, j + 0.75, 2}, 1)));
         std::vector<int> parts{s.addOp(CsgShape::Op::Difference, diff)};
         for (int k = 0; k < 20; ++k)
-            parts.push_back(s.addLeaf(cube({k % 5 * 0.75, k / 5 * 1.0, 1}, {k % 5 * 0.75 + 0.5, k / 5 + 0.5, 1.5}, 2)));
+            parts.push_back(s.addLeaf(
+                cube({k % 5 * 0.75, k / 5 * 1.0, 1}, {k % 5 * 0.75 + 0.5, k / 5 + 0.5, 1.5}, 2)));
         s.addOp(CsgShape::Op::Union, parts);
     };
     CsgShape pruned, plain;
@@ -451,27 +470,33 @@ namespace {
 TEST(CsgShape, TwoConvexOperandsGiveTheGeneralMergesResult) {
     Rng rng(23);
     SpanScratch scratch;
-    auto grid = [&](double lo, double hi) { return lo + std::floor(rng.uniform() * ((hi - lo) * 2 + 1)) / 2; };
+    auto grid = [&](double lo, double hi) {
+        return lo + std::floor(rng.uniform() * ((hi - lo) * 2 + 1)) / 2;
+    };
     auto convex = [&](int kind, int material) -> std::unique_ptr<PrimitiveInstance> {
         Vec3 lo(grid(-1, 1), grid(-1, 1), grid(-1, 1));
         Vec3 hi = lo + Vec3(grid(0.5, 2), grid(0.5, 2), grid(0.5, 2));
         switch (kind) {
-            case 0: return std::make_unique<PrimitiveInstance>(std::make_unique<Box>(lo, hi), Transform(), material);
+            case 0:
+                return std::make_unique<PrimitiveInstance>(std::make_unique<Box>(lo, hi),
+                                                           Transform(), material);
             case 1:
                 return std::make_unique<PrimitiveInstance>(
                     std::make_unique<Box>(lo, hi),
                     *Transform::fromMatrix(Mat4::rotateAxis(45, Vec3(0, 0, 1))), material);
-            case 2: return sphereAt(lo, grid(0.5, 1.5), material);
+            case 2:
+                return sphereAt(lo, grid(0.5, 1.5), material);
             default:
-                return std::make_unique<PrimitiveInstance>(std::make_unique<Cone>(lo.z, hi.z, 1, grid(0, 1)),
-                                                           *Transform::fromMatrix(Mat4::translate(Vec3(lo.x, lo.y, 0))),
-                                                           material);
+                return std::make_unique<PrimitiveInstance>(
+                    std::make_unique<Cone>(lo.z, hi.z, 1, grid(0, 1)),
+                    *Transform::fromMatrix(Mat4::translate(Vec3(lo.x, lo.y, 0))), material);
         }
     };
     int separate = 0, coincident = 0, pruned = 0;
     for (int trial = 0; trial < 1000; ++trial) {
         auto op = static_cast<CsgShape::Op>(1 + trial % 3);
-        int kindA = static_cast<int>(rng.uniform() * 4), kindB = static_cast<int>(rng.uniform() * 4);
+        int kindA = static_cast<int>(rng.uniform() * 4),
+            kindB = static_cast<int>(rng.uniform() * 4);
         uint64_t seed = rng.uniformU32();
         // The same two primitives in both trees
         auto build = [&](CsgShape &s, bool wrap) {
@@ -493,7 +518,8 @@ TEST(CsgShape, TwoConvexOperandsGiveTheGeneralMergesResult) {
             Vec3 d = i % 2 ? normalize(target - o) : Vec3(0, 0, o.z < 0 ? 1 : -1);
             if (i % 2 == 0) o = Vec3(target.x, target.y, o.z);
             Ray r(o, d);
-            double w0 = i % 3 ? -kInfinity : rng.uniform() * 8, w1 = i % 5 ? kInfinity : w0 + rng.uniform() * 4;
+            double w0 = i % 3 ? -kInfinity : rng.uniform() * 8,
+                   w1 = i % 5 ? kInfinity : w0 + rng.uniform() * 4;
             SpanList a, b;
             SpanScratch sa, sb;
             sa.cancelledTie = sb.cancelledTie = kInfinity;

@@ -46,7 +46,8 @@ TEST(AxisBox, GivesThePrimitiveInstancesCrossingsAndSurfacesBitForBit) {
             Vec3 lo = min(a, b), hi = max(a, b);
             for (int i = 0; i < 3; ++i)
                 if (lo[i] == hi[i]) hi[i] += 0.5 * scale;
-            Vec3 offset = k % 4 == 0 ? Vec3(0) : Vec3(grid(scale), grid(scale), rng.uniform() * scale);
+            Vec3 offset =
+                k % 4 == 0 ? Vec3(0) : Vec3(grid(scale), grid(scale), rng.uniform() * scale);
             auto inst = boxInstance(lo, hi, Mat4::translate(offset));
             AxisBox box = AxisBox::of(*inst);
             ASSERT_EQ(box.leaf(), inst.get());
@@ -86,7 +87,8 @@ TEST(AxisBox, GivesThePrimitiveInstancesCrossingsAndSurfacesBitForBit) {
                         EXPECT_EQ(got.face, expected.face);
                         EXPECT_EQ(got.leaf, expected.leaf);
                         EXPECT_EQ(got.tie, expected.tie);
-                        SurfaceInteraction s = box.surfaceAt(ray, got), e = inst->surfaceAt(ray, expected);
+                        SurfaceInteraction s = box.surfaceAt(ray, got),
+                                           e = inst->surfaceAt(ray, expected);
                         EXPECT_TRUE(sameBits(s.t, e.t));
                         expectSameBits(s.p, e.p, "point");
                         expectSameBits(s.pError, e.pError, "error bound");
@@ -110,7 +112,8 @@ TEST(AxisBox, StandsOnlyForBoxesPlacedByTheIdentityOrATranslation) {
     EXPECT_EQ(AxisBox::of(*identity).leaf(), identity.get());
     auto shifted = boxInstance(Vec3(0), Vec3(1), Mat4::translate(Vec3(3, -2, 0)));
     EXPECT_EQ(AxisBox::of(*shifted).leaf(), shifted.get());
-    for (const Mat4 &m : {Mat4::rotateZ(90), Mat4::scale(Vec3(2, 1, 1)), Mat4::mirror(Vec3(1, 0, 0))}) {
+    for (const Mat4 &m :
+         {Mat4::rotateZ(90), Mat4::scale(Vec3(2, 1, 1)), Mat4::mirror(Vec3(1, 0, 0))}) {
         auto placed = boxInstance(Vec3(0), Vec3(1), m);
         EXPECT_EQ(AxisBox::of(*placed).leaf(), nullptr) << m.toString();
     }

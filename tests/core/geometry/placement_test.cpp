@@ -54,7 +54,8 @@ TEST(Placement, TranslationGivesTheMatrixResultsBitForBit) {
             for (int j = 0; j < 20; ++j) {
                 Vec3 p(coordinate(scale), coordinate(scale), coordinate(scale));
                 Vec3 d(coordinate(1), coordinate(1), coordinate(1));
-                Vec3 err = abs(Vec3(coordinate(scale), coordinate(scale), coordinate(scale))) * 1e-15;
+                Vec3 err =
+                    abs(Vec3(coordinate(scale), coordinate(scale), coordinate(scale))) * 1e-15;
                 Vec3 n(coordinate(1), coordinate(1), coordinate(1));
                 if (n == Vec3(0)) n.z = 1;
 

@@ -201,8 +201,8 @@ TEST(Primitives, GrazingChordsAreAccurateAtEveryScale) {
             }
             // The same line moved out by 2 delta misses
             PrimitiveSpan ps;
-            EXPECT_FALSE(sphere.intersect(Ray(Vec3(-1000 * radius, radius * (1 + delta), 0),
-                                              Vec3(1, 0, 0)), &ps));
+            EXPECT_FALSE(sphere.intersect(
+                Ray(Vec3(-1000 * radius, radius * (1 + delta), 0), Vec3(1, 0, 0)), &ps));
         }
     }
 }

@@ -460,8 +460,7 @@ TEST(Revolved, LatheInsideIsTheEvenOddRuleAtEveryHeight) {
         double phi = 2 * M_PI * rng.uniform();
         bool want = evenOdd(r, z);
         in += want;
-        ASSERT_EQ(l.inside(Vec3(r * std::cos(phi), r * std::sin(phi), z)), want)
-            << r << " " << z;
+        ASSERT_EQ(l.inside(Vec3(r * std::cos(phi), r * std::sin(phi), z)), want) << r << " " << z;
     }
     EXPECT_GT(in, 2000);
 }

@@ -40,12 +40,14 @@ TEST(TriangleMesh, BuildersAreClosedAndOutward) {
 TEST(TriangleMesh, CubeSpansMatchTheAnalyticBox) {
     Rng rng(3);
     auto mesh = std::make_shared<TriangleMesh>(cubeMesh(Vec3(-1, -0.5, 0), Vec3(2, 1, 0.7)));
-    auto place = *Transform::fromMatrix(Mat4::translate(Vec3(1, 2, 3)) * Mat4::rotateAxis(30, Vec3(1, 1, 0)));
+    auto place = *Transform::fromMatrix(Mat4::translate(Vec3(1, 2, 3)) *
+                                        Mat4::rotateAxis(30, Vec3(1, 1, 0)));
     MeshInstance inst(mesh, place, 0);
     PrimitiveInstance box(std::make_unique<Box>(Vec3(-1, -0.5, 0), Vec3(2, 1, 0.7)), place, 0);
     int hits = 0;
     for (int i = 0; i < 3000; ++i) {
-        Vec3 target = Vec3(1, 2, 3) + Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) * 3;
+        Vec3 target =
+            Vec3(1, 2, 3) + Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) * 3;
         Vec3 o = Vec3(1, 2, 3) + randomDirection(rng) * 10;
         Ray r(o, normalize(target - o));
         SpanList a, b;
@@ -66,7 +68,8 @@ TEST(TriangleMesh, SpansOfRaysStartingInsideSeeTheFacesBehind) {
     // the origin), or the difference() is not cut along the ray and the face looks shadowed
     auto mesh = std::make_shared<TriangleMesh>(cubeMesh(Vec3(-20, -20, 4), Vec3(20, 20, 44)));
     MeshInstance inst(mesh, Transform(), 0);
-    PrimitiveInstance box(std::make_unique<Box>(Vec3(-20, -20, 4), Vec3(20, 20, 44)), Transform(), 0);
+    PrimitiveInstance box(std::make_unique<Box>(Vec3(-20, -20, 4), Vec3(20, 20, 44)), Transform(),
+                          0);
     Rng rng(11);
     for (double above : {1e-12, 1e-9, 1e-6, 1e-3, 1.0}) {
         for (int i = 0; i < 200; ++i) {
@@ -94,11 +97,12 @@ TEST(TriangleMesh, RaysThroughVerticesAndEdgesNeverSlipThrough) {
     Rng rng(8);
     int tested = 0;
     std::vector<Vec3> targets = ir->positions;
-    for (const auto &t : ir->triangles) targets.push_back((ir->positions[t[0]] + ir->positions[t[1]]) * 0.5);
+    for (const auto &t : ir->triangles)
+        targets.push_back((ir->positions[t[0]] + ir->positions[t[1]]) * 0.5);
     for (const Vec3 &target : targets) {
         for (int k = 0; k < 3; ++k) {
             Vec3 o = target * 3 + randomDirection(rng) * 0.7;
-            Ray r(o, normalize(target * 0.2 - o) );
+            Ray r(o, normalize(target * 0.2 - o));
             // Steer exactly through the target point: origin on the line through it
             r = Ray(target - r.d * 5, r.d);
             SpanList spans;
@@ -163,7 +167,8 @@ TEST(TriangleMesh, SpawnedRaysDoNotSelfIntersect) {
     auto mesh = std::make_shared<TriangleMesh>(icosphere(3, 1.3));
     Rng rng(5);
     SpanScratch scratch;
-    for (auto place : {Mat4(), Mat4::translate(Vec3(1e3, -2e3, 500)) * Mat4::scale(Vec3(2, 0.5, 1))}) {
+    for (auto place :
+         {Mat4(), Mat4::translate(Vec3(1e3, -2e3, 500)) * Mat4::scale(Vec3(2, 0.5, 1))}) {
         MeshInstance inst(mesh, *Transform::fromMatrix(place), 0);
         int tested = 0;
         for (int i = 0; i < 3000; ++i) {

@@ -17,8 +17,7 @@ namespace {
 Image reference(int w, int h) {
     Image img(w, h);
     for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            img.set(x, y, Rgb(0.2 + 0.6 * x / w, 0.3 + 0.4 * y / h, 0.5));
+        for (int x = 0; x < w; ++x) img.set(x, y, Rgb(0.2 + 0.6 * x / w, 0.3 + 0.4 * y / h, 0.5));
     return img;
 }
 

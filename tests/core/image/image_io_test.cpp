@@ -78,9 +78,10 @@ TEST(Srgb, ByteTableEqualsTheFormula) {
         for (double w : {std::nextafter(v, 0.0), v, std::nextafter(v, 1.0)})
             ASSERT_EQ(srgbByte(w), srgbByteFormula(w)) << w;
     }
-    for (double v : {0.0, -0.0, 1.0, -1.0, 2.0, 0.0031308, 1e-300, 5e-324, 1 - 1e-16,
-                     std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
-                     std::numeric_limits<double>::quiet_NaN()})
+    for (double v :
+         {0.0, -0.0, 1.0, -1.0, 2.0, 0.0031308, 1e-300, 5e-324, 1 - 1e-16,
+          std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+          std::numeric_limits<double>::quiet_NaN()})
         EXPECT_EQ(srgbByte(v), srgbByteFormula(v)) << v;
 }
 

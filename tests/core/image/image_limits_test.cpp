@@ -151,7 +151,8 @@ TEST_F(ImageLimits, ExrDeclaringMoreThanItsFileCanHoldIsRefused) {
     // (deflate, 1032 : 1) cannot hold them in 4 kB: 805 MB of pixels were allocated
     std::string path = write("window.exr", exrDeclaring(dir, 8192, 8192));
     std::string msg = readError(path);
-    EXPECT_NE(msg.find("image '" + path + "' (OpenEXR) declares 8192 x 8192 pixels, which need "
+    EXPECT_NE(msg.find("image '" + path +
+                       "' (OpenEXR) declares 8192 x 8192 pixels, which need "
                        "at least"),
               std::string::npos)
         << msg;

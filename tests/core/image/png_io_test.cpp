@@ -38,8 +38,7 @@ struct PngKind {
 
     std::string name() const {
         return "t" + std::to_string(colorType) + "_b" + std::to_string(bits) + "_g" +
-               std::to_string(int(tag)) + (trns ? "_trns" : "") + (interlaced ? "_i" : "") +
-               ".png";
+               std::to_string(int(tag)) + (trns ? "_trns" : "") + (interlaced ? "_i" : "") + ".png";
     }
 };
 
@@ -58,8 +57,9 @@ void writeTestPng(const std::string &path, const PngKind &k) {
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
             for (int c = 0; c < channels; ++c, step += 7919) {
-                unsigned v = (x + y == 0) ? 0 : (x == w - 1 && y == h - 1) ? maxValue
-                                                                           : step % (maxValue + 1);
+                unsigned v = (x + y == 0)                 ? 0
+                             : (x == w - 1 && y == h - 1) ? maxValue
+                                                          : step % (maxValue + 1);
                 size_t bit = (size_t(x) * channels + c) * k.bits;
                 unsigned char *row = data.data() + y * rowBytes;
                 if (k.bits == 16) {
@@ -141,7 +141,8 @@ std::vector<PngKind> everyKind() {
     add(PNG_COLOR_TYPE_RGB_ALPHA, {8, 16});
     for (int type : {PNG_COLOR_TYPE_GRAY, PNG_COLOR_TYPE_PALETTE, PNG_COLOR_TYPE_RGB})
         kinds.push_back({type, 8, PngKind::None, /*trns=*/true});
-    for (int bits : {8, 16}) kinds.push_back({PNG_COLOR_TYPE_RGB, bits, PngKind::Gamma1, false, true});
+    for (int bits : {8, 16})
+        kinds.push_back({PNG_COLOR_TYPE_RGB, bits, PngKind::Gamma1, false, true});
     kinds.push_back({PNG_COLOR_TYPE_GRAY, 2, PngKind::Srgb, false, true});
     return kinds;
 }
@@ -212,8 +213,7 @@ TEST_F(PngIo, BrokenPngsFailWithTheirReason) {
             << e.what();
     }
     // A write into a folder that does not exist leaves nothing behind
-    EXPECT_THROW(writeImage(Image(2, 2), (dir / "missing" / "x.png").string()),
-                 std::runtime_error);
+    EXPECT_THROW(writeImage(Image(2, 2), (dir / "missing" / "x.png").string()), std::runtime_error);
 }
 
 TEST_F(PngIo, DamagedPngsReadOrFailCleanly) {

@@ -7,9 +7,9 @@
 
 #include <map>
 
+#include "core/ir/scene_ir.h"
 #include "core/meshing/facets.h"
 #include "core/meshing/hull.h"
-#include "core/ir/scene_ir.h"
 
 namespace rt::ir {
 namespace {

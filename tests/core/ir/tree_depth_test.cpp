@@ -44,7 +44,8 @@ TEST(TreeDepth, DeeperThanTheLimitIsALocatedError) {
         ir::validateScene(s, diag);
         FAIL() << "expected SceneError";
     } catch (const SceneError &e) {
-        EXPECT_NE(std::string(e.what()).find("nested more than 20000 levels"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("nested more than 20000 levels"), std::string::npos)
+            << e.what();
         // root -> chain top (line kMaxTreeDepth + 4) -> ...: the first node past the limit
         EXPECT_EQ(e.loc().line, 5);
         EXPECT_EQ(*e.loc().file, "deep.scad");

@@ -59,8 +59,7 @@ TEST(AreaLight, FullSubdivisionIsTheTrapezoidRuleOnPowerOfTwoPlusOneGrids) {
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j)
             for (int di = 0; di < 2; ++di)
-                for (int dj = 0; dj < 2; ++dj)
-                    want += f(s.gridTarget(i + di, j + dj)).r / 64;
+                for (int dj = 0; dj < 2; ++dj) want += f(s.gridTarget(i + di, j + dj)).r / 64;
     EXPECT_NEAR(got.r, want, 1e-12);
 }
 
@@ -108,7 +107,7 @@ TEST(AreaLight, OrientFacesTheShadedPoint) {
         for (int v = 0; v < 5; ++v) {
             Vec3 d = s.gridTarget(u, v) - l.position;
             EXPECT_NEAR(dot(d, toLight), 0, 1e-12);  // the grid is square to the light ray
-            EXPECT_LE(length(d), 2 + 4 * 0.0011);  // both axes as long as axis1 (4)
+            EXPECT_LE(length(d), 2 + 4 * 0.0011);    // both axes as long as axis1 (4)
         }
 }
 

@@ -65,8 +65,9 @@ ChiSquare chiSquareTest(const Lobe &lobe, const std::function<Vec3(double, doubl
     double inside = 0;
     for (int ti = 0; ti < kThetaBins; ++ti)
         for (int pi = 0; pi < kPhiBins; ++pi) {
-            double p = binProbability(lobe, thetaMax * ti / kThetaBins, thetaMax * (ti + 1) / kThetaBins,
-                                      2 * kPi * pi / kPhiBins, 2 * kPi * (pi + 1) / kPhiBins);
+            double p =
+                binProbability(lobe, thetaMax * ti / kThetaBins, thetaMax * (ti + 1) / kThetaBins,
+                               2 * kPi * pi / kPhiBins, 2 * kPi * (pi + 1) / kPhiBins);
             expected[ti * kPhiBins + pi] = p * samples;
             inside += p;
         }
@@ -151,18 +152,20 @@ TEST_P(LobeSamplerTest, SamplesAreUnitAndInTheHemisphere) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Lobes, LobeSamplerTest,
-                         ::testing::Values(LobeCase{LobeShape::Normal, 1}, LobeCase{LobeShape::Normal, 10},
-                                           LobeCase{LobeShape::Normal, 45}, LobeCase{LobeShape::Normal, 90},
-                                           LobeCase{LobeShape::Phong, 1}, LobeCase{LobeShape::Phong, 10},
-                                           LobeCase{LobeShape::Phong, 45}, LobeCase{LobeShape::Phong, 90}),
-                         [](const auto &param) {
-                             return std::string(param.param.shape == LobeShape::Normal ? "Normal" : "Phong") +
-                                    std::to_string(static_cast<int>(param.param.degrees)) + "deg";
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Lobes, LobeSamplerTest,
+    ::testing::Values(LobeCase{LobeShape::Normal, 1}, LobeCase{LobeShape::Normal, 10},
+                      LobeCase{LobeShape::Normal, 45}, LobeCase{LobeShape::Normal, 90},
+                      LobeCase{LobeShape::Phong, 1}, LobeCase{LobeShape::Phong, 10},
+                      LobeCase{LobeShape::Phong, 45}, LobeCase{LobeShape::Phong, 90}),
+    [](const auto &param) {
+        return std::string(param.param.shape == LobeShape::Normal ? "Normal" : "Phong") +
+               std::to_string(static_cast<int>(param.param.degrees)) + "deg";
+    });
 
 TEST(LobeSampling, SmallSpreadsOfBothShapesAgree) {
-    // For small angles both are a 2-D normal distribution of the tangent offset: E[theta^2] = 2 sigma^2
+    // For small angles both are a 2-D normal distribution of the tangent offset: E[theta^2] = 2
+    // sigma^2
     for (LobeShape shape : {LobeShape::Normal, LobeShape::Phong}) {
         Lobe lobe(shape, deg(2));
         Rng rng(11);

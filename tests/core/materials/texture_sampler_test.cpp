@@ -40,37 +40,37 @@ TEST(TextureSampler, WrapTexelIndices) {
 
 TEST(TextureSampler, RepeatWrapsBilinearAcrossTheSeam) {
     ir::Texture t = ramp(Wrap::Repeat);
-    EXPECT_NEAR(red(t, 0.125), 0, 1e-6);    // centre of texel 0
-    EXPECT_NEAR(red(t, 0.875), 3, 1e-6);    // centre of texel 3
-    EXPECT_NEAR(red(t, 1.125), 0, 1e-6);    // one period on
-    EXPECT_NEAR(red(t, -0.125), 3, 1e-6);   // texel -1 = texel 3
-    EXPECT_NEAR(red(t, 0), 1.5, 1e-6);      // halfway between texels 3 and 0
+    EXPECT_NEAR(red(t, 0.125), 0, 1e-6);   // centre of texel 0
+    EXPECT_NEAR(red(t, 0.875), 3, 1e-6);   // centre of texel 3
+    EXPECT_NEAR(red(t, 1.125), 0, 1e-6);   // one period on
+    EXPECT_NEAR(red(t, -0.125), 3, 1e-6);  // texel -1 = texel 3
+    EXPECT_NEAR(red(t, 0), 1.5, 1e-6);     // halfway between texels 3 and 0
 }
 
 TEST(TextureSampler, ClampToEdgeHoldsTheEdgeTexels) {
     ir::Texture t = ramp(Wrap::ClampToEdge);
     EXPECT_NEAR(red(t, 0.125), 0, 1e-6);
-    EXPECT_NEAR(red(t, 0), 0, 1e-6);        // no blend with the far edge
+    EXPECT_NEAR(red(t, 0), 0, 1e-6);  // no blend with the far edge
     EXPECT_NEAR(red(t, 1), 3, 1e-6);
     EXPECT_NEAR(red(t, -3.7), 0, 1e-6);
     EXPECT_NEAR(red(t, 12.2), 3, 1e-6);
-    EXPECT_NEAR(red(t, 0.5), 1.5, 1e-6);    // inside: bilinear as always
+    EXPECT_NEAR(red(t, 0.5), 1.5, 1e-6);  // inside: bilinear as always
 }
 
 TEST(TextureSampler, MirroredRepeatReflectsEveryOtherPeriod) {
     ir::Texture t = ramp(Wrap::MirroredRepeat);
     EXPECT_NEAR(red(t, 0.875), 3, 1e-6);
-    EXPECT_NEAR(red(t, 1.125), 3, 1e-6);    // texel 4 = texel 3
-    EXPECT_NEAR(red(t, 1.375), 2, 1e-6);    // texel 5 = texel 2
-    EXPECT_NEAR(red(t, 1.875), 0, 1e-6);    // texel 7 = texel 0
-    EXPECT_NEAR(red(t, 2.125), 0, 1e-6);    // texel 8 = texel 0
-    EXPECT_NEAR(red(t, -0.125), 0, 1e-6);   // texel -1 = texel 0
-    EXPECT_NEAR(red(t, 1.25), 2.5, 1e-6);   // between texels 4 (3) and 5 (2)
+    EXPECT_NEAR(red(t, 1.125), 3, 1e-6);   // texel 4 = texel 3
+    EXPECT_NEAR(red(t, 1.375), 2, 1e-6);   // texel 5 = texel 2
+    EXPECT_NEAR(red(t, 1.875), 0, 1e-6);   // texel 7 = texel 0
+    EXPECT_NEAR(red(t, 2.125), 0, 1e-6);   // texel 8 = texel 0
+    EXPECT_NEAR(red(t, -0.125), 0, 1e-6);  // texel -1 = texel 0
+    EXPECT_NEAR(red(t, 1.25), 2.5, 1e-6);  // between texels 4 (3) and 5 (2)
 }
 
 TEST(TextureSampler, NearestPicksTheTexelUnderThePoint) {
     ir::Texture lin = ramp(Wrap::Repeat), near = ramp(Wrap::Repeat, true);
-    EXPECT_NEAR(red(near, 0.3), 1, 1e-6);  // x = 1.2: texel 1
+    EXPECT_NEAR(red(near, 0.3), 1, 1e-6);   // x = 1.2: texel 1
     EXPECT_NEAR(red(lin, 0.3), 0.7, 1e-6);  // 0.7 of texel 1, 0.3 of texel 0
     EXPECT_NEAR(red(near, 0.99), 3, 1e-6);
     EXPECT_NEAR(red(near, -0.01), 3, 1e-6);

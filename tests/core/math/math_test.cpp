@@ -22,9 +22,7 @@ namespace {
 // a * b + c as the code is built: the copy for CPUs with FMA (which the loader picks on such a
 // CPU, as for the triangle test) is where GCC would fuse it without -ffp-contract=off
 SCADRAY_FMA_CLONES
-double productPlusSum(double a, double b, double c) {
-    return a * b + c;
-}
+double productPlusSum(double a, double b, double c) { return a * b + c; }
 
 // The product (1 + 2^-30)(1 - 2^-30) = 1 - 2^-60 rounds to 1, so the sum is 0; fused, it would be
 // -2^-60. The error bounds and the same picture on every CPU need the rounded product.
@@ -136,7 +134,8 @@ TEST(Transform, NormalsStayPerpendicular) {
 }
 
 TEST(Transform, PointErrorBoundCoversRounding) {
-    auto t = Transform::fromMatrix(Mat4::translate(Vec3(1e6, -3e5, 7)) * Mat4::rotateAxis(17, Vec3(1, 2, 3)));
+    auto t = Transform::fromMatrix(Mat4::translate(Vec3(1e6, -3e5, 7)) *
+                                   Mat4::rotateAxis(17, Vec3(1, 2, 3)));
     ASSERT_TRUE(t);
     Rng rng(7);
     for (int i = 0; i < 1000; ++i) {
@@ -154,7 +153,8 @@ TEST(Transform, PointErrorBoundCoversRounding) {
 }
 
 TEST(Transform, BoundsContainTransformedCorners) {
-    auto t = Transform::fromMatrix(Mat4::rotateAxis(40, Vec3(1, 1, 0)) * Mat4::scale(Vec3(1, 2, 3)));
+    auto t =
+        Transform::fromMatrix(Mat4::rotateAxis(40, Vec3(1, 1, 0)) * Mat4::scale(Vec3(1, 2, 3)));
     Bounds3 b(Vec3(-1, 0, 2), Vec3(1, 3, 5));
     Bounds3 tb = t->bounds(b);
     for (int i = 0; i < 8; ++i) {
@@ -198,18 +198,36 @@ namespace {
 // nextUp and nextDown step the bit pattern instead of calling std::nextafter: the same double
 // for every input, signed zeros, denormals, the largest finite values and infinities included.
 TEST(FloatUtil, NextUpAndNextDownAreNextafter) {
-    std::vector<double> values = {0.0, -0.0, 1.0, -1.0, 0.1, -0.1, 1e-310, -1e-310,
+    std::vector<double> values = {0.0,
+                                  -0.0,
+                                  1.0,
+                                  -1.0,
+                                  0.1,
+                                  -0.1,
+                                  1e-310,
+                                  -1e-310,
                                   std::numeric_limits<double>::denorm_min(),
                                   -std::numeric_limits<double>::denorm_min(),
-                                  std::numeric_limits<double>::min(), -std::numeric_limits<double>::min(),
-                                  std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
-                                  kInfinity, -kInfinity, 2.0, 0.5, 1e300, -1e-300};
+                                  std::numeric_limits<double>::min(),
+                                  -std::numeric_limits<double>::min(),
+                                  std::numeric_limits<double>::max(),
+                                  -std::numeric_limits<double>::max(),
+                                  kInfinity,
+                                  -kInfinity,
+                                  2.0,
+                                  0.5,
+                                  1e300,
+                                  -1e-300};
     Rng rng(3);
-    for (int i = 0; i < 1000; ++i) values.push_back(std::ldexp(rng.uniform() - 0.5, static_cast<int>(rng.uniform() * 2000) - 1000));
+    for (int i = 0; i < 1000; ++i)
+        values.push_back(
+            std::ldexp(rng.uniform() - 0.5, static_cast<int>(rng.uniform() * 2000) - 1000));
     for (double v : values) {
         SCOPED_TRACE(v);
-        EXPECT_EQ(std::bit_cast<uint64_t>(nextUp(v)), std::bit_cast<uint64_t>(std::nextafter(v, kInfinity)));
-        EXPECT_EQ(std::bit_cast<uint64_t>(nextDown(v)), std::bit_cast<uint64_t>(std::nextafter(v, -kInfinity)));
+        EXPECT_EQ(std::bit_cast<uint64_t>(nextUp(v)),
+                  std::bit_cast<uint64_t>(std::nextafter(v, kInfinity)));
+        EXPECT_EQ(std::bit_cast<uint64_t>(nextDown(v)),
+                  std::bit_cast<uint64_t>(std::nextafter(v, -kInfinity)));
     }
     EXPECT_TRUE(std::isnan(nextUp(std::nan(""))));
     EXPECT_TRUE(std::isnan(nextDown(std::nan(""))));
@@ -222,10 +240,28 @@ TEST(FloatUtil, NextUpAndNextDownAreNextafter) {
 // infinities included, and doubles one double step either side of floats.
 TEST(FloatUtil, FloatBelowAndAboveAreTheNearestFloatsOnEachSide) {
     using FL = std::numeric_limits<float>;
-    std::vector<double> values = {0.0, -0.0, 1e-300, -1e-300, 1e-46, -1e-46, 1.0, -1.0, 0.1, -0.1,
-                                  FL::denorm_min(), -double(FL::denorm_min()), FL::min(), -double(FL::min()),
-                                  FL::max(), -double(FL::max()), 3.5e38, -3.5e38, 1e300, -1e300,
-                                  kInfinity, -kInfinity};
+    std::vector<double> values = {0.0,
+                                  -0.0,
+                                  1e-300,
+                                  -1e-300,
+                                  1e-46,
+                                  -1e-46,
+                                  1.0,
+                                  -1.0,
+                                  0.1,
+                                  -0.1,
+                                  FL::denorm_min(),
+                                  -double(FL::denorm_min()),
+                                  FL::min(),
+                                  -double(FL::min()),
+                                  FL::max(),
+                                  -double(FL::max()),
+                                  3.5e38,
+                                  -3.5e38,
+                                  1e300,
+                                  -1e300,
+                                  kInfinity,
+                                  -kInfinity};
     Rng rng(5);
     for (int i = 0; i < 3000; ++i) {
         double v = std::ldexp(rng.uniform() - 0.5, static_cast<int>(rng.uniform() * 300) - 160);

@@ -77,14 +77,16 @@ TEST(Facets, FacesAreCounterClockwiseFromOutsideAndPlanesPointOut) {
         for (size_t i = 0; i < p.faces.size(); ++i) {
             const auto &f = p.faces[i];
             // The IR's winding: (v1 - v0) x (v2 - v0) points out
-            Vec3 n = cross(p.vertices[f[1]] - p.vertices[f[0]], p.vertices[f[2]] - p.vertices[f[0]]);
+            Vec3 n =
+                cross(p.vertices[f[1]] - p.vertices[f[0]], p.vertices[f[2]] - p.vertices[f[0]]);
             EXPECT_GT(dot(n, p.vertices[f[0]] - centroid), 0) << "face " << i;
             EXPECT_GT(dot(planes[i].normal, n), 0) << "face " << i;
             EXPECT_NEAR(length(planes[i].normal), 1, 1e-15);
             // Every vertex is on or behind every plane; the face's own vertices are on it
             for (const Vec3 &v : p.vertices)
                 EXPECT_LE(dot(planes[i].normal, v) - planes[i].offset, 1e-14);
-            for (int k : f) EXPECT_NEAR(dot(planes[i].normal, p.vertices[k]), planes[i].offset, 1e-14);
+            for (int k : f)
+                EXPECT_NEAR(dot(planes[i].normal, p.vertices[k]), planes[i].offset, 1e-14);
         }
     }
 }
@@ -166,12 +168,12 @@ bool isPolytope(const Scene &s, size_t i) {
 
 TEST(Facets, AutoFacetsSmallExplicitFnOnly) {
     auto make = [] {
-        return sceneOf({{SpherePrim{1}, Fragments{}},                  // defaults: 5, round
-                        {CylinderPrim{0, 1, 1, 1}, fn(6)},             // hexagon
-                        {CylinderPrim{0, 1, 2, 2}, fn(12)},            // 12-gon
-                        {CylinderPrim{0, 1, 1, 1}, fn(13)},            // round
-                        {SpherePrim{1}, fn(64)},                       // round
-                        {BoxPrim{}, fn(4)}});                          // a box is a box
+        return sceneOf({{SpherePrim{1}, Fragments{}},        // defaults: 5, round
+                        {CylinderPrim{0, 1, 1, 1}, fn(6)},   // hexagon
+                        {CylinderPrim{0, 1, 2, 2}, fn(12)},  // 12-gon
+                        {CylinderPrim{0, 1, 1, 1}, fn(13)},  // round
+                        {SpherePrim{1}, fn(64)},             // round
+                        {BoxPrim{}, fn(4)}});                // a box is a box
     };
     DiagnosticSink diag;
     Scene a = make();

@@ -9,9 +9,9 @@
 #include <map>
 #include <set>
 
-#include "core/meshing/facets.h"
 #include "core/ir/scene_ir.h"
 #include "core/math/rng.h"
+#include "core/meshing/facets.h"
 
 namespace rt::meshing {
 using namespace ir;
@@ -226,7 +226,8 @@ TEST(HullPoints, IntersectionOfConvexOperandsIsClipped) {
 TEST(HullPoints, DifferenceIsExactOnlyWhenCornersSurvive) {
     DiagnosticSink diag;
     // A hole through the middle keeps every corner: exact, no warning
-    NodePtr hole = csg(NodeKind::Difference, box(Vec3(0), Vec3(4)), box(Vec3(1, 1, -1), Vec3(3, 3, 5)));
+    NodePtr hole =
+        csg(NodeKind::Difference, box(Vec3(0), Vec3(4)), box(Vec3(1, 1, -1), Vec3(3, 3, 5)));
     HullResult h = hullOf(*hole, diag);
     EXPECT_NEAR(volume(h.polytope), 64, 1e-9);
     EXPECT_EQ(diag.count(Severity::Warning), 0);

@@ -7,11 +7,11 @@
 
 #include <cmath>
 
-#include "core/meshing/facets.h"
-#include "core/meshing/hull.h"
 #include "core/ir/ir_dump.h"
 #include "core/ir/ir_validate.h"
 #include "core/ir/scene_ir.h"
+#include "core/meshing/facets.h"
+#include "core/meshing/hull.h"
 
 namespace rt::meshing {
 using namespace ir;

@@ -99,7 +99,8 @@ ir::Scene mirrorScene(const ir::Finish &mirrorFinish) {
     mirror.finish = mirrorFinish;
     s.root->children.push_back(box(Vec3(-5, 1, -5), Vec3(5, 2, 5), s.addMaterial(mirror)));
     // A red, purely ambient sphere behind the camera, seen only in the mirror
-    s.root->children.push_back(translated(Vec3(0, -8, 0), sphere(1, s.addMaterial(plainMaterial(Rgb(1, 0, 0), 1)))));
+    s.root->children.push_back(
+        translated(Vec3(0, -8, 0), sphere(1, s.addMaterial(plainMaterial(Rgb(1, 0, 0), 1)))));
     s.camera = lookAt(Vec3(0, -5, 0), Vec3(0, 0, 0), 30);
     return s;
 }
@@ -145,9 +146,12 @@ TEST(AnalyticScenes, TraceLevelLimitReturnsBlackNotBackground) {
 /// ray arrives and a blue wall elsewhere.
 ir::Scene slabScene(double ior) {
     ir::Scene s = emptyScene();
-    s.root->children.push_back(box(Vec3(-50, 0, -50), Vec3(50, 1, 50), s.addMaterial(glassMaterial(ior))));
-    s.root->children.push_back(box(Vec3(8.40, 10, -1), Vec3(8.47, 11, 1), s.addMaterial(plainMaterial(Rgb(0, 1, 0), 1))));
-    s.root->children.push_back(box(Vec3(-50, 11, -50), Vec3(50, 12, 50), s.addMaterial(plainMaterial(Rgb(0, 0, 1), 1))));
+    s.root->children.push_back(
+        box(Vec3(-50, 0, -50), Vec3(50, 1, 50), s.addMaterial(glassMaterial(ior))));
+    s.root->children.push_back(
+        box(Vec3(8.40, 10, -1), Vec3(8.47, 11, 1), s.addMaterial(plainMaterial(Rgb(0, 1, 0), 1))));
+    s.root->children.push_back(
+        box(Vec3(-50, 11, -50), Vec3(50, 12, 50), s.addMaterial(plainMaterial(Rgb(0, 0, 1), 1))));
     s.camera = lookAt(Vec3(0, -5, 0), Vec3(5 * std::tan(M_PI / 6), 0, 0), 10);
     return s;
 }
@@ -175,12 +179,14 @@ TEST(AnalyticScenes, GlassSlabShiftsTheRayLaterally) {
 ir::Scene prismScene(double ior) {
     ir::Scene s = emptyScene();
     int glass = s.addMaterial(glassMaterial(ior));
-    auto cut = transformed(Mat4::rotateZ(45),
-                           box(Vec3(-20, -20, -2), Vec3(std::sqrt(0.5), 20, 2), glass));
-    s.root->children.push_back(csg(ir::NodeKind::Intersection,
-                                   box(Vec3(0, 0, -1), Vec3(1, 1, 1), glass), std::move(cut)));
-    s.root->children.push_back(box(Vec3(-7, -20, -20), Vec3(-6, 20, 20), s.addMaterial(plainMaterial(Rgb(0, 1, 0), 1))));
-    s.root->children.push_back(box(Vec3(-5, 5, -20), Vec3(20, 6, 20), s.addMaterial(plainMaterial(Rgb(0, 0, 1), 1))));
+    auto cut =
+        transformed(Mat4::rotateZ(45), box(Vec3(-20, -20, -2), Vec3(std::sqrt(0.5), 20, 2), glass));
+    s.root->children.push_back(
+        csg(ir::NodeKind::Intersection, box(Vec3(0, 0, -1), Vec3(1, 1, 1), glass), std::move(cut)));
+    s.root->children.push_back(
+        box(Vec3(-7, -20, -20), Vec3(-6, 20, 20), s.addMaterial(plainMaterial(Rgb(0, 1, 0), 1))));
+    s.root->children.push_back(
+        box(Vec3(-5, 5, -20), Vec3(20, 6, 20), s.addMaterial(plainMaterial(Rgb(0, 0, 1), 1))));
     s.camera = lookAt(Vec3(0.3, -5, 0), Vec3(0.3, 0, 0), 5);
     return s;
 }
@@ -196,10 +202,11 @@ TEST(AnalyticScenes, TotalInternalReflectionInAPrism) {
 }
 
 TEST(AnalyticScenes, ShadowThroughGlassIsFilteredAtEachSurface) {
-    for (auto [filter, transmit, want] : {std::tuple{0.9, 0.0, 0.81}, std::tuple{0.0, 0.5, 0.25},
-                                          std::tuple{0.0, 0.0, 0.0}}) {
+    for (auto [filter, transmit, want] :
+         {std::tuple{0.9, 0.0, 0.81}, std::tuple{0.0, 0.5, 0.25}, std::tuple{0.0, 0.0, 0.0}}) {
         ir::Scene s = emptyScene();
-        s.root->children.push_back(box(Vec3(-10, -10, -1), Vec3(10, 10, 0), s.addMaterial(plainMaterial(Rgb(1), 0, 1))));
+        s.root->children.push_back(
+            box(Vec3(-10, -10, -1), Vec3(10, 10, 0), s.addMaterial(plainMaterial(Rgb(1), 0, 1))));
         ir::Material glass = glassMaterial(1.0, transmit, filter);
         s.root->children.push_back(translated(Vec3(0, 0, 3), sphere(1, s.addMaterial(glass))));
         s.lights.push_back(pointLight(Vec3(0, 0, 10)));
@@ -211,7 +218,8 @@ TEST(AnalyticScenes, ShadowThroughGlassIsFilteredAtEachSurface) {
 
 TEST(AnalyticScenes, RendersIdenticallyForAnyThreadCount) {
     ir::Scene s = prismScene(1.5);
-    s.root->children.push_back(translated(Vec3(1, 2, 0), sphere(0.7, s.addMaterial(plainMaterial(Rgb(1, 1, 0), 0.1, 0.7)))));
+    s.root->children.push_back(translated(
+        Vec3(1, 2, 0), sphere(0.7, s.addMaterial(plainMaterial(Rgb(1, 1, 0), 0.1, 0.7)))));
     s.lights.push_back(pointLight(Vec3(-3, -4, 5)));
     RenderResult one = renderScene(s, 40, 30, 4, 1);
     RenderResult two = renderScene(s, 40, 30, 4, 2);

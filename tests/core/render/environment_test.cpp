@@ -10,8 +10,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/image/image_io.h"
 #include "core/image/environment_image.h"
+#include "core/image/image_io.h"
 #include "core/render/environment.h"
 #include "core/render/render_scene.h"
 #include "core/render/renderer.h"

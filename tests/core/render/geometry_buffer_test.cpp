@@ -37,10 +37,10 @@ ir::Scene skewBlockScene(bool otherDiagonal) {
     ir::Scene s = emptyScene();
     int m = s.addMaterial(plainMaterial(Rgb(1)));
     auto mesh = std::make_shared<ir::Mesh>();
-    mesh->positions = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1},  {-1, 1, -1},
-                       {-1, -1, 1},  {1, -1, 1.6}, {1, 1, 1}, {-1, 1, 1.3}};
-    mesh->triangles = {{0, 2, 1}, {0, 3, 2}, {0, 1, 5}, {0, 5, 4}, {1, 2, 6}, {1, 6, 5},
-                       {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
+    mesh->positions = {{-1, -1, -1}, {1, -1, -1},  {1, 1, -1}, {-1, 1, -1},
+                       {-1, -1, 1},  {1, -1, 1.6}, {1, 1, 1},  {-1, 1, 1.3}};
+    mesh->triangles = {{0, 2, 1}, {0, 3, 2}, {0, 1, 5}, {0, 5, 4}, {1, 2, 6},
+                       {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
     if (otherDiagonal)
         mesh->triangles.insert(mesh->triangles.end(), {{4, 5, 7}, {5, 6, 7}});
     else
@@ -97,12 +97,12 @@ TEST(GeometryBuffer, MovedFaceIsCaught) {
 }
 
 TEST(GeometryBuffer, OtherDiagonalOfASkewQuadIsCaught) {
-    GeometryCompareResult same = compareGeometry(trace(skewBlockScene(false)),
-                                                 trace(skewBlockScene(false)));
+    GeometryCompareResult same =
+        compareGeometry(trace(skewBlockScene(false)), trace(skewBlockScene(false)));
     EXPECT_TRUE(same.pass);
     EXPECT_EQ(same.agreeing + same.silhouette + same.bothMiss, 64 * 48);
-    GeometryCompareResult r = compareGeometry(trace(skewBlockScene(true)),
-                                              trace(skewBlockScene(false)));
+    GeometryCompareResult r =
+        compareGeometry(trace(skewBlockScene(true)), trace(skewBlockScene(false)));
     EXPECT_FALSE(r.pass);
     EXPECT_GT(r.depthDiffer + r.normalDiffer, 50) << r.summary({});
 }

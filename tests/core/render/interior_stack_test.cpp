@@ -30,7 +30,8 @@ TEST(InteriorStack, CopiesAndAssignmentsAreEqualAndIndependent) {
         expectHolds(copy, 0, n);
         // Assigned over a fuller list: its extra entries must not show through
         InteriorStack assigned;
-        for (int i = 0; i < InteriorStack::kCapacity; ++i) assigned.push(solid(InteriorStack::kCapacity - i));
+        for (int i = 0; i < InteriorStack::kCapacity; ++i)
+            assigned.push(solid(InteriorStack::kCapacity - i));
         assigned = a;
         expectHolds(assigned, 0, n);
         const InteriorStack &alias = assigned;

@@ -29,15 +29,16 @@ RenderResult renderScene(const ir::Scene &scene, int w, int h) {
 
 ir::NodePtr meshNode(ir::Scene &s, std::shared_ptr<ir::Mesh> mesh, int material) {
     s.meshes.push_back(mesh);
-    return ir::Node::makePrimitive(ir::MeshPrim{static_cast<int>(s.meshes.size()) - 1}, material, {});
+    return ir::Node::makePrimitive(ir::MeshPrim{static_cast<int>(s.meshes.size()) - 1}, material,
+                                   {});
 }
 
 ir::Scene cutCubeScene(bool meshCube) {
     ir::Scene s = emptyScene();
     int red = s.addMaterial(plainMaterial(Rgb(1, 0.2, 0.1), 0.1, 0.8));
     int blue = s.addMaterial(plainMaterial(Rgb(0.1, 0.3, 1), 0.1, 0.8));
-    ir::NodePtr cube = meshCube ? meshNode(s, cubeMesh(Vec3(-1), Vec3(1)), red)
-                                : box(Vec3(-1), Vec3(1), red);
+    ir::NodePtr cube =
+        meshCube ? meshNode(s, cubeMesh(Vec3(-1), Vec3(1)), red) : box(Vec3(-1), Vec3(1), red);
     s.root->children.push_back(csg(ir::NodeKind::Difference, std::move(cube),
                                    translated(Vec3(0.8, -0.8, 0.8), sphere(1, blue))));
     s.lights.push_back(pointLight(Vec3(4, -6, 8)));
@@ -91,7 +92,9 @@ TEST(TextureSampler, FollowsPovRayImageMapConvention) {
     t.height = 2;
     // Rows top first: red green / blue white
     t.rgba = {1, 0, 0, 1, 0, 1, 0, 1, 0, 0, 1, 1, 1, 1, 1, 1};
-    auto near = [](const Rgb &a, const Rgb &b) { return length(Vec3(a.r - b.r, a.g - b.g, a.b - b.b)) < 1e-6; };
+    auto near = [](const Rgb &a, const Rgb &b) {
+        return length(Vec3(a.r - b.r, a.g - b.g, a.b - b.b)) < 1e-6;
+    };
     // Texel centres (glTF uv, origin top-left)
     EXPECT_TRUE(near(sampleTexture(t, 0.25, 0.25), Rgb(1, 0, 0)));
     EXPECT_TRUE(near(sampleTexture(t, 0.75, 0.25), Rgb(0, 1, 0)));
@@ -120,7 +123,8 @@ TEST(Camera, OrthographicRaysAreParallel) {
 /// A white diffuse floor lit from above by one light; returns the pixel under the camera.
 Rgb floorPixel(const ir::Light &light) {
     ir::Scene s = emptyScene();
-    s.root->children.push_back(box(Vec3(-50, -50, -1), Vec3(50, 50, 0), s.addMaterial(plainMaterial(Rgb(1), 0, 1))));
+    s.root->children.push_back(
+        box(Vec3(-50, -50, -1), Vec3(50, 50, 0), s.addMaterial(plainMaterial(Rgb(1), 0, 1))));
     s.lights.push_back(light);
     s.camera = lookAt(Vec3(0, -0.001, 10), Vec3(0), 10, Vec3(0, 1, 0));
     return renderScene(s, 33, 33).image.at(16, 16);
@@ -161,8 +165,8 @@ std::shared_ptr<ir::Mesh> sliverCube(int k) {
     auto cube = cubeMesh(Vec3(-1), Vec3(1));
     m->positions = cube->positions;
     // The six faces as corner quads a, b, c, d of cubeMesh's positions
-    const std::array<std::array<uint32_t, 4>, 6> faces = {{{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
-                                                          {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}}};
+    const std::array<std::array<uint32_t, 4>, 6> faces = {
+        {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}}};
     for (const auto &f : faces) {
         uint32_t a = f[0], b = f[1], c = f[2], d = f[3];
         // Diagonal a-c with k interior vertices

@@ -88,8 +88,9 @@ Estimate frostedGlass(ir::Finish::Lobe shape, double degrees, double edge) {
     // The camera sits inside a block of glass and looks up through its top face at normal
     // incidence, where the sharp refracted ray goes straight on
     ir::Scene s = emptyScene();
-    s.root->children.push_back(box(Vec3(-100, -100, -100), Vec3(100, 100, 0),
-                                   s.addMaterial(blurred(glassMaterial(1.5), shape, true, degrees))));
+    s.root->children.push_back(
+        box(Vec3(-100, -100, -100), Vec3(100, 100, 0),
+            s.addMaterial(blurred(glassMaterial(1.5), shape, true, degrees))));
     addBrightHalfSpace(s, edge);
     return renderCentre(s, Vec3(0, 0, -kHeight / 2));
 }
@@ -109,8 +110,8 @@ TEST_P(KnownAnswer, ConvergesToTheLobesIntegral) {
     double edge = kHeight * std::tan(sigma);
     double want = brightFraction(Lobe(shape, sigma), edge / kHeight);
     double wider = brightFraction(Lobe(shape, sigma * 1.1), edge / kHeight);
-    Estimate got = c.frosted ? frostedGlass(c.shape, c.degrees, edge)
-                             : glossyMirror(c.shape, c.degrees, edge);
+    Estimate got =
+        c.frosted ? frostedGlass(c.shape, c.degrees, edge) : glossyMirror(c.shape, c.degrees, edge);
     // Within 4.5 standard errors (and a hair of quadrature error) of the exact value ...
     EXPECT_NEAR(got.mean, want, 4.5 * got.standardError + 1e-5)
         << "standard error " << got.standardError;
@@ -118,19 +119,18 @@ TEST_P(KnownAnswer, ConvergesToTheLobesIntegral) {
     EXPECT_GT(std::abs(wider - want), 8 * got.standardError);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Effects, KnownAnswer,
-    ::testing::Values(KnownAnswerCase{ir::Finish::Lobe::Normal, false, 10},
-                      KnownAnswerCase{ir::Finish::Lobe::Phong, false, 10},
-                      KnownAnswerCase{ir::Finish::Lobe::Normal, false, 30},
-                      KnownAnswerCase{ir::Finish::Lobe::Normal, true, 10},
-                      KnownAnswerCase{ir::Finish::Lobe::Phong, true, 30}),
-    [](const auto &param) {
-        const KnownAnswerCase &c = param.param;
-        return std::string(c.frosted ? "Frosted" : "Glossy") +
-               (c.shape == ir::Finish::Lobe::Phong ? "Phong" : "Normal") +
-               std::to_string(static_cast<int>(c.degrees)) + "deg";
-    });
+INSTANTIATE_TEST_SUITE_P(Effects, KnownAnswer,
+                         ::testing::Values(KnownAnswerCase{ir::Finish::Lobe::Normal, false, 10},
+                                           KnownAnswerCase{ir::Finish::Lobe::Phong, false, 10},
+                                           KnownAnswerCase{ir::Finish::Lobe::Normal, false, 30},
+                                           KnownAnswerCase{ir::Finish::Lobe::Normal, true, 10},
+                                           KnownAnswerCase{ir::Finish::Lobe::Phong, true, 30}),
+                         [](const auto &param) {
+                             const KnownAnswerCase &c = param.param;
+                             return std::string(c.frosted ? "Frosted" : "Glossy") +
+                                    (c.shape == ir::Finish::Lobe::Phong ? "Phong" : "Normal") +
+                                    std::to_string(static_cast<int>(c.degrees)) + "deg";
+                         });
 
 TEST(MonteCarlo, GlossyWhiteFurnaceLosesNoEnergy) {
     // A glossy sphere in a uniformly white world: every reflected ray, folded or not, sees
@@ -149,7 +149,7 @@ TEST(MonteCarlo, GlossyWhiteFurnaceLosesNoEnergy) {
     o.samplesPerPixel = 4;
     RenderResult r = renderImage(*rs, o);
     EXPECT_NEAR(r.image.at(10, 10).r, 0.7, 1e-7);  // images hold floats
-    EXPECT_NEAR(r.image.at(10, 4).r, 0.7, 1e-7);  // off-centre, where the lobe folds
+    EXPECT_NEAR(r.image.at(10, 4).r, 0.7, 1e-7);   // off-centre, where the lobe folds
     EXPECT_GT(r.stats.distributed, 0);
     EXPECT_EQ(r.stats.reflection, 0);
 }
@@ -240,8 +240,8 @@ TEST(MonteCarlo, OneRayAreaShadowsBelowASplitKeepTheMean) {
         s.root->children.push_back(box(Vec3(-10, -10, -1), Vec3(10, 10, 0), s.addMaterial(floor)));
         s.root->children.push_back(box(Vec3(-10, 4, 0), Vec3(10, 5, 10),
                                        s.addMaterial(plainMaterial(Rgb(0.8), 0.1, 0.8))));
-        s.root->children.push_back(box(Vec3(-1, 1, 0), Vec3(1, 2, 3),
-                                       s.addMaterial(plainMaterial(Rgb(0.5), 0.1, 0.8))));
+        s.root->children.push_back(
+            box(Vec3(-1, 1, 0), Vec3(1, 2, 3), s.addMaterial(plainMaterial(Rgb(0.5), 0.1, 0.8))));
         ir::Light l = pointLight(Vec3(0, -4, 6));
         l.area = true;
         l.areaLight.axis1 = Vec3(4, 0, 0);

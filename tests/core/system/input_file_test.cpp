@@ -35,9 +35,9 @@ class InputFile : public test::TempDirTest {
         try {
             readInputFile(path, cap);
         } catch (const InputFileError &e) {
-            EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
-                          .count(),
-                      5.0);
+            EXPECT_LT(
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                5.0);
             return e;
         }
         ADD_FAILURE() << path << " was read";
@@ -91,9 +91,9 @@ TEST_F(InputFile, ConfinedReadsStayInTheirFolder) {
     EXPECT_EQ(readInputFileIn(in, "inner_link", 100), "ok");
     fs::create_symlink(dir / "secret.txt", dir / "in/outer_link");
     fs::create_symlink("/dev/zero", dir / "in/zero");
-    for (const std::string &name : {std::string("../secret.txt"), (dir / "secret.txt").string(),
-                                    std::string("outer_link"), std::string("zero"),
-                                    std::string("sub/../../secret.txt"), std::string("")}) {
+    for (const std::string &name :
+         {std::string("../secret.txt"), (dir / "secret.txt").string(), std::string("outer_link"),
+          std::string("zero"), std::string("sub/../../secret.txt"), std::string("")}) {
         SCOPED_TRACE(name);
         EXPECT_THROW(readInputFileIn(in, name, 100), InputFileError);
     }
@@ -132,7 +132,9 @@ TEST_F(InputFile, PrintableEscapesTerminalControls) {
     EXPECT_EQ(printable("\x1b]0;title\x07"), "\\x1b]0;title\\x07");
     EXPECT_EQ(printable("\x1b[2J\x7f"), "\\x1b[2J\\x7f");
     // CSI as a C1 control in UTF-8
-    EXPECT_EQ(printable("a\xc2\x9b" "31mb"), "a\\xc2\\x9b31mb");
+    EXPECT_EQ(printable("a\xc2\x9b"
+                        "31mb"),
+              "a\\xc2\\x9b31mb");
     EXPECT_EQ(printable("line\nnext"), "line\\x0anext");
     EXPECT_EQ(printable("line\nnext", true), "line\nnext");
     EXPECT_EQ(printable("cr\r"), "cr\\x0d");

@@ -28,7 +28,8 @@ TEST(PovEnvironment, GradientIsAColourMapOverZ) {
     EXPECT_EQ(pov::writeSdl(s, "t").find("sky_sphere"), std::string::npos);
     s.settings.environment = ir::studioEnvironment();
     std::string sdl = pov::writeSdl(s, "t");
-    EXPECT_NE(sdl.find("sky_sphere {\n    pigment {\n        gradient z\n"), std::string::npos) << sdl;
+    EXPECT_NE(sdl.find("sky_sphere {\n    pigment {\n        gradient z\n"), std::string::npos)
+        << sdl;
     EXPECT_NE(sdl.find("            [0 rgb <0.1, 0.1, 0.1>]\n"
                        "            [0.5 rgb <0.5, 0.5, 0.5>]\n"
                        "            [0.75 rgb <0.8, 0.82, 0.85>]\n"

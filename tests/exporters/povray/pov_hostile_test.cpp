@@ -4,11 +4,11 @@
 // .ini never takes a name that would add an option; POV-Ray runs under scadray's own conf.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <sstream>
-#include <unistd.h>
 
 #include "core/ir/scene_defaults.h"
 #include "exporters/povray/pov_format.h"
@@ -90,14 +90,18 @@ TEST(PovHostile, IniRefusesNamesThatWouldAddOptions) {
 TEST(PovHostile, DirectiveScanReadsSdlAsPovRayDoes) {
     EXPECT_EQ(pov::sdlDirectiveProblem("#version 3.7;\n#declare A = 1;\n# declare B = 2;\n"), "");
     // Inside comments (nested block comments included) and strings nothing counts
-    EXPECT_EQ(pov::sdlDirectiveProblem("// #fopen F \"x\" write\n/* a /* #write */ #system */\n"), "");
+    EXPECT_EQ(pov::sdlDirectiveProblem("// #fopen F \"x\" write\n/* a /* #write */ #system */\n"),
+              "");
     EXPECT_EQ(pov::sdlDirectiveProblem("#declare S = \"quote \\\" #fopen\";\n"), "");
     // Everything else is refused, with its line
-    EXPECT_NE(pov::sdlDirectiveProblem("sphere{0,1}\n#fopen F \"x\" write\n").find("line 2: directive #fopen"),
+    EXPECT_NE(pov::sdlDirectiveProblem("sphere{0,1}\n#fopen F \"x\" write\n")
+                  .find("line 2: directive #fopen"),
               std::string::npos);
-    EXPECT_NE(pov::sdlDirectiveProblem("#  include \"/etc/passwd\"").find("#include"), std::string::npos);
+    EXPECT_NE(pov::sdlDirectiveProblem("#  include \"/etc/passwd\"").find("#include"),
+              std::string::npos);
     EXPECT_NE(pov::sdlDirectiveProblem("#macro M() #end").find("#macro"), std::string::npos);
-    EXPECT_NE(pov::sdlDirectiveProblem("/* a /* b */ #write */ #write(F)").find("#write"), std::string::npos);
+    EXPECT_NE(pov::sdlDirectiveProblem("/* a /* b */ #write */ #write(F)").find("#write"),
+              std::string::npos);
     // A `//` comment ends at a carriage return too, as in POV-Ray
     EXPECT_NE(pov::sdlDirectiveProblem("// x\r#fopen F").find("#fopen"), std::string::npos);
     EXPECT_NE(pov::sdlDirectiveProblem("/* open"), "");
@@ -113,7 +117,9 @@ struct PovRunDir {
         fs::create_directories(dir);
     }
     ~PovRunDir() { fs::remove_all(dir); }
-    void write(const std::string &name, const std::string &text) const { std::ofstream(dir / name) << text; }
+    void write(const std::string &name, const std::string &text) const {
+        std::ofstream(dir / name) << text;
+    }
     void writeIni(const std::string &pov) const {
         pov::IniOptions o;
         o.povFile = pov;
@@ -127,13 +133,15 @@ struct PovRunDir {
 TEST(PovHostile, CheckRefusesScenesWithFileIoOrForeignIniOptions) {
     PovRunDir run;
     // Refused before POV-Ray starts, so this holds with or without POV-Ray installed
-    run.write("io.pov", "#fopen F \"pwned.txt\" write\n#write(F, \"x\")\n#fclose F\nsphere { 0, 1 }\n");
+    run.write("io.pov",
+              "#fopen F \"pwned.txt\" write\n#write(F, \"x\")\n#fclose F\nsphere { 0, 1 }\n");
     run.writeIni("io.pov");
     try {
         pov::runPovRay(run.dir.string(), "scene.ini", 1, 60);
         ADD_FAILURE() << "a scene with #fopen ran";
     } catch (const std::runtime_error &e) {
-        EXPECT_NE(std::string(e.what()).find("line 1: directive #fopen"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("line 1: directive #fopen"), std::string::npos)
+            << e.what();
     }
     EXPECT_FALSE(fs::exists(run.dir / "pwned.txt"));
     run.write("plain.pov", "sphere { 0, 1 pigment { rgb 1 } }\n");
@@ -147,7 +155,8 @@ TEST(PovHostile, CheckRefusesScenesWithFileIoOrForeignIniOptions) {
 TEST(PovHostile, PovRayRunsUnderItsOwnRestrictedConf) {
     if (!pov::povrayAvailable()) GTEST_SKIP() << "povray is not installed; run skipped";
     PovRunDir run;
-    run.write("plain.pov", "#version 3.7;\nbackground { rgb 1 }\nsphere { 0, 1 pigment { rgb 1 } }\n");
+    run.write("plain.pov",
+              "#version 3.7;\nbackground { rgb 1 }\nsphere { 0, 1 pigment { rgb 1 } }\n");
     run.writeIni("plain.pov");
     EXPECT_NO_THROW(pov::runPovRay(run.dir.string(), "scene.ini", 1, 60));
     EXPECT_TRUE(fs::exists(run.dir / "out.png"));

@@ -32,10 +32,10 @@ ir::Scene revolvedScene(bool shaded = false) {
     int white = s.addMaterial(plainMaterial(Rgb(1), shaded ? 0.2 : 1, shaded ? 0.8 : 0));
     if (shaded) {
         s.lights.push_back(pointLight(Vec3(6, 2, 12)));
-        s.root->children.push_back(
-            translated(Vec3(2, -6, 0), csg(ir::NodeKind::Difference,
-                                           box(Vec3(-1.5, -1.5, -0.5), Vec3(1.5, 1.5, 0.1), white),
-                                           prim(ir::TorusPrim{1, 0.2, 360, {}, 0}, white))));
+        s.root->children.push_back(translated(
+            Vec3(2, -6, 0),
+            csg(ir::NodeKind::Difference, box(Vec3(-1.5, -1.5, -0.5), Vec3(1.5, 1.5, 0.1), white),
+                prim(ir::TorusPrim{1, 0.2, 360, {}, 0}, white))));
     }
     s.root->children.push_back(
         prim(ir::LathePrim{{rect(1, 3, 0, 2), rect(1.5, 2.5, 0.5, 1.5)}, 90, 0}, white));

@@ -33,8 +33,8 @@ ir::Texture texture(Wrap u, Wrap v, bool nearest) {
     t.height = 3;
     for (int y = 0; y < 3; ++y)
         for (int x = 0; x < 5; ++x)
-            t.rgba.insert(t.rgba.end(), {x / 4.0f, y / 2.0f, float((x * 7 + y * 3) % 5) / 4,
-                                         1.0f - x / 4.0f});
+            t.rgba.insert(t.rgba.end(),
+                          {x / 4.0f, y / 2.0f, float((x * 7 + y * 3) % 5) / 4, 1.0f - x / 4.0f});
     t.wrapU = u;
     t.wrapV = v;
     t.nearest = nearest;
@@ -61,8 +61,9 @@ TEST(PovTexture, RepeatLinearIsThePlainImageMap) {
     ASSERT_EQ(p.files.size(), 1u);
     EXPECT_EQ(p.files[0].image.width(), 5);
     EXPECT_EQ(p.files[0].image.height(), 3);
-    EXPECT_EQ(count(p.sdl, "image_map { png \"tex.png\" gamma 1.0 interpolate 2 filter all 0 "
-                           "transmit all 0.25 }"),
+    EXPECT_EQ(count(p.sdl,
+                    "image_map { png \"tex.png\" gamma 1.0 interpolate 2 filter all 0 "
+                    "transmit all 0.25 }"),
               1);
     EXPECT_EQ(count(p.sdl, "matrix"), 0);
 }
@@ -93,7 +94,8 @@ TEST(PovTexture, ClampPadsAsFarAsTheCoordinatesReach) {
 
 TEST(PovTexture, ClampPaddingStopsAtTheLimitAndSaysSo) {
     ir::Texture t = texture(Wrap::ClampToEdge, Wrap::Repeat, false);
-    pov::TexturePigment p = pov::texturePigment(t, {}, Rgb(1), {}, range(-1e6, 1e6, 0, 1), 0, 0, "tex");
+    pov::TexturePigment p =
+        pov::texturePigment(t, {}, Rgb(1), {}, range(-1e6, 1e6, 0, 1), 0, 0, "tex");
     EXPECT_LE(p.files[0].image.width(), pov::kMaxBakedTextureSide);
     EXPECT_EQ(count(p.sdl, "clamp to edge along u holds for texture coordinates"), 1);
 }
@@ -191,8 +193,8 @@ Image povrayQuads(const std::vector<Case> &cases, const std::string &name, int s
         << "global_settings { assumed_gamma 1.0 ambient_light 1 }\n"
         << "background { " << pov::rgb(kBackground) << " }\n"
         << "camera { orthographic location <" << side / 2.0 << ", " << side / 2.0
-        << ", -1> direction z right x*" << side << " up y*" << side << " look_at <"
-        << side / 2.0 << ", " << side / 2.0 << ", 0> }\n";
+        << ", -1> direction z right x*" << side << " up y*" << side << " look_at <" << side / 2.0
+        << ", " << side / 2.0 << ", 0> }\n";
     // Quad corners (x, y) in POV-Ray space, glTF uv (u, v) there, written as (u, 1 - v)
     auto uv = [](double fx, double fy) {
         return "<" + pov::num(kU0 + fx * (kU1 - kU0)) + ", " +
@@ -208,7 +210,8 @@ Image povrayQuads(const std::vector<Case> &cases, const std::string &name, int s
                 r.add(tu, tv);
             }
         std::string stem = name + "_" + std::to_string(k);
-        pov::TexturePigment p = pov::texturePigment(c.texture, c.ref, Rgb(1), c.alpha, r, 0, 0, stem);
+        pov::TexturePigment p =
+            pov::texturePigment(c.texture, c.ref, Rgb(1), c.alpha, r, 0, 0, stem);
         for (const pov::TextureFile &f : p.files)
             writeImage(f.image, (dir / f.fileName).string(), wo);
         int col = int(k) % side, row = int(k) / side;
@@ -216,7 +219,8 @@ Image povrayQuads(const std::vector<Case> &cases, const std::string &name, int s
             << "    uv_vectors { 4, " << uv(0, 0) << ", " << uv(1, 0) << ", " << uv(1, 1) << ", "
             << uv(0, 1) << " }\n"
             << "    face_indices { 2, <0, 1, 2>, <0, 2, 3> }\n"
-            << "    texture { uv_mapping\n" << p.body("    finish { ambient 1 diffuse 0 }\n") << " }\n"
+            << "    texture { uv_mapping\n"
+            << p.body("    finish { ambient 1 diffuse 0 }\n") << " }\n"
             << "    translate <" << col << ", " << side - 1 - row << ", 0> }\n";
     }
     sdl.close();
@@ -285,7 +289,9 @@ TEST(PovTextureRender, EveryWrapModeAndFilterReadsTheSamplersTexels) {
         for (Wrap wv : {Wrap::Repeat, Wrap::ClampToEdge, Wrap::MirroredRepeat})
             for (bool nearest : {false, true})
                 for (const ir::TextureRef &ref : {ir::TextureRef{}, rotated})
-                    cases.push_back({texture(wu, wv, nearest), ref, {},
+                    cases.push_back({texture(wu, wv, nearest),
+                                     ref,
+                                     {},
                                      std::string(names[int(wu)]) + " x " + names[int(wv)] +
                                          (nearest ? " nearest" : " linear") +
                                          (ref.hasTransform() ? " transformed" : "")});

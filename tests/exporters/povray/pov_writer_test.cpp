@@ -33,7 +33,8 @@ int count(const std::string &text, const std::string &what) {
 }
 
 TEST(PovFormat, NumbersRoundTripExactly) {
-    for (double v : {0.1, 1.0 / 3, 1e-300, 123456789.123, -2.5e17}) EXPECT_EQ(std::stod(pov::num(v)), v);
+    for (double v : {0.1, 1.0 / 3, 1e-300, 123456789.123, -2.5e17})
+        EXPECT_EQ(std::stod(pov::num(v)), v);
     EXPECT_EQ(pov::num(-0.0), "0");
     EXPECT_EQ(pov::num(0.5), "0.5");
 }
@@ -67,7 +68,8 @@ material(color="red", phong=0.5, reflection=[0.1, 0.6], fresnel=true, ior=1.3)
     }
 material(color=[1, 1, 1], transmit=0.9, ior=1.5, fade_distance=2, fade_power=1)
     translate([3, 0, 1]) union() { sphere(1); translate([0, 0, 1]) sphere(0.7); }
-)", "golden.scad");
+)",
+                                  "golden.scad");
     std::string path = std::string(SCADRAY_SOURCE_DIR) + "/tests/golden/export_basic.pov";
     if (std::getenv("UPDATE_GOLDEN")) {
         std::ofstream(path) << text;
@@ -87,12 +89,14 @@ TEST(PovWriter, CameraIsMadeRightHanded) {
     EXPECT_NE(t.find("angle 50\n"), std::string::npos);
     // The automatic camera's vertical field of view becomes POV-Ray's horizontal angle
     std::string a = exportText("cube(1);");
-    EXPECT_NE(a.find("angle degrees(2 * atan(tan(radians(22.5 / 2)) * image_width / image_height))"),
-              std::string::npos);
+    EXPECT_NE(
+        a.find("angle degrees(2 * atan(tan(radians(22.5 / 2)) * image_width / image_height))"),
+        std::string::npos);
 }
 
 TEST(PovWriter, MergeOnlyForTransparentSolids) {
-    std::string opaque = exportText("difference() { union() { cube(2); translate([1,1,1]) cube(2); } sphere(1); }");
+    std::string opaque =
+        exportText("difference() { union() { cube(2); translate([1,1,1]) cube(2); } sphere(1); }");
     EXPECT_EQ(count(opaque, "merge {"), 0);
     EXPECT_EQ(count(opaque, "union {"), 1);
     std::string glass = exportText(
@@ -106,7 +110,8 @@ TEST(PovWriter, MergeOnlyForTransparentSolids) {
 }
 
 TEST(PovWriter, NoSingleChildCsgAndTransformsCompose) {
-    std::string t = exportText("translate([1,0,0]) union() { rotate([0,0,90]) difference() { cube(1); } }");
+    std::string t =
+        exportText("translate([1,0,0]) union() { rotate([0,0,90]) difference() { cube(1); } }");
     EXPECT_EQ(count(t, "difference"), 0);
     EXPECT_EQ(count(t, "union"), 0);
     EXPECT_EQ(count(t, "box {"), 1);
@@ -129,7 +134,8 @@ TEST(PovWriter, FinishTermsOnlyWhereTheyHaveAnEffectAndOnlyUsedMaterials) {
         "material(phong=0.3, phong_size=10, specular=0.2, roughness=0.01, metallic=0.5, "
         "brilliance=2, emission=0.2, reflection=[0.1, 0.5], fresnel=true, reflection_falloff=2, "
         "reflection_exponent=0.8, conserve_energy=true) translate([6,0,0]) sphere(1);\n"
-        "material(diffuse=0, brilliance=3, roughness=0.2, metallic=1) translate([9,0,0]) sphere(1);\n"
+        "material(diffuse=0, brilliance=3, roughness=0.2, metallic=1) translate([9,0,0]) "
+        "sphere(1);\n"
         "%material(color=\"blue\") translate([12,0,0]) sphere(1);\n"
         "material(color=\"green\", reflection=0.4) intersection() { sphere(1); "
         "translate([5,0,0]) sphere(1); }");
@@ -175,11 +181,16 @@ TEST(PovWriter, BlurredMaterialsAreSharpWithAComment) {
     std::string t = exportText(
         "use <scadray.scad> material(reflection=0.5, glossy=4) cube(1);\n"
         "material(transmit=0.9, ior=1.5, frosted=3, blur_lobe=\"phong\") sphere(1);");
-    EXPECT_EQ(count(t, "// scadray: glossy reflection spread 4 deg (normal lobe) cannot be "
-                       "expressed in POV-Ray 3.7; written as the sharp mirror reflection"), 1);
-    EXPECT_EQ(count(t, "// scadray: frosted refraction spread 3 deg (phong lobe) cannot be "
-                       "expressed in POV-Ray 3.7; written as the sharp refraction"), 1);
-    EXPECT_EQ(count(t, "rgb <0.5, 0.5, 0.5>, rgb <0.5, 0.5, 0.5>"), 1);  // the reflection itself stays
+    EXPECT_EQ(count(t,
+                    "// scadray: glossy reflection spread 4 deg (normal lobe) cannot be "
+                    "expressed in POV-Ray 3.7; written as the sharp mirror reflection"),
+              1);
+    EXPECT_EQ(count(t,
+                    "// scadray: frosted refraction spread 3 deg (phong lobe) cannot be "
+                    "expressed in POV-Ray 3.7; written as the sharp refraction"),
+              1);
+    EXPECT_EQ(count(t, "rgb <0.5, 0.5, 0.5>, rgb <0.5, 0.5, 0.5>"),
+              1);  // the reflection itself stays
     EXPECT_EQ(count(t, "ior 1.5"), 1);
 }
 

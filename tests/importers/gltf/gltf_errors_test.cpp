@@ -97,10 +97,12 @@ TEST(GltfErrors, OverflowingNumberIsLocated) {
                                    "{\"mesh\":0,\n  \"scale\":[1,-1e999,1]}");
     writeText(tmp.file("inf.gltf"), text);
     size_t at = text.find("-1e999");
-    int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+    int line =
+        1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
     int col = static_cast<int>(at - text.rfind('\n', at));
     if (auto e = parseErrorOf(tmp.file("inf.gltf"))) {
-        EXPECT_NE(std::string(e->what()).find("-1e999 is too large"), std::string::npos) << e->what();
+        EXPECT_NE(std::string(e->what()).find("-1e999 is too large"), std::string::npos)
+            << e->what();
         EXPECT_EQ(e->loc().line, line);
         EXPECT_EQ(e->loc().col, col);
     }
@@ -122,8 +124,8 @@ TEST(GltfErrors, TruncatedGlb) {
     writeBytes(tmp.file("cut.glb"), glb.data(), glb.size() / 2);
     expectError<ParseError>(tmp.file("cut.glb"),
                             {"invalid binary glTF (.glb): the header's length (at byte 8) is " +
-                                 std::to_string(glb.size()) + " bytes, but the file has " +
-                                 std::to_string(glb.size() / 2) + " (truncated?)"});
+                             std::to_string(glb.size()) + " bytes, but the file has " +
+                             std::to_string(glb.size() / 2) + " (truncated?)"});
 }
 
 TEST(GltfErrors, IndexOutOfRange) {

@@ -98,13 +98,14 @@ TEST(GltfGeometry, VertexColoursInThreeComponentTypes) {
     int rgbFloat = b.floats({1, 0.5f, 0.25f, 0, 1, 0, 0, 0, 1}, "VEC3", 3);
     int rgbaByte = b.accessor(std::vector<uint8_t>{255, 0, 0, 255, 0, 51, 0, 102, 0, 0, 255, 0},
                               5121, "VEC4", 3, true);
-    int rgbaShort = b.accessor(std::vector<uint16_t>{65535, 0, 0, 65535, 0, 65535, 0, 0, 0, 0,
-                                                     13107, 32768},
-                               5123, "VEC4", 3, true);
+    int rgbaShort =
+        b.accessor(std::vector<uint16_t>{65535, 0, 0, 65535, 0, 65535, 0, 0, 0, 0, 13107, 32768},
+                   5123, "VEC4", 3, true);
     std::string prims;
     for (int c : {rgbFloat, rgbaByte, rgbaShort})
-        prims += std::string(prims.empty() ? "" : ",") + "{\"attributes\":{\"POSITION\":" +
-                 std::to_string(pos) + ",\"COLOR_0\":" + std::to_string(c) + "}}";
+        prims += std::string(prims.empty() ? "" : ",") +
+                 "{\"attributes\":{\"POSITION\":" + std::to_string(pos) +
+                 ",\"COLOR_0\":" + std::to_string(c) + "}}";
     DiagnosticSink diag;
     ir::Scene scene = importText(
         b.json("\"nodes\":[{\"mesh\":0}],\"meshes\":[{\"primitives\":[" + prims + "]}]"), diag);
@@ -126,10 +127,10 @@ TEST(GltfGeometry, VertexColoursInThreeComponentTypes) {
     GltfBuilder bad;
     bad.floats(kTriangle, "VEC3", 3);
     bad.accessor(std::vector<int8_t>(12, 1), 5120, "VEC4", 3, true);
-    expectFailure(bad.json(R"("nodes":[{"mesh":0}],"meshes":[{"primitives":[{"attributes":)"
-                           R"({"POSITION":0,"COLOR_0":1}}]}])"),
-                  {"meshes[0].primitives[0].attributes.COLOR_0", "accessors[1]",
-                   "not allowed for COLOR_0"});
+    expectFailure(
+        bad.json(R"("nodes":[{"mesh":0}],"meshes":[{"primitives":[{"attributes":)"
+                 R"({"POSITION":0,"COLOR_0":1}}]}])"),
+        {"meshes[0].primitives[0].attributes.COLOR_0", "accessors[1]", "not allowed for COLOR_0"});
 }
 
 TEST(GltfGeometry, SecondTexCoordSetAndTangents) {
@@ -137,15 +138,16 @@ TEST(GltfGeometry, SecondTexCoordSetAndTangents) {
     b.floats(kTriangle, "VEC3", 3);
     b.floats({0, 0, 1, 0, 0, 1, 0, 0, 1}, "VEC3", 3);  // normals
     b.floats({0.5f, 0.5f, 1, 0.5f, 0.5f, 1}, "VEC2", 2);
-    b.accessor(std::vector<int16_t>{32767, 0, 0, -32767, 0, 32767, 0, 32767, 32767, 32767, 0, 32767},
-               5122, "VEC4", 3, true);
+    b.accessor(
+        std::vector<int16_t>{32767, 0, 0, -32767, 0, 32767, 0, 32767, 32767, 32767, 0, 32767}, 5122,
+        "VEC4", 3, true);
     DiagnosticSink diag;
-    ir::Scene scene = importText(
-        b.json(R"("nodes":[{"mesh":0}],"meshes":[{"primitives":[{"attributes":)"
-               R"({"POSITION":0,"NORMAL":1,"TEXCOORD_1":2,"TANGENT":3}}]}],)"
-               R"("extensionsUsed":["KHR_mesh_quantization"],)"
-               R"("extensionsRequired":["KHR_mesh_quantization"])"),
-        diag);
+    ir::Scene scene =
+        importText(b.json(R"("nodes":[{"mesh":0}],"meshes":[{"primitives":[{"attributes":)"
+                          R"({"POSITION":0,"NORMAL":1,"TEXCOORD_1":2,"TANGENT":3}}]}],)"
+                          R"("extensionsUsed":["KHR_mesh_quantization"],)"
+                          R"("extensionsRequired":["KHR_mesh_quantization"])"),
+                   diag);
     ASSERT_EQ(scene.meshes.size(), 1u);
     const ir::Mesh &m = *scene.meshes[0];
     ASSERT_EQ(m.uvs1.size(), 3u);
@@ -176,9 +178,10 @@ TEST(GltfGeometry, QuantizedPositionsAndNormals) {
 
     // Unnormalized bytes are not a normal type; unsigned int is no position type
     std::string text = b.json(meshes);
-    expectFailure(replaceOnce(text, R"("componentType":5120,"count":3,"type":"VEC3","normalized":true)",
-                              R"("componentType":5120,"count":3,"type":"VEC3")"),
-                  {"attributes.NORMAL", "not allowed for NORMAL"});
+    expectFailure(
+        replaceOnce(text, R"("componentType":5120,"count":3,"type":"VEC3","normalized":true)",
+                    R"("componentType":5120,"count":3,"type":"VEC3")"),
+        {"attributes.NORMAL", "not allowed for NORMAL"});
     expectFailure(replaceOnce(text, R"("componentType":5123,"count":3,"type":"VEC3"})",
                               R"("componentType":5125,"count":3,"type":"VEC3"})"),
                   {"attributes.POSITION", "not allowed for POSITION"});
@@ -296,8 +299,8 @@ TEST(GltfGeometry, MeshoptRoundTripWithFallbackBuffer) {
         auto ext = [](size_t off, size_t len, size_t stride, size_t count, const char *mode) {
             return R"("extensions":{"EXT_meshopt_compression":{"buffer":0,"byteOffset":)" +
                    std::to_string(off) + ",\"byteLength\":" + std::to_string(len) +
-                   ",\"byteStride\":" + std::to_string(stride) + ",\"count\":" +
-                   std::to_string(count) + ",\"mode\":\"" + mode + "\"}}";
+                   ",\"byteStride\":" + std::to_string(stride) +
+                   ",\"count\":" + std::to_string(count) + ",\"mode\":\"" + mode + "\"}}";
         };
         return R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],)"
                R"("nodes":[{"mesh":0}],"meshes":[{"primitives":[{"attributes":{"POSITION":0},)"
@@ -319,8 +322,8 @@ TEST(GltfGeometry, MeshoptRoundTripWithFallbackBuffer) {
     const ir::Mesh &m = *scene.meshes[0];
     ASSERT_EQ(m.positions.size(), 4u);
     for (size_t i = 0; i < 4; ++i)
-        expectNear(m.positions[i], Vec3(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]),
-                   0);
+        expectNear(m.positions[i],
+                   Vec3(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]), 0);
     ASSERT_EQ(m.triangles.size(), 2u);
     EXPECT_EQ(m.triangles[1], (std::array<uint32_t, 3>{0, 2, 3}));
 
@@ -344,10 +347,11 @@ TEST(GltfGeometry, MeshoptOctahedralNormals) {
         R"("meshes":[{"primitives":[{"attributes":{"POSITION":0,"NORMAL":1}}]}],"buffers":[)" +
         buf.json() +
         R"(,{"byteLength":12,"extensions":{"EXT_meshopt_compression":{"fallback":true}}}],)"
-        R"("bufferViews":[)" + viewJson(pOff, 36) +
+        R"("bufferViews":[)" +
+        viewJson(pOff, 36) +
         R"(,{"buffer":1,"byteLength":12,"byteStride":4,"extensions":{"EXT_meshopt_compression":)"
-        R"({"buffer":0,"byteOffset":)" + std::to_string(nOff) + R"(,"byteLength":)" +
-        std::to_string(nb.size()) +
+        R"({"buffer":0,"byteOffset":)" +
+        std::to_string(nOff) + R"(,"byteLength":)" + std::to_string(nb.size()) +
         R"(,"byteStride":4,"count":3,"mode":"ATTRIBUTES","filter":"OCTAHEDRAL"}}}],)"
         R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"},)"
         R"({"bufferView":1,"componentType":5120,"normalized":true,"count":3,"type":"VEC3"}],)"
@@ -371,10 +375,12 @@ TEST(GltfGeometry, MeshoptFallbackBufferInBinaryGltf) {
     std::string json =
         R"({"asset":{"version":"2.0"},"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
         R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],)"
-        R"("buffers":[{"byteLength":)" + std::to_string(vb.size()) +
+        R"("buffers":[{"byteLength":)" +
+        std::to_string(vb.size()) +
         R"(},{"byteLength":36,"extensions":{"EXT_meshopt_compression":{"fallback":true}}}],)"
         R"("bufferViews":[{"buffer":1,"byteLength":36,"byteStride":12,"extensions":)"
-        R"({"EXT_meshopt_compression":{"buffer":0,"byteLength":)" + std::to_string(encodedSize) +
+        R"({"EXT_meshopt_compression":{"buffer":0,"byteLength":)" +
+        std::to_string(encodedSize) +
         R"(,"byteStride":12,"count":3,"mode":"ATTRIBUTES"}}}],)"
         R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"}],)"
         R"("extensionsUsed":["EXT_meshopt_compression"],)"
@@ -409,22 +415,24 @@ std::string skinnedStrip(const std::string &joints, const std::string &weightsFi
     GltfBuilder b;
     b.floats({0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0, 2, 0, 1, 2, 0}, "VEC3", 3);
     b.accessor(std::vector<uint16_t>{0, 1, 2, 0, 2, 3, 2, 3, 4, 3, 5, 4}, 5123, "SCALAR", 12);
-    b.accessor(std::vector<uint8_t>{0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0, 1,
-                                    0, 0, 0},
+    b.accessor(std::vector<uint8_t>{0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0,
+                                    0, 1, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0},
                5121, "VEC4", 6);
-    std::vector<float> w = {1, 0, 0, 0, 1, 0, 0, 0, 0.5f, 0.5f, 0, 0,
-                            0.5f, 0.5f, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0};
+    std::vector<float> w = {1,    0,    0, 0, 1, 0, 0, 0, 0.5f, 0.5f, 0, 0,
+                            0.5f, 0.5f, 0, 0, 1, 0, 0, 0, 1,    0,    0, 0};
     b.floats(w, "VEC4", 4);
     // Inverse bind matrices: identity and translate(0, -1, 0), column-major
-    b.floats({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1,
+    b.floats({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0,  0, 1,
               1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 0, 1},
              "MAT4", 16);
     std::string text = b.json(
         R"("nodes":[{"mesh":0,"skin":0,"translation":[5,0,0]},{"children":[2]},)"
         R"({"translation":[0,1,0],"rotation":[0,0,0.70710678,0.70710678]}],)"
-        R"("skins":[{"joints":)" + joints + R"(,"inverseBindMatrices":4}],)"
-        R"("meshes":[{"primitives":[{"attributes":{"POSITION":0,"JOINTS_0":2,"WEIGHTS_0":3},)"
-        R"("indices":1}]}])",
+        R"("skins":[{"joints":)" +
+            joints +
+            R"(,"inverseBindMatrices":4}],)"
+            R"("meshes":[{"primitives":[{"attributes":{"POSITION":0,"JOINTS_0":2,"WEIGHTS_0":3},)"
+            R"("indices":1}]}])",
         "[0,1]");
     if (!weightsFix.empty())
         text = replaceOnce(text, R"("componentType":5126,"count":6,"type":"VEC4")", weightsFix);
@@ -438,7 +446,8 @@ TEST(GltfGeometry, SkinnedStripPosedByHand) {
     // Joint 1 turns the top row 90 degrees about Z around (0, 1, 0): (x, 2) -> (-1 x, 1 + x)
     // ... with x in {0, 1}: (0, 2) -> (-1, 1), (1, 2) -> (-1, 2); the middle row halfway:
     // (1, 1) -> ((1 + 0) / 2, (1 + 2) / 2). The node's translation (5, 0, 0) is ignored.
-    std::vector<Vec3> want = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.5, 1.5, 0}, {-1, 1, 0}, {-1, 2, 0}};
+    std::vector<Vec3> want = {{0, 0, 0},     {1, 0, 0},  {0, 1, 0},
+                              {0.5, 1.5, 0}, {-1, 1, 0}, {-1, 2, 0}};
     ASSERT_EQ(got.size(), want.size());
     for (size_t i = 0; i < want.size(); ++i) expectNear(got[i], zUp(want[i]), 1e-6);
 }
@@ -452,10 +461,10 @@ TEST(GltfGeometry, BadSkins) {
     // Joint transforms that overflow a double
     std::string huge = replaceOnce(skinnedStrip("[1,2]"), R"({"children":[2]})",
                                    R"({"children":[2],"scale":[1e300,1e300,1e300]})");
-    expectFailure(replaceOnce(huge, R"("translation":[0,1,0],)",
-                              R"("translation":[0,1,0],"scale":[1e300,1e300,1e300],)"),
-                  {"meshes[0].primitives[0].attributes.POSITION", "is not finite",
-                   "(after skinning)"});
+    expectFailure(
+        replaceOnce(huge, R"("translation":[0,1,0],)",
+                    R"("translation":[0,1,0],"scale":[1e300,1e300,1e300],)"),
+        {"meshes[0].primitives[0].attributes.POSITION", "is not finite", "(after skinning)"});
 }
 
 /// A triangle with one morph target moving every vertex by (0, 0, 2).
@@ -473,8 +482,7 @@ std::string morphedTriangle(const std::string &nodes, size_t deltaCount = 3) {
 
 TEST(GltfGeometry, MorphTargetWeights) {
     DiagnosticSink diag;
-    ir::Scene scene =
-        importText(morphedTriangle(R"([{"mesh":0},{"mesh":0,"weights":[1]}])"), diag);
+    ir::Scene scene = importText(morphedTriangle(R"([{"mesh":0},{"mesh":0,"weights":[1]}])"), diag);
     std::vector<Instance> inst = instances(scene);
     ASSERT_EQ(inst.size(), 2u);
     EXPECT_NE(inst[0].mesh, inst[1].mesh);  // two poses, two meshes

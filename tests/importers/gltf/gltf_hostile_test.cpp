@@ -104,8 +104,7 @@ TEST(GltfHostile, FilesInsideTheFolderAreRead) {
     writeBytes(tmp.file("model/sub/box data.bin"), bin.data(), bin.size());
     fs::create_symlink("sub/box data.bin", tmp.file("model/inside.bin"));
     std::string model = tmp.file("model/box.gltf");
-    for (const char *uri :
-         {"sub/box%20data.bin", "./sub/../sub/box data.bin", "inside.bin"}) {
+    for (const char *uri : {"sub/box%20data.bin", "./sub/../sub/box data.bin", "inside.bin"}) {
         SCOPED_TRACE(uri);
         boxWithUri(model, uri);
         DiagnosticSink diag;
@@ -277,9 +276,10 @@ TEST(GltfHostile, EmptyBuffersAreLocatedErrors) {
     }
     // In a .gltf at its line and column; a negative or fractional length too
     for (std::string length : {"0", "-3", "0.5", "0e9"}) {
-        std::string text = "{\"asset\":{\"version\":\"2.0\"},\n \"buffers\":[{\"uri\":\"b.bin\", "
-                           "\"byteLength\":" +
-                           length + "}]}";
+        std::string text =
+            "{\"asset\":{\"version\":\"2.0\"},\n \"buffers\":[{\"uri\":\"b.bin\", "
+            "\"byteLength\":" +
+            length + "}]}";
         writeText(tmp.file("empty.gltf"), text);
         if (auto e = parseError(tmp.file("empty.gltf"))) {
             EXPECT_NE(std::string(e->what()).find("buffers[0].byteLength is " + length + ";"),
@@ -290,8 +290,9 @@ TEST(GltfHostile, EmptyBuffersAreLocatedErrors) {
         }
     }
     // Other numbers named byteLength (a bufferView's, an image's extras) are not a buffer's
-    std::string view = "{\"asset\":{\"version\":\"2.0\"},\"bufferViews\":[{\"buffer\":0,"
-                       "\"byteLength\":0}],\"buffers\":[{\"uri\":\"b.bin\",\"byteLength\":4}]}";
+    std::string view =
+        "{\"asset\":{\"version\":\"2.0\"},\"bufferViews\":[{\"buffer\":0,"
+        "\"byteLength\":0}],\"buffers\":[{\"uri\":\"b.bin\",\"byteLength\":4}]}";
     writeText(tmp.file("b.bin"), "abcd");
     writeText(tmp.file("view.gltf"), view);
     expectNoErrorContaining(tmp.file("view.gltf"), "a buffer holds at least");

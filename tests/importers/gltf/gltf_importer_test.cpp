@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// glTF importer on the Khronos sample models (tests/data/gltf/khronos): hierarchy, accessors, topology, cameras, instancing.
+// glTF importer on the Khronos sample models (tests/data/gltf/khronos): hierarchy, accessors,
+// topology, cameras, instancing.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -363,7 +364,8 @@ TEST(GltfImport, ImportIntoAddsMeshesUnderAGroupAtTheCallSite) {
     ir::Scene scene;
     scene.materials.push_back(ir::Material{});  // a material already in the scene
     SourceLoc call(std::make_shared<const std::string>("main.scad"), 3, 5);
-    ir::NodePtr group = importGltfInto(scene, testModel("textured_camera.glb"), call, diag, std::nullopt);
+    ir::NodePtr group =
+        importGltfInto(scene, testModel("textured_camera.glb"), call, diag, std::nullopt);
     ASSERT_TRUE(group);
     EXPECT_EQ(group->kind, ir::NodeKind::Group);
     EXPECT_EQ(scene.meshes.size(), 1u);

@@ -32,11 +32,11 @@ inline std::string testModel(const std::string &name) {
 
 /// Fails the calling test when a sample model is missing: they are part of the checkout, so a
 /// missing one is a broken tree, never a reason to skip.
-#define REQUIRE_GLTF_SAMPLE(name)                                                           \
-    do {                                                                                    \
-        ASSERT_TRUE(std::filesystem::exists(::rt::gltf::test::sample(name)))                \
-            << "glTF sample " << ::rt::gltf::test::sample(name)                             \
-            << " is missing from the checkout (tests/data/gltf/khronos)";                   \
+#define REQUIRE_GLTF_SAMPLE(name)                                            \
+    do {                                                                     \
+        ASSERT_TRUE(std::filesystem::exists(::rt::gltf::test::sample(name))) \
+            << "glTF sample " << ::rt::gltf::test::sample(name)              \
+            << " is missing from the checkout (tests/data/gltf/khronos)";    \
     } while (0)
 
 inline std::vector<unsigned char> readBytes(const std::string &path) {
@@ -165,7 +165,8 @@ inline std::string base64Encode(const std::vector<unsigned char> &data) {
 }
 
 /// A w x h 32-bit BMP (with alpha), pixel(x, y) = 0xRRGGBBAA, y = 0 the top row.
-inline std::vector<unsigned char> bmp32(int w, int h, const std::function<uint32_t(int, int)> &pixel) {
+inline std::vector<unsigned char> bmp32(int w, int h,
+                                        const std::function<uint32_t(int, int)> &pixel) {
     std::vector<unsigned char> b = {'B', 'M'};
     auto u32 = [&](uint32_t v) {
         for (int i = 0; i < 4; ++i) b.push_back(static_cast<unsigned char>(v >> (8 * i)));

@@ -56,7 +56,8 @@ std::string gltfOf(const std::vector<Prim> &prims, const std::string &materials,
     auto addAccessor = [&](int v, int type, size_t count, const char *kind, const std::string &mm) {
         accessors += (acc ? "," : "") + std::string("{\"bufferView\":") + std::to_string(v) +
                      ",\"componentType\":" + std::to_string(type) +
-                     ",\"count\":" + std::to_string(count) + ",\"type\":\"" + kind + "\"" + mm + "}";
+                     ",\"count\":" + std::to_string(count) + ",\"type\":\"" + kind + "\"" + mm +
+                     "}";
         return acc++;
     };
     for (size_t i = 0; i < prims.size(); ++i) {
@@ -73,8 +74,8 @@ std::string gltfOf(const std::vector<Prim> &prims, const std::string &materials,
                                  "VEC3", mm);
         std::string attrs = "\"POSITION\":" + std::to_string(posAcc);
         if (!p.uv.empty()) {
-            int uvAcc = addAccessor(addView(buf.add(p.uv), p.uv.size() * 4), 5126,
-                                    p.uv.size() / 2, "VEC2", "");
+            int uvAcc = addAccessor(addView(buf.add(p.uv), p.uv.size() * 4), 5126, p.uv.size() / 2,
+                                    "VEC2", "");
             attrs += ",\"TEXCOORD_0\":" + std::to_string(uvAcc);
         }
         int idxAcc = addAccessor(addView(buf.add(p.idx), p.idx.size() * 4), 5125, p.idx.size(),
@@ -86,8 +87,8 @@ std::string gltfOf(const std::vector<Prim> &prims, const std::string &materials,
     std::string images, textures;
     for (size_t i = 0; i < imageUris.size(); ++i) {
         images += (i ? "," : "") + std::string("{\"uri\":\"") + imageUris[i] + "\"}";
-        textures += (i ? "," : "") + std::string("{\"source\":") + std::to_string(i) +
-                    ",\"sampler\":0}";
+        textures +=
+            (i ? "," : "") + std::string("{\"source\":") + std::to_string(i) + ",\"sampler\":0}";
     }
     std::string text = R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],)"
                        R"("nodes":[{"mesh":0}],"meshes":[{"primitives":[)" +
@@ -201,8 +202,8 @@ TEST(GltfTexel, NormalMappedQuadShadesLikeTheFacetsItEncodes) {
     std::string mapped = R"([{"pbrMetallicRoughness":{"baseColorFactor":[0.8,0.7,0.6,1],)"
                          R"("metallicFactor":0,"roughnessFactor":1},"normalTexture":{"index":0}}])";
     TempDir tmp;
-    auto flat = importText(tmp, gltfOf({quad(0, 1, 0, 1, 0, 0)}, mapped, {bmpUri(normalMap)}),
-                           "flat.gltf");
+    auto flat =
+        importText(tmp, gltfOf({quad(0, 1, 0, 1, 0, 0)}, mapped, {bmpUri(normalMap)}), "flat.gltf");
     EXPECT_EQ(flat->diag.count(Severity::Warning), 0);
     ASSERT_EQ(flat->scene.meshes.size(), 1u);
     EXPECT_EQ(flat->scene.meshes[0]->tangents.size(), 4u) << "tangents generated";
@@ -287,9 +288,10 @@ TEST(GltfTexel, RoughnessTextureEqualsQuadsOfConstantRoughness) {
     std::string constants = "[";
     std::vector<Prim> quads;
     for (int k = 0; k < 4; ++k) {
-        constants += std::string(k ? "," : "") +
-                     R"({"pbrMetallicRoughness":{"baseColorFactor":[0.9,0.6,0.3,1],"metallicFactor":0.5,"roughnessFactor":)" +
-                     std::to_string(rough[k] / 255.0) + "}}";
+        constants +=
+            std::string(k ? "," : "") +
+            R"({"pbrMetallicRoughness":{"baseColorFactor":[0.9,0.6,0.3,1],"metallicFactor":0.5,"roughnessFactor":)" +
+            std::to_string(rough[k] / 255.0) + "}}";
         quads.push_back(quad(k / 4.0, (k + 1) / 4.0, 0, 1, 0, k));
     }
     constants += "]";
@@ -336,8 +338,8 @@ void expectBandsEqualFactors(const std::string &ext, const std::string &textureK
     constants += "]";
     std::string used = ",\"extensionsUsed\":[\"" + ext + "\"]";
     TempDir tmp;
-    auto a = importText(tmp, gltfOf({quad(0, 1, 0, 1, 0, 0)}, textured, {bmpUri(tex)}, used),
-                        "a.gltf");
+    auto a =
+        importText(tmp, gltfOf({quad(0, 1, 0, 1, 0, 0)}, textured, {bmpUri(tex)}, used), "a.gltf");
     auto b = importText(tmp, gltfOf(quads, constants, {}, used), "b.gltf");
     EXPECT_EQ(a->diag.count(Severity::Warning), 0);
     ASSERT_EQ(a->scene.materials.size(), 1u);
@@ -355,9 +357,8 @@ void expectBandsEqualFactors(const std::string &ext, const std::string &textureK
     Rgb first = pixelAt(ia, v, 0.125, 0.5), last = pixelAt(ia, v, 0.875, 0.5);
     EXPECT_GT(std::abs(first.r - last.r) + std::abs(first.b - last.b), 0.01) << "bands differ";
     // The constant fields (POV-Ray export, check) are the mapping of the texture's mean
-    std::string meanMaterial = "[{" + base + R"(,"extensions":{")" + ext + R"(":{")" +
-                               factorKey + "\":" + std::to_string(135 / 255.0) + otherFactors +
-                               "}}}]";
+    std::string meanMaterial = "[{" + base + R"(,"extensions":{")" + ext + R"(":{")" + factorKey +
+                               "\":" + std::to_string(135 / 255.0) + otherFactors + "}}}]";
     auto c = importText(tmp, gltfOf({quad(0, 1, 0, 1, 0, 0)}, meanMaterial, {}, used), "c.gltf");
     const ir::Finish &fa = a->scene.materials[0].finish, &fc = c->scene.materials[0].finish;
     EXPECT_NEAR(fa.reflectionMin.r, fc.reflectionMin.r, 1e-6);
@@ -390,8 +391,8 @@ std::unique_ptr<Imported> checkerScene(const TempDir &tmp, const std::string &al
         R"("baseColorTexture":{"index":0}},"alphaMode":")" +
         alphaMode + R"("},)" +
         R"({"pbrMetallicRoughness":{"baseColorFactor":[0.5,0.5,0.5,1],"metallicFactor":0,"roughnessFactor":1}}])";
-    return importText(tmp, gltfOf({quad(0, 1, 0, 1, 0, 0), quad(-1, 3, -1, 2, -1, 1)}, materials,
-                                  {bmpUri(tex)}));
+    return importText(
+        tmp, gltfOf({quad(0, 1, 0, 1, 0, 0), quad(-1, 3, -1, 2, -1, 1)}, materials, {bmpUri(tex)}));
 }
 
 // (c) MASK: cut-out squares show what lies behind, and the shadow is a checkerboard.
@@ -504,8 +505,9 @@ TEST(GltfTexel, TexturedMaterialsKeepTheirMeansAndUntexturedOnesNoDescription) {
     copy.texel.pbr = std::make_shared<const PbrMaterial>(*textured.texel.pbr);
     EXPECT_TRUE(copy.sameAppearance(textured)) << "compared by value";
     // The metallic-roughness data is linear, not sRGB-decoded
-    const ir::Texture &tex = *im->scene.textures[static_cast<size_t>(
-        textured.texel.pbr->metallicRoughnessTexture.texture)];
+    const ir::Texture &tex =
+        *im->scene
+             .textures[static_cast<size_t>(textured.texel.pbr->metallicRoughnessTexture.texture)];
     EXPECT_NEAR(tex.rgba[1], 0x44 / 255.0, 1e-6);
 }
 

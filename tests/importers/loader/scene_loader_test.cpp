@@ -19,8 +19,8 @@ class SceneLoader : public ::testing::Test {
   protected:
     void SetUp() override {
         dir_ = fs::temp_directory_path() /
-               ("scadray_loader_test_" + std::to_string(::testing::UnitTest::GetInstance()
-                                                             ->random_seed()));
+               ("scadray_loader_test_" +
+                std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
         fs::create_directories(dir_);
     }
     void TearDown() override { fs::remove_all(dir_); }
@@ -44,7 +44,8 @@ TEST(SceneFormatTest, ChosenByExtensionCaseInsensitively) {
 }
 
 TEST_F(SceneLoader, ScadSceneIsCompletedWithCameraLightsAndFacets) {
-    std::string path = write("part.scad", "cube(10); translate([20,0,0]) cylinder(r=3, h=5, $fn=6);");
+    std::string path =
+        write("part.scad", "cube(10); translate([20,0,0]) cylinder(r=3, h=5, $fn=6);");
     DiagnosticSink diag;
     ir::Scene s = loadScene(path, diag, LoadOptions{});
     EXPECT_TRUE(s.camera.has_value());
@@ -68,8 +69,9 @@ TEST_F(SceneLoader, DefinesAndFacetModeReachTheImporter) {
 }
 
 TEST_F(SceneLoader, MeshFileIsOneMeshInOpenScadsColour) {
-    std::string path = write("t.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
-                                      "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+    std::string path = write("t.off",
+                             "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+                             "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
     DiagnosticSink diag;
     ir::Scene s = loadScene(path, diag, LoadOptions{});
     ASSERT_EQ(s.meshes.size(), 1u);
@@ -87,8 +89,7 @@ TEST_F(SceneLoader, UnknownExtensionAndMissingFileAreErrorsNamingTheFile) {
         EXPECT_NE(std::string(e.what()).find("unknown scene type '.obj'"), std::string::npos)
             << e.what();
     }
-    EXPECT_THROW(loadScene((dir_ / "none.scad").string(), diag, LoadOptions{}),
-                 std::runtime_error);
+    EXPECT_THROW(loadScene((dir_ / "none.scad").string(), diag, LoadOptions{}), std::runtime_error);
 }
 
 TEST_F(SceneLoader, BadEnvironmentImageFailsBeforeTheSceneIsEvaluated) {

@@ -5,8 +5,8 @@
 #include <sys/stat.h>
 
 #include "importers/mesh/mesh_reader.h"
-#include "importers/mesh/reader_support.h"
 #include "importers/mesh/mesh_test_support.h"
+#include "importers/mesh/reader_support.h"
 
 namespace rt::meshio::test {
 namespace {
@@ -179,8 +179,9 @@ TEST(OffReader, FifosFoldersAndHugeFilesAreRefusedWithoutReading) {
     std::string dir = testDir();
     std::string fifo = dir + "/pipe.off";
     ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
-    EXPECT_NE(std::string(parseErrorOf([&] { readOff(fifo, diag); }).what()).find("not a regular file"),
-              std::string::npos);
+    EXPECT_NE(
+        std::string(parseErrorOf([&] { readOff(fifo, diag); }).what()).find("not a regular file"),
+        std::string::npos);
     fs::create_directories(dir + "/folder.stl");
     EXPECT_NE(std::string(parseErrorOf([&] { readStl(dir + "/folder.stl", diag); }).what())
                   .find("not a regular file (a directory)"),

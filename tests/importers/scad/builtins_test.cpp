@@ -2,8 +2,8 @@
 // Builtin function tests with exact expected output (values checked against OpenSCAD 2021.01).
 #include <gtest/gtest.h>
 
-#include "importers/scad/test_support.h"
 #include "importers/scad/lang/value.h"
+#include "importers/scad/test_support.h"
 
 namespace rt::scad::test {
 namespace {

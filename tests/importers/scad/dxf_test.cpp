@@ -149,18 +149,17 @@ TEST(Dxf, ImportFillsEvenOdd) {
 TEST(Dxf, DimensionsAndCross) {
     EXPECT_EQ(echoOf("echo(dxf_dim(file=\"import2d/shapes.dxf\", name=\"w\"));"), "8");
     EXPECT_EQ(echoOf("echo(dxf_dim(file=\"import2d/shapes.dxf\", name=\"len\"));"), "5");
-    EXPECT_EQ(echoOf("echo(dxf_dim(file=\"import2d/shapes.dxf\", name=\"w\", scale=2));"),
-              "16");
-    EXPECT_EQ(echoOf("echo(dxf_cross(file=\"import2d/shapes.dxf\", layer=\"cross\"));"),
-              "[5, 5]");
+    EXPECT_EQ(echoOf("echo(dxf_dim(file=\"import2d/shapes.dxf\", name=\"w\", scale=2));"), "16");
+    EXPECT_EQ(echoOf("echo(dxf_cross(file=\"import2d/shapes.dxf\", layer=\"cross\"));"), "[5, 5]");
     EXPECT_EQ(echoOf("echo(dxf_cross(file=\"import2d/shapes.dxf\", layer=\"cross\", "
                      "origin=[1, 2]));"),
               "[4, 3]");
 
     Imported odd = importText("echo(dxf_dim(file=\"import2d/shapes.dxf\", name=\"odd\"));");
     EXPECT_EQ(odd.echoes(), std::vector<std::string>{"undef"});
-    EXPECT_TRUE(odd.hasWarning("Dimension 'odd' in 'import2d/shapes.dxf', layer '' has "
-                               "unsupported type!"));
+    EXPECT_TRUE(
+        odd.hasWarning("Dimension 'odd' in 'import2d/shapes.dxf', layer '' has "
+                       "unsupported type!"));
     Imported none = importText("echo(dxf_dim(file=\"import2d/shapes.dxf\", name=\"zz\"));");
     EXPECT_TRUE(none.hasWarning("Can't find dimension 'zz'"));
     Imported missing = importText("x = dxf_dim(file=\"nope.dxf\", name=\"w\");");
@@ -177,9 +176,9 @@ TEST(Dxf, FileFormsOfTheExtrusions) {
     EXPECT_TRUE(lin.hasWarning("DEPRECATED: Support for reading files in linear_extrude"));
     auto prims = primitives(*lin.scene.root);
     ASSERT_EQ(prims.size(), 1u);  // the cube child is ignored
-    Imported rot =
-        importText("rotate_extrude(file=\"import2d/shapes.dxf\", layer=\"square\", "
-                   "origin=[-20, 0]);");
+    Imported rot = importText(
+        "rotate_extrude(file=\"import2d/shapes.dxf\", layer=\"square\", "
+        "origin=[-20, 0]);");
     EXPECT_TRUE(rot.hasWarning("DEPRECATED: Support for reading files in rotate_extrude"));
     EXPECT_EQ(primitives(*rot.scene.root).size(), 1u);
 }
@@ -199,9 +198,9 @@ class DxfBadFiles : public rt::test::TempDirTest {
 
 TEST_F(DxfBadFiles, WarnAsOpenScadDoes) {
     // A bad number, a LINE left without its end (the entity stays open), a bad group code
-    Imported r = run(
-        "  0\nSECTION\n  2\nENTITIES\n  0\nLINE\n  8\n0\n 10\nabc\n 20\n0\n 11\n1\n 21\n1\n"
-        "  0\nLINE\n  8\n0\n 10\n0\n  0\nCIRCLE\n 10\n1\n 20\n1\n 40\n1\nxx\nfoo\n  0\nEOF\n");
+    Imported r =
+        run("  0\nSECTION\n  2\nENTITIES\n  0\nLINE\n  8\n0\n 10\nabc\n 20\n0\n 11\n1\n 21\n1\n"
+            "  0\nLINE\n  8\n0\n 10\n0\n  0\nCIRCLE\n 10\n1\n 20\n1\n 40\n1\nxx\nfoo\n  0\nEOF\n");
     std::string path = (dir / "bad.dxf").string();
     EXPECT_TRUE(r.hasWarning("Illegal value 'abc'in `" + path + "'"));
     EXPECT_TRUE(r.hasWarning("Not enough input values for LINE. in '" + path + "'"));
@@ -210,16 +209,18 @@ TEST_F(DxfBadFiles, WarnAsOpenScadDoes) {
 }
 
 TEST_F(DxfBadFiles, HugeArcsAndNonFiniteAnglesAreLeftOut) {
-    Imported r = run("  0\nSECTION\n  2\nENTITIES\n  0\nCIRCLE\n 10\n0\n 20\n0\n 40\n1e12\n"
-                     "  0\nARC\n 10\n0\n 20\n0\n 40\n1\n 50\ninf\n 51\n0\n  0\nENDSEC\n",
-                     "2e6");
+    Imported r =
+        run("  0\nSECTION\n  2\nENTITIES\n  0\nCIRCLE\n 10\n0\n 20\n0\n 40\n1e12\n"
+            "  0\nARC\n 10\n0\n 20\n0\n 40\n1\n 50\ninf\n 51\n0\n  0\nENDSEC\n",
+            "2e6");
     EXPECT_TRUE(r.hasWarning("CIRCLE in DXF file"));
     EXPECT_TRUE(r.hasWarning("ARC with a non-finite angle"));
 }
 
 TEST_F(DxfBadFiles, ABlockInsertedIntoItselfStopsAtTheSegmentLimit) {
-    std::string text = "  0\nSECTION\n  2\nBLOCKS\n  0\nBLOCK\n  2\nb\n  0\nLINE\n 10\n0\n 20\n0\n"
-                       " 11\n1\n 21\n1\n";
+    std::string text =
+        "  0\nSECTION\n  2\nBLOCKS\n  0\nBLOCK\n  2\nb\n  0\nLINE\n 10\n0\n 20\n0\n"
+        " 11\n1\n 21\n1\n";
     for (int i = 0; i < 40; ++i) text += "  0\nINSERT\n  2\nb\n 10\n0.5\n 20\n0\n";
     text += "  0\nENDBLK\n  0\nENDSEC\n  0\nEOF\n";
     Imported r = run(text);

@@ -231,9 +231,10 @@ TEST(Limits, GeometryWorkCapStopsBigProjectionsAndMinkowskiSums) {
             << e.what();
         EXPECT_EQ(e.loc().toString(), "limits.scad:2:2");
     }
-    EXPECT_THROW(evaluateWithLimits(
-                     "minkowski() { difference() { sphere(5, $fn=50); cube(1); } cube(1); }", limits),
-                 EvalError);
+    EXPECT_THROW(
+        evaluateWithLimits("minkowski() { difference() { sphere(5, $fn=50); cube(1); } cube(1); }",
+                           limits),
+        EvalError);
     EXPECT_NO_THROW(evaluateWithLimits("linear_extrude(1) projection() sphere(5, $fn=8);", limits));
     EXPECT_NO_THROW(evaluateWithLimits(shadow, EvalLimits{}));
 }
@@ -421,9 +422,10 @@ TEST(IncludeUse, FontFileIsRegisteredNotParsed) {
 }
 
 TEST(Deprecated, AssignBindsInParallelAndWarnsOncePerLine) {
-    Imported r = importText("a = 5;\nfor (i = [0:2]) assign(a = i, b = a + 1) echo(a, b);\n"
-                            "assign(c = 1, 7, $fn = 3) { c = 2; echo(c, $fn); }\n"
-                            "assign(d = 1) cube(d); assign(d = 2) echo(d);");
+    Imported r = importText(
+        "a = 5;\nfor (i = [0:2]) assign(a = i, b = a + 1) echo(a, b);\n"
+        "assign(c = 1, 7, $fn = 3) { c = 2; echo(c, $fn); }\n"
+        "assign(d = 1) cube(d); assign(d = 2) echo(d);");
     EXPECT_EQ(r.echoes(), (Echoes{"0, 6", "1, 6", "2, 6", "2, 3", "2"}));
     EXPECT_EQ(r.scene.root->primitiveCount(), 1u);
     std::vector<int> lines;

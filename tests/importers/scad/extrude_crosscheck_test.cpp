@@ -10,9 +10,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/meshing/facets.h"
 #include "core/ir/prism.h"
 #include "core/math/bounds3.h"
+#include "core/meshing/facets.h"
 #include "importers/mesh/mesh_reader.h"
 #include "importers/scad/test_support.h"
 
@@ -168,8 +168,8 @@ TEST_P(ExtrudeCrossCheck, BoundsVolumeAndVertices) {
         return false;
     };
     for (const Vec3 &v : ref.positions)
-        EXPECT_TRUE(has(ourVertices, v)) << "OpenSCAD vertex missing: " << v.x << " " << v.y
-                                         << " " << v.z;
+        EXPECT_TRUE(has(ourVertices, v))
+            << "OpenSCAD vertex missing: " << v.x << " " << v.y << " " << v.z;
     for (const Vec3 &v : ourVertices)
         EXPECT_TRUE(has(ref.positions, v))
             << "vertex not in OpenSCAD's: " << v.x << " " << v.y << " " << v.z;

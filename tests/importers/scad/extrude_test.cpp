@@ -3,9 +3,9 @@
 #include <cmath>
 #include <functional>
 
-#include "core/meshing/facets.h"
 #include "core/ir/mesh.h"
 #include "core/ir/prism.h"
+#include "core/meshing/facets.h"
 #include "importers/scad/geometry2d/extrude.h"
 #include "importers/scad/test_support.h"
 
@@ -80,8 +80,9 @@ TEST(Extrude, CircleBecomesCylinderWithItsFragments) {
 }
 
 TEST(Extrude, ScaleZeroMakesPyramidAndCone) {
-    Imported r = importText("linear_extrude(height=3, scale=0) square(2, center=true);"
-                            "linear_extrude(height=3, scale=-1) circle(1);");
+    Imported r = importText(
+        "linear_extrude(height=3, scale=0) square(2, center=true);"
+        "linear_extrude(height=3, scale=-1) circle(1);");
     auto p = primitives(*r.scene.root);
     ASSERT_EQ(p.size(), 2u);
     const auto &pyr = polytopeOf(*p[0].node);
@@ -91,8 +92,9 @@ TEST(Extrude, ScaleZeroMakesPyramidAndCone) {
 }
 
 TEST(Extrude, PolygonIsPrismConvexWithoutMeshNonConvexWithClosedMesh) {
-    Imported r = importText("linear_extrude(2) polygon([[0,0],[4,0],[4,3]]);"
-                            "linear_extrude(2) polygon([[0,0],[4,0],[4,1],[1,1],[1,4],[0,4]]);");
+    Imported r = importText(
+        "linear_extrude(2) polygon([[0,0],[4,0],[4,3]]);"
+        "linear_extrude(2) polygon([[0,0],[4,0],[4,1],[1,1],[1,4],[0,4]]);");
     auto p = primitives(*r.scene.root);
     ASSERT_EQ(p.size(), 2u);
     EXPECT_EQ(polytopeOf(*p[0].node).vertices.size(), 6u);
@@ -234,8 +236,9 @@ TEST(Extrude, TopLevelTwoDIsPreviewPlate) {
 TEST(Extrude, TwistOfSeveralOutlinesSweepsTheirUnion) {
     // OpenSCAD combines the outlines (Clipper) before sweeping, and so do we: the frame
     // minus its hole is one swept outline minus one swept hole, no warning
-    Imported r = importText("linear_extrude(height=10, twist=90)\n"
-                            "    difference() { square(4, center=true); square(2, center=true); }");
+    Imported r = importText(
+        "linear_extrude(height=10, twist=90)\n"
+        "    difference() { square(4, center=true); square(2, center=true); }");
     EXPECT_TRUE(r.warnings().empty()) << r.warnings().front();
     auto hasDifference = [](const ir::Node &n, auto &self) -> bool {
         if (n.kind == ir::NodeKind::Difference) return true;
@@ -246,8 +249,9 @@ TEST(Extrude, TwistOfSeveralOutlinesSweepsTheirUnion) {
     EXPECT_TRUE(hasDifference(*r.scene.root, hasDifference));
     EXPECT_EQ(primitives(*r.scene.root).size(), 2u);
     // Overlapping squares become one outline
-    r = importText("linear_extrude(height=10, twist=90) { square(4); translate([2, 2]) "
-                   "square(4); }");
+    r = importText(
+        "linear_extrude(height=10, twist=90) { square(4); translate([2, 2]) "
+        "square(4); }");
     EXPECT_TRUE(r.warnings().empty()) << r.warnings().front();
     EXPECT_EQ(primitives(*r.scene.root).size(), 1u);
 }

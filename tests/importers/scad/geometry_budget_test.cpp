@@ -13,8 +13,8 @@
 namespace rt::scad {
 namespace {
 
-using test::importText;
 using test::Imported;
+using test::importText;
 
 /// The CLI's options: the default budget from the constant `scadray` uses.
 ImportOptions cliDefaults() {
@@ -39,8 +39,8 @@ TEST(GeometryBudget, HugeOffsetEndsInALocatedError) {
     // r = 1e9 with $fn = 1e6: a million points on one outline, which Clipper's strictly simple
     // pass compares pairwise (hours); the error points at the offset() that made them
     std::string loc;
-    std::string err = budgetError("linear_extrude(1) offset(r=1e9, $fn=1e6) square(1);\n",
-                                  cliDefaults(), &loc);
+    std::string err =
+        budgetError("linear_extrude(1) offset(r=1e9, $fn=1e6) square(1);\n", cliDefaults(), &loc);
     EXPECT_EQ(loc, "budget.scad:1:19");
     EXPECT_NE(err.find("geometry budget of " + std::to_string(kDefaultMaxGeometry)),
               std::string::npos)
@@ -52,8 +52,7 @@ TEST(GeometryBudget, OffsetPointsAreChargedBeforeClipperMakesThem) {
     // Fragments too fine for the arc tolerance to resolve: Clipper would step 2e17 times
     // round each corner. Refused at the offset() itself, before any point exists
     std::string loc;
-    std::string err =
-        budgetError("offset(r=1e12, $fn=1e9) square(1);\n", cliDefaults(), &loc);
+    std::string err = budgetError("offset(r=1e12, $fn=1e9) square(1);\n", cliDefaults(), &loc);
     EXPECT_EQ(loc, "budget.scad:1:1");
     EXPECT_EQ(err.rfind("offset(): about ", 0), 0u) << err;
     EXPECT_NE(err.find("points"), std::string::npos) << err;
@@ -62,8 +61,7 @@ TEST(GeometryBudget, OffsetPointsAreChargedBeforeClipperMakesThem) {
 TEST(GeometryBudget, ProjectionOfAFineSphereEndsInALocatedError) {
     // 2,000 x 1,000 fragments: two million faces whose shadows Clipper would unite
     std::string loc;
-    std::string err =
-        budgetError("projection() sphere(10, $fn=2000);\n", cliDefaults(), &loc);
+    std::string err = budgetError("projection() sphere(10, $fn=2000);\n", cliDefaults(), &loc);
     EXPECT_EQ(loc, "budget.scad:1:1");
     EXPECT_EQ(err.rfind("projection(): about 4e+12 face pairs", 0), 0u) << err;
     EXPECT_NE(err.find("--max-geometry"), std::string::npos) << err;

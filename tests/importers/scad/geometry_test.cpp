@@ -346,10 +346,12 @@ TEST(Modifiers, RootReplacesTheSceneWithoutItsParents) {
 TEST(SkippedModules, WarnAndLeaveAnEmptyGroup) {
     // 3D formats import() does not read (OpenSCAD 2021.01 reads AMF and 3MF)
     for (const char *ext : {"amf", "3mf"}) {
-        Imported r = importText(std::string("difference() { import(\"part.") + ext + "\"); sphere(); }");
+        Imported r =
+            importText(std::string("difference() { import(\"part.") + ext + "\"); sphere(); }");
         EXPECT_EQ(r.scene.stats.skippedModules, 1) << ext;
         Diagnostic w = r.warning("not supported");
-        EXPECT_EQ(w.message, std::string("import of .") + ext + " files is not supported yet; skipped");
+        EXPECT_EQ(w.message,
+                  std::string("import of .") + ext + " files is not supported yet; skipped");
         EXPECT_EQ(w.loc.col, 16) << ext;
         const ir::Node &diff = top(r);
         ASSERT_EQ(diff.children.size(), 2u) << ext;
@@ -361,10 +363,12 @@ TEST(SkippedModules, WarnAndLeaveAnEmptyGroup) {
 TEST(SkippedModules, NoWarningInsideBackgroundOrDisabledParts) {
     // Both are left out of the scene, so nothing is lost; `%` is still evaluated (its echo
     // prints, as in OpenSCAD), `*` is not
-    Imported r = importText("%hull() cube(); %translate([1, 0, 0]) { import(\"x.amf\"); echo(\"bg\"); }\n"
-                            "*minkowski() cube(); *echo(\"off\"); %import(\"part.3mf\");\n"
-                            "%import(); import(\"part.amf\");");
-    EXPECT_EQ(r.warnings(), (std::vector<std::string>{"import of .amf files is not supported yet; skipped"}));
+    Imported r = importText(
+        "%hull() cube(); %translate([1, 0, 0]) { import(\"x.amf\"); echo(\"bg\"); }\n"
+        "*minkowski() cube(); *echo(\"off\"); %import(\"part.3mf\");\n"
+        "%import(); import(\"part.amf\");");
+    EXPECT_EQ(r.warnings(),
+              (std::vector<std::string>{"import of .amf files is not supported yet; skipped"}));
     EXPECT_EQ(r.echoes(), (std::vector<std::string>{"\"bg\""}));
     EXPECT_EQ(r.scene.stats.skippedModules, 1);
     EXPECT_EQ(r.scene.stats.backgroundParts, 4);

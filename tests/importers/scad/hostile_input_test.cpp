@@ -9,8 +9,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "importers/scad/lang/evaluator.h"
 #include "importers/scad/formats/surface.h"
+#include "importers/scad/lang/evaluator.h"
 #include "importers/scad/test_support.h"
 
 namespace rt::scad::test {
@@ -98,8 +98,8 @@ TEST(Hostile, StatementChainsAreTooDeep) {
 }
 
 TEST(Hostile, ChainsWithinTheNestingLimitStillWork) {
-    EXPECT_NO_THROW(importText("x = 1" + repeat("+1", 5000) + "; a = [[1]]; y = a" +
-                               repeat("[0]", 2) + ";\n"));
+    EXPECT_NO_THROW(
+        importText("x = 1" + repeat("+1", 5000) + "; a = [[1]]; y = a" + repeat("[0]", 2) + ";\n"));
 }
 
 TEST(Hostile, DeepSceneTreesAreALocatedError) {
@@ -141,7 +141,8 @@ TEST(Hostile, TheElementCapIsAnOption) {
         importText(src, kFile, low);
         ADD_FAILURE() << "expected the element cap";
     } catch (const EvalError &e) {
-        EXPECT_NE(std::string(e.what()).find("more than 5000 values"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("more than 5000 values"), std::string::npos)
+            << e.what();
         EXPECT_NE(std::string(e.what()).find("--max-elements"), std::string::npos) << e.what();
         EXPECT_EQ(e.loc().line, 1);
     }
@@ -153,7 +154,8 @@ TEST(Hostile, TheElementCapIsAnOption) {
         importText(tower, kFile, low);
         ADD_FAILURE() << "expected the comparison cap";
     } catch (const EvalError &e) {
-        EXPECT_NE(std::string(e.what()).find("comparison too large"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("comparison too large"), std::string::npos)
+            << e.what();
         EXPECT_NE(std::string(e.what()).find("--max-elements"), std::string::npos) << e.what();
         EXPECT_EQ(e.loc().line, 2);
     }
@@ -196,7 +198,8 @@ EvalLimits smallBudget() {
 
 TEST(Hostile, ArithmeticOnHugeSharedVectorsStops) {
     // Element-wise operations expand the sharing: the element budget stops them
-    for (const char *op : {"x = t(60) + t(60);", "x = -t(60);", "x = t(60) * 2;", "x = t(60) / 2;"}) {
+    for (const char *op :
+         {"x = t(60) + t(60);", "x = -t(60);", "x = t(60) * 2;", "x = t(60) / 2;"}) {
         EvalError e = errorWithLimits(kTower + op + "\n", smallBudget(), "too many elements");
         EXPECT_EQ(e.loc().line, 2) << op;
     }
@@ -264,8 +267,8 @@ TEST(Hostile, RandsCountsAndBoundsThatAreNotFinite) {
 /// A fresh folder for the running test.
 std::string testDir() {
     const auto *info = ::testing::UnitTest::GetInstance()->current_test_info();
-    fs::path p = fs::temp_directory_path() / ("scadray_hostile_" + std::to_string(getpid())) /
-                 info->name();
+    fs::path p =
+        fs::temp_directory_path() / ("scadray_hostile_" + std::to_string(getpid())) / info->name();
     fs::remove_all(p);
     fs::create_directories(p);
     return p.string();
@@ -333,11 +336,11 @@ TEST(Hostile, TwoDimensionalFilesAndHeightMapsMustBeRegularFiles) {
           "surface(file=\"zero.png\");", "surface(file=\"/dev/zero\");",
           "linear_extrude(1) import(\"pipe.svg\");", "linear_extrude(1) import(\"zero.svg\");",
           "linear_extrude(1) import(\"pipe.dxf\");", "linear_extrude(1) import(\"zero.dxf\");",
-          "x = dxf_dim(file=\"pipe.dxf\", name=\"a\");",
-          "x = dxf_cross(file=\"zero.dxf\");", "linear_extrude(file=\"pipe.dxf\", height=1);"}) {
+          "x = dxf_dim(file=\"pipe.dxf\", name=\"a\");", "x = dxf_cross(file=\"zero.dxf\");",
+          "linear_extrude(file=\"pipe.dxf\", height=1);"}) {
         SCOPED_TRACE(src);
-        EvalError e = errorOf<EvalError>(std::string("cube();\n") + src + "\n",
-                                         "not a regular file", main);
+        EvalError e =
+            errorOf<EvalError>(std::string("cube();\n") + src + "\n", "not a regular file", main);
         EXPECT_EQ(e.loc().line, 2);
     }
     // A height map past the reader's cap is refused before it is read
@@ -371,9 +374,7 @@ TEST(Hostile, FifosDevicesAndFoldersAreRefusedWithoutBlocking) {
 TEST(Hostile, HugeSourceFilesAreRefusedBeforeReading) {
     std::string dir = testDir();
     std::string big = dir + "/big.scad";
-    {
-        std::ofstream out(big);
-    }
+    { std::ofstream out(big); }
     // Sparse: no disk space and nothing read
     ASSERT_EQ(truncate(big.c_str(), static_cast<off_t>(kMaxSourceBytes + 1)), 0);
     DiagnosticSink diag;
@@ -384,8 +385,8 @@ TEST(Hostile, HugeSourceFilesAreRefusedBeforeReading) {
         EXPECT_NE(std::string(e.what()).find("is too large: 268435457 bytes"), std::string::npos)
             << e.what();
     }
-    ParseError e = errorOf<ParseError>("cube();\ninclude <big.scad>\n", "is too large",
-                                       dir + "/main.scad");
+    ParseError e =
+        errorOf<ParseError>("cube();\ninclude <big.scad>\n", "is too large", dir + "/main.scad");
     EXPECT_EQ(e.loc().toString(), dir + "/main.scad:2:1");
 }
 

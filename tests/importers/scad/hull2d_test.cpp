@@ -58,8 +58,9 @@ TEST(ScadHull2dGeometry, ConvexClipKeepsTheCommonPart) {
 }
 
 TEST(ScadHull2d, CircleAndTranslatedSquareExtrudeToOnePrism) {
-    Imported r = importText("linear_extrude(2) hull() { circle(5); translate([10, 0]) "
-                            "square(3); }");
+    Imported r = importText(
+        "linear_extrude(2) hull() { circle(5); translate([10, 0]) "
+        "square(3); }");
     EXPECT_TRUE(r.warnings().empty()) << r.warnings().front();
     const ir::PolytopePrim &p = onlyPolytope(r);
     // The default circle is a 16-gon, so its top and bottom points are vertices
@@ -80,8 +81,9 @@ TEST(ScadHull2d, TopLevelHullIsDrawnAsAPlate) {
 TEST(ScadHull2d, TransformsToEachLeafAndNestedHulls) {
     // rotate(90) puts the 2x1 square at x in [-1, 0], y in [0, 2]; the inner hull of the
     // scaled square spans [5, 7] x [0, 1]. The hull: (-1,0) (7,0) (7,1) (0,2) (-1,2).
-    Imported r = importText("linear_extrude(1) hull() { rotate(90) square([2, 1]); "
-                            "hull() { translate([5, 0]) scale([2, 1]) square(1); } }");
+    Imported r = importText(
+        "linear_extrude(1) hull() { rotate(90) square([2, 1]); "
+        "hull() { translate([5, 0]) scale([2, 1]) square(1); } }");
     EXPECT_TRUE(r.warnings().empty()) << r.warnings().front();
     const ir::PolytopePrim &p = onlyPolytope(r);
     expectBounds(p, Vec3(-1, 0, 0), Vec3(7, 2, 1));
@@ -91,8 +93,9 @@ TEST(ScadHull2d, TransformsToEachLeafAndNestedHulls) {
 TEST(ScadHull2d, HullWithoutAreaIsLeftOutWithALocatedWarning) {
     Imported r = importText("cube();\nlinear_extrude(1)\n  hull() polygon([[0,0],[1,1],[2,2]]);");
     Diagnostic d = r.warning("hull():");
-    EXPECT_EQ(d.message, "hull(): the children's 3 2D points are collinear, so the hull has no "
-                         "area; left out");
+    EXPECT_EQ(d.message,
+              "hull(): the children's 3 2D points are collinear, so the hull has no "
+              "area; left out");
     EXPECT_EQ(d.loc.line, 3);
     EXPECT_EQ(d.loc.col, 3);
     EXPECT_EQ(primitives(*r.scene.root).size(), 1u);  // the cube only
@@ -104,8 +107,9 @@ TEST(ScadHull2d, HullWithoutAreaIsLeftOutWithALocatedWarning) {
 
 TEST(ScadHull2d, FirstChildDecidesTheDimension) {
     // 2D first: the cube is ignored, with OpenSCAD's warnings at the cube's call
-    Imported r = importText("linear_extrude(1) hull() {\n  circle(1, $fn=4);\n  translate([10, 0])"
-                            "\n    cube(3);\n}");
+    Imported r = importText(
+        "linear_extrude(1) hull() {\n  circle(1, $fn=4);\n  translate([10, 0])"
+        "\n    cube(3);\n}");
     EXPECT_EQ(r.warning("Mixing 2D and 3D objects is not supported").loc.line, 3);
     EXPECT_EQ(r.warning("Ignoring 3D child object for 2D operation").loc.line, 3);
     expectBounds(onlyPolytope(r), Vec3(-1, -1, 0), Vec3(1, 1, 1));
@@ -118,8 +122,9 @@ TEST(ScadHull2d, FirstChildDecidesTheDimension) {
 
 TEST(ScadHull2d, ExactDifferencesAndIntersectionsNeedNoWarning) {
     // The hole misses the square's corners; the intersection of two squares is Clipper's
-    Imported r = importText("linear_extrude(1) hull() difference() { square(4); "
-                            "translate([2, 2]) circle(1); }");
+    Imported r = importText(
+        "linear_extrude(1) hull() difference() { square(4); "
+        "translate([2, 2]) circle(1); }");
     EXPECT_TRUE(r.warnings().empty()) << r.warnings().front();
     expectBounds(onlyPolytope(r), Vec3(0, 0, 0), Vec3(4, 4, 1));
     r = importText("linear_extrude(1) hull() intersection() { square(4); rotate(45) square(4); }");
@@ -131,14 +136,16 @@ TEST(ScadHull2d, ExactDifferencesAndIntersectionsNeedNoWarning) {
 TEST(ScadHull2d, DifferencesAndIntersectionsAreEvaluatedExactly) {
     // The difference cuts a corner: the hull is that of the L left over (Clipper evaluates
     // it as OpenSCAD does), no warning
-    Imported r = importText("linear_extrude(1) hull() {\n  difference() { square(4); "
-                            "translate([-1, -1]) square(2); }\n}");
+    Imported r = importText(
+        "linear_extrude(1) hull() {\n  difference() { square(4); "
+        "translate([-1, -1]) square(2); }\n}");
     EXPECT_TRUE(r.warnings().empty()) << r.warnings().front();
     const ir::PolytopePrim &p = onlyPolytope(r);
     EXPECT_EQ(p.vertices.size(), 10u);  // (1,0) (4,0) (4,4) (0,4) (0,1) at both ends
     // A non-convex operand: the hull of the true intersection, inside the square
-    r = importText("linear_extrude(1) hull() intersection() {\n  polygon([[0,0],[4,0],[4,4],"
-                   "[2,1],[0,4]]);\n  square(4);\n}");
+    r = importText(
+        "linear_extrude(1) hull() intersection() {\n  polygon([[0,0],[4,0],[4,4],"
+        "[2,1],[0,4]]);\n  square(4);\n}");
     EXPECT_TRUE(r.warnings().empty()) << r.warnings().front();
     expectBounds(onlyPolytope(r), Vec3(0, 0, 0), Vec3(4, 4, 1));
     EXPECT_EQ(onlyPolytope(r).vertices.size(), 8u);  // the dent at (2, 1) is not a corner

@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include "core/meshing/facets.h"
 #include "core/ir/material.h"
+#include "core/meshing/facets.h"
 #include "importers/scad/test_support.h"
 
 namespace rt::scad::test {
@@ -49,8 +49,9 @@ TEST(ScadHull, PlacedUnderItsOwnTransformAndColouredByItsContext) {
 }
 
 TEST(ScadHull, NestedHullsAndTessellationFromDollarVariables) {
-    Imported r = importText("hull($fn = 6) { hull() { sphere(2); } translate([0, 0, 5]) "
-                            "cylinder(r = 1, h = 1); }");
+    Imported r = importText(
+        "hull($fn = 6) { hull() { sphere(2); } translate([0, 0, 5]) "
+        "cylinder(r = 1, h = 1); }");
     const ir::PolytopePrim &p = onlyPolytope(r);
     // The $fn of hull() reaches its children: a hexagonal sphere (3 rings of 6) and cylinder.
     // The cylinder's lower ring lies on the sides between the sphere's top ring and its top
@@ -71,21 +72,24 @@ TEST(ScadHull, FacetsModeLeavesHullsAlone) {
 }
 
 TEST(ScadHull, FlatHullsAreLeftOutWithALocatedWarning) {
-    Imported r = importText("cube();\n  hull() { translate([0, 0, 1]) cube([1, 1, 0]); "
-                            "polyhedron([[0,0,0],[1,0,0],[0,1,0]], [[0,1,2]]); }");
+    Imported r = importText(
+        "cube();\n  hull() { translate([0, 0, 1]) cube([1, 1, 0]); "
+        "polyhedron([[0,0,0],[1,0,0],[0,1,0]], [[0,1,2]]); }");
     Diagnostic w = r.warning("hull()");
     EXPECT_EQ(w.loc.line, 2);
     EXPECT_EQ(w.loc.col, 3);
     // cube([1,1,0]) is empty already; the triangle alone is flat
-    EXPECT_TRUE(r.hasWarning("hull(): the children's 3 points are coplanar, so the hull has no "
-                             "volume; left out"));
+    EXPECT_TRUE(
+        r.hasWarning("hull(): the children's 3 points are coplanar, so the hull has no "
+                     "volume; left out"));
     EXPECT_EQ(primitives(*r.scene.root).size(), 1u);
 }
 
 TEST(ScadHull, FlattenedChildrenStillGivePoints) {
     // scale([1, 1, 0]) flattens the cube to a square, whose corners join the hull (a pyramid)
-    Imported r = importText("hull() { scale([1, 1, 0]) cube(2, center = true); "
-                            "translate([0, 0, 3]) cube(0.001, center = true); }");
+    Imported r = importText(
+        "hull() { scale([1, 1, 0]) cube(2, center = true); "
+        "translate([0, 0, 3]) cube(0.001, center = true); }");
     const ir::PolytopePrim &p = onlyPolytope(r);
     EXPECT_EQ(boundsOf(p).min, Vec3(-1, -1, 0));
     EXPECT_FALSE(r.hasWarning("singular"));
@@ -104,9 +108,10 @@ TEST(ScadHull, ApproximatedDifferencesAndTwoDimensionalChildrenAreNamed) {
 }
 
 TEST(ScadHull, ExactDifferencesAndIntersectionsNeedNoWarning) {
-    Imported r = importText("hull() { difference() { cube(4); translate([1, 1, -1]) "
-                            "cylinder(r = 1, h = 6); } intersection() { sphere(3, $fn = 8); "
-                            "cube(2); } }");
+    Imported r = importText(
+        "hull() { difference() { cube(4); translate([1, 1, -1]) "
+        "cylinder(r = 1, h = 6); } intersection() { sphere(3, $fn = 8); "
+        "cube(2); } }");
     onlyPolytope(r);
     EXPECT_TRUE(r.warnings().empty()) << r.warnings().front();
 }

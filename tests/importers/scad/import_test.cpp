@@ -107,8 +107,8 @@ TEST(Import, MissingFileIsAnErrorAtTheCall) {
 TEST(Import, NoFileIsEmptyGeometryWithAWarning) {
     // OpenSCAD: "Unsupported file format while trying to import file ''", then goes on; the
     // empty node stays a difference()'s minuend
-    for (const char *call : {"import()", "import(file = undef)", "import(\"\")", "import(5)",
-                             "import(\"noext\")"}) {
+    for (const char *call :
+         {"import()", "import(file = undef)", "import(\"\")", "import(5)", "import(\"noext\")"}) {
         Imported r = importText(std::string("difference() {\n  ") + call + "; cube(); }");
         ASSERT_EQ(r.warnings().size(), 1u) << call;
         Diagnostic w = r.warning("unsupported file format");
@@ -242,8 +242,9 @@ TEST(Import, OldModuleNamesImportWithOpenScadsDeprecation) {
     std::string dir = testDir();
     writeFile(dir + "/a.stl", binaryStl(boxTriangles({0, 0, 0}, {1, 1, 1}), "x"));
     writeFile(dir + "/b.off", kUnitCubeOff);
-    writeFile(dir + "/c.dxf", "0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\n0\n90\n3\n70\n1\n"
-                              "10\n0\n20\n0\n10\n2\n20\n0\n10\n0\n20\n2\n0\nENDSEC\n0\nEOF\n");
+    writeFile(dir + "/c.dxf",
+              "0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\n0\n90\n3\n70\n1\n"
+              "10\n0\n20\n0\n10\n2\n20\n0\n10\n0\n20\n2\n0\nENDSEC\n0\nEOF\n");
     std::string main = writeFile(dir + "/main.scad",
                                  "import_stl(\"a.stl\");\nimport_off(\"b.off\");\n"
                                  "linear_extrude(1) import_dxf(\"c.dxf\");\n");

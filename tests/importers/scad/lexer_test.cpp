@@ -156,19 +156,28 @@ TEST(Lexer, StrayCharacterIsLocatedError) {
 TEST(Lexer, NoBreakSpaceIsWhiteSpaceBetweenTokens) {
     // UTF-8 C2 A0, a lone Latin-1 A0, runs of both, and (as lexer.l's byte class has it) a
     // lone C2
-    auto t = lex("x\xC2\xA0=\xA0" "1\xC2\xA0\xA0\xC2\xA0+\xC2" "2;");
-    EXPECT_EQ(kinds(t), (std::vector<TokenKind>{TokenKind::Identifier, TokenKind::Assign,
-                                                TokenKind::Number, TokenKind::Plus,
-                                                TokenKind::Number, TokenKind::Semicolon,
-                                                TokenKind::End}));
+    auto t =
+        lex("x\xC2\xA0=\xA0"
+            "1\xC2\xA0\xA0\xC2\xA0+\xC2"
+            "2;");
+    EXPECT_EQ(kinds(t),
+              (std::vector<TokenKind>{TokenKind::Identifier, TokenKind::Assign, TokenKind::Number,
+                                      TokenKind::Plus, TokenKind::Number, TokenKind::Semicolon,
+                                      TokenKind::End}));
     // Columns count bytes, as OpenSCAD's do
     EXPECT_EQ(t[1].loc.col, 4);
     EXPECT_EQ(t[2].loc.col, 6);
 }
 
 TEST(Lexer, NoBreakSpaceInsideAStringIsKept) {
-    auto t = lex("\"a\xC2\xA0" "b\xA0" "c\"");
-    EXPECT_EQ(t[0].text, "a\xC2\xA0" "b\xA0" "c");
+    auto t =
+        lex("\"a\xC2\xA0"
+            "b\xA0"
+            "c\"");
+    EXPECT_EQ(t[0].text,
+              "a\xC2\xA0"
+              "b\xA0"
+              "c");
 }
 
 TEST(Lexer, NoBreakSpaceStartingALongerUtf8RunIsAnError) {

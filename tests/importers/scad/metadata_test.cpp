@@ -129,7 +129,8 @@ TEST(Lights, PositionFollowsEnclosingTransforms) {
 TEST(Lights, AreaLightGridAxesAndFlags) {
     Imported r = importText(
         kUse +
-        "translate([0, 0, 1]) rotate([0, 0, 90]) area_light(position = [1, 0, 5], axis1 = [2, 0, 0],\n"
+        "translate([0, 0, 1]) rotate([0, 0, 90]) area_light(position = [1, 0, 5], axis1 = [2, 0, "
+        "0],\n"
         "    axis2 = [0, 3, 0], samples = [5, 3], adaptive = 2, jitter = true, circular = true);\n"
         "area_light();");
     ASSERT_EQ(r.scene.lights.size(), 2u);
@@ -167,10 +168,11 @@ TEST(Lights, BadAreaLightArgumentsWarnOrFail) {
 }
 
 TEST(Materials, GlossyFrostedAndTheirLobe) {
-    Imported r = importText(kUse +
-                            "material(reflection = 0.5, glossy = 4, frosted = 2, blur_samples = 16,"
-                            " blur_lobe = \"phong\") cube();\n"
-                            "material(glossy = 100, blur_samples = 0, blur_lobe = \"gauss\") sphere();");
+    Imported r =
+        importText(kUse +
+                   "material(reflection = 0.5, glossy = 4, frosted = 2, blur_samples = 16,"
+                   " blur_lobe = \"phong\") cube();\n"
+                   "material(glossy = 100, blur_samples = 0, blur_lobe = \"gauss\") sphere();");
     ir::Material m = materialOf(r, 0);
     EXPECT_EQ(m.finish.glossy, 4);
     EXPECT_EQ(m.finish.frosted, 2);

@@ -75,8 +75,9 @@ TEST(Offset, ThreeDChildrenAreIgnoredWithoutTheMixingWarning) {
     EXPECT_TRUE(primitives(*r.scene.root).empty());
     // Inside a union the mixing warning comes first, as applyToChildren's isValidDim gives it
     r = importText("linear_extrude(1) offset(r=1) union() { square(1); cube(1); }");
-    EXPECT_EQ(r.warnings(), (std::vector<std::string>{"Mixing 2D and 3D objects is not supported",
-                                                      "Ignoring 3D child object for 2D operation"}));
+    EXPECT_EQ(r.warnings(),
+              (std::vector<std::string>{"Mixing 2D and 3D objects is not supported",
+                                        "Ignoring 3D child object for 2D operation"}));
 }
 
 TEST(Offset, NegativeOffsetCanRemoveEverything) {
@@ -113,8 +114,9 @@ TEST(SelfIntersectingPolygon, IsFilledEvenOddWithoutAWarning) {
     // The pentagram: the middle has winding 2, so it is empty. Clipper gives two outlines
     // touching at the crossings (9 and 6 points, OffsetCrossCheck compares them with
     // OpenSCAD's); split strictly simple they are the five points, five exact prisms
-    r = importText("linear_extrude(1) polygon([for (i = [0:4]) 5 * [cos(90 + 144 * i), "
-                   "sin(90 + 144 * i)]]);");
+    r = importText(
+        "linear_extrude(1) polygon([for (i = [0:4]) 5 * [cos(90 + 144 * i), "
+        "sin(90 + 144 * i)]]);");
     EXPECT_TRUE(r.warnings().empty()) << r.warnings().front();
     auto prims = primitives(*r.scene.root);
     EXPECT_EQ(prims.size(), 5u);
@@ -125,8 +127,9 @@ TEST(SelfIntersectingPolygon, IsFilledEvenOddWithoutAWarning) {
         EXPECT_LT(prism->mesh, 0);
     }
     // In CSG the pieces must be closed solids (an outline touching itself is split)
-    r = importText("union() { linear_extrude(1) polygon([for (i = [0:4]) 5 * [cos(90 + 144 * "
-                   "i), sin(90 + 144 * i)]]); cube(1); }");
+    r = importText(
+        "union() { linear_extrude(1) polygon([for (i = [0:4]) 5 * [cos(90 + 144 * "
+        "i), sin(90 + 144 * i)]]); cube(1); }");
     EXPECT_TRUE(r.warnings().empty()) << r.warnings().front();
 }
 

@@ -191,9 +191,12 @@ void expectSameShape(const ir::PrimShape &a, const ir::PrimShape &b, const std::
         // Outlines computed from 3D geometry (projection()) carry the .csg's 6-digit rounding
         // of the matrices above them, relative to the geometry's extent, plus Clipper's grid
         double extent = 1;
-        for (const auto &pt : p->outline) extent = std::max({extent, std::fabs(pt.x), std::fabs(pt.y)});
+        for (const auto &pt : p->outline)
+            extent = std::max({extent, std::fabs(pt.x), std::fabs(pt.y)});
         double tolerance = 4e-6 * extent + 2.0 / 65536;
-        auto close = [&](double u, double v) { return near(u, v) || std::fabs(u - v) <= tolerance; };
+        auto close = [&](double u, double v) {
+            return near(u, v) || std::fabs(u - v) <= tolerance;
+        };
         for (size_t i = 0; i < p->outline.size(); ++i)
             EXPECT_TRUE(close(p->outline[i].x, q.outline[i].x) &&
                         close(p->outline[i].y, q.outline[i].y))
@@ -402,8 +405,12 @@ TEST(OpenScadCrossCheck, LanguageGapProbesAgree) {
         {"x = [for (i = 0; ; i = i + 1) i];"},
         {"x = [for (i = 0,; i < 1; i = i + 1) i];"},
         // No-break space between tokens, not inside a name or number
-        {"echo(\xC2\xA0" "1\xA0+\xC2\xA0\xA0" "2, \"a\xC2\xA0" "b\");"},
-        {"echo(1\xC2\xA0" "2);"},
+        {"echo(\xC2\xA0"
+         "1\xA0+\xC2\xA0\xA0"
+         "2, \"a\xC2\xA0"
+         "b\");"},
+        {"echo(1\xC2\xA0"
+         "2);"},
         {"echo(\xC2\xA2);"},
         // Deprecated modules
         {"assign(a = 1, b = 2) echo(a, b); for (i = [0:1]) assign(c = i) echo(c);"},
@@ -479,14 +486,14 @@ TEST(OpenScadCrossCheck, FacetedPrimitivesHaveOpenScadsVertices) {
     // must be ours, one for one
     const char *cases[] = {
         "sphere(r=2, $fn=6);",
-        "sphere(1);",                                   // defaults: 5 fragments, 3 rings
-        "sphere(r=10);",                                // 30 fragments
-        "sphere(r=3, $fn=7);",                          // odd: no equator ring
-        "cylinder(h=3, r1=2, r2=0, $fn=5);",            // cone: one apex
+        "sphere(1);",                         // defaults: 5 fragments, 3 rings
+        "sphere(r=10);",                      // 30 fragments
+        "sphere(r=3, $fn=7);",                // odd: no equator ring
+        "cylinder(h=3, r1=2, r2=0, $fn=5);",  // cone: one apex
         "cylinder(h=3, r1=0, r2=1.5, $fn=4, center=true);",
         "cylinder(h=2, r1=1, r2=2, $fn=7, center=true);",
         "cylinder(h=1, r=3, $fa=30, $fs=1);",
-        "cylinder(h=4, d=5, $fn=6.8);",                 // $fn truncates in 2021.01
+        "cylinder(h=4, d=5, $fn=6.8);",  // $fn truncates in 2021.01
     };
     std::string tmp = tempDir();
     for (const char *src : cases) {

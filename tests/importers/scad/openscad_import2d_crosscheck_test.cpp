@@ -36,8 +36,7 @@ void expectSamePoints(const std::string &src, bool flatten) {
     ASSERT_FALSE(theirs.positions.empty());
     Imported ours = importText(src);
     // The file forms of the extrusions are deprecated: OpenSCAD says so too
-    for (const std::string &w : ours.warnings())
-        EXPECT_EQ(w.rfind("DEPRECATED: ", 0), 0u) << w;
+    for (const std::string &w : ours.warnings()) EXPECT_EQ(w.rfind("DEPRECATED: ", 0), 0u) << w;
     meshing::applyFacets(ours.scene, ir::FacetMode::OpenScad, ours.diag);
     std::vector<Vec3> mine = worldPoints(ours.scene), ref = theirs.positions;
     if (flatten) {
@@ -107,8 +106,7 @@ void expectSameSurface(const std::string &src, bool warns = false) {
     EXPECT_EQ(ours.warnings().empty(), !warns);
     auto prims = primitives(*ours.scene.root);
     ASSERT_EQ(prims.size(), 1u);
-    const ir::Mesh &mesh =
-        *ours.scene.meshes.at(std::get<ir::MeshPrim>(prims[0].node->shape).mesh);
+    const ir::Mesh &mesh = *ours.scene.meshes.at(std::get<ir::MeshPrim>(prims[0].node->shape).mesh);
     // Ours fans the bottom from its centre; OpenSCAD's tessellation of it adds no point
     std::vector<Vec3> mine;
     Bounds3 b = mesh.bounds();

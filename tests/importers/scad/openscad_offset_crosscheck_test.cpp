@@ -8,8 +8,8 @@
 #include <cmath>
 #include <filesystem>
 
-#include "core/meshing/facets.h"
 #include "core/ir/prism.h"
+#include "core/meshing/facets.h"
 #include "importers/scad/openscad_support.h"
 
 namespace rt::scad::test {
@@ -46,8 +46,6 @@ TEST_P(OffsetCrossCheck, PointsMatchOpenScad) {
     expectPointsCovered(mine, ref, "our point missing from OpenSCAD's:");
     expectPointsCovered(ref, mine, "OpenSCAD's point missing from ours:");
 }
-
-
 
 INSTANTIATE_TEST_SUITE_P(
     Clipper, OffsetCrossCheck,

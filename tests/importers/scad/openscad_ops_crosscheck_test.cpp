@@ -21,7 +21,8 @@ namespace fs = std::filesystem;
 constexpr double kGrid = 2e-5;
 
 fs::path scratchDir(const char *what) {
-    fs::path dir = fs::temp_directory_path() / (std::string("scadray_") + what + "_" + std::to_string(getpid()));
+    fs::path dir = fs::temp_directory_path() /
+                   (std::string("scadray_") + what + "_" + std::to_string(getpid()));
     fs::create_directories(dir);
     return dir;
 }
@@ -82,7 +83,8 @@ TEST(MinkowskiCrossCheck, ConvexSumsAreOpenScadsPolytope) {
     const char *cases[] = {
         "minkowski() { cube([10, 10, 2]); sphere(1, $fn=12); }",
         "minkowski() { cube([10, 10, 2], center=true); cylinder(r=2, h=1, $fn=16); }",
-        "minkowski() { cube(2); rotate([0, 0, 45]) cube(1); translate([3, 0, 0]) sphere(1, $fn=6); }",
+        "minkowski() { cube(2); rotate([0, 0, 45]) cube(1); translate([3, 0, 0]) sphere(1, $fn=6); "
+        "}",
         ("minkowski() { polyhedron([[0,0,0],[2,0,0],[0,2,0],[0,0,2]], "
          "[[0,1,2],[0,3,1],[0,2,3],[1,3,2]]); sphere(0.3, $fn=8); }"),  // one case on two lines
     };
@@ -98,7 +100,8 @@ TEST(MinkowskiCrossCheck, UnionsSumPartByPart) {
     if (!haveOpenScad()) GTEST_SKIP() << "openscad is not on PATH; cross-check skipped";
     // The sum of a union is the union of the parts' hulls: OpenSCAD's vertices are among ours,
     // and both span the same box
-    const char *src = "minkowski() { union() { cube(3); translate([5, 0, 0]) cube(2); } sphere(0.5, $fn=8); }";
+    const char *src =
+        "minkowski() { union() { cube(3); translate([5, 0, 0]) cube(2); } sphere(0.5, $fn=8); }";
     fs::path dir = scratchDir("minkowski_union");
     ir::Mesh theirs = openscadOff(src, dir);
     fs::remove_all(dir);
@@ -130,11 +133,14 @@ TEST(MinkowskiCrossCheck, NonConvexSumsSpanOpenScadsBox) {
         Bounds3 o;
         for (const auto &p : primitives(*ours.scene.root))
             if (const auto *poly = std::get_if<ir::PolytopePrim>(&p.node->shape))
-                for (const Vec3 &v : poly->vertices) o = unionBounds(o, p.worldFromObject.transformPoint(v));
+                for (const Vec3 &v : poly->vertices)
+                    o = unionBounds(o, p.worldFromObject.transformPoint(v));
         Bounds3 t = boundsOf(theirs.positions);
         for (int a = 0; a < 3; ++a) {  // OFF's 6 digits
-            EXPECT_NEAR(o.min[a], t.min[a], 1e-5 * std::max(1.0, std::abs(t.min[a]))) << "axis " << a;
-            EXPECT_NEAR(o.max[a], t.max[a], 1e-5 * std::max(1.0, std::abs(t.max[a]))) << "axis " << a;
+            EXPECT_NEAR(o.min[a], t.min[a], 1e-5 * std::max(1.0, std::abs(t.min[a])))
+                << "axis " << a;
+            EXPECT_NEAR(o.max[a], t.max[a], 1e-5 * std::max(1.0, std::abs(t.max[a])))
+                << "axis " << a;
         }
     }
     fs::remove_all(dir);
@@ -147,7 +153,8 @@ std::vector<std::pair<Vec3, Vec3>> prismEdges(const ir::Scene &scene) {
         const auto *prism = std::get_if<ir::PrismPrim>(&p.node->shape);
         if (!prism) continue;
         for (size_t i = 0; i < prism->outline.size(); ++i) {
-            const ir::Point2 &a = prism->outline[i], &b = prism->outline[(i + 1) % prism->outline.size()];
+            const ir::Point2 &a = prism->outline[i],
+                             &b = prism->outline[(i + 1) % prism->outline.size()];
             Vec3 wa = p.worldFromObject.transformPoint(Vec3(a.x, a.y, 0));
             Vec3 wb = p.worldFromObject.transformPoint(Vec3(b.x, b.y, 0));
             out.push_back({Vec3(wa.x, wa.y, 0), Vec3(wb.x, wb.y, 0)});
@@ -191,7 +198,8 @@ TEST_P(FlatCrossCheck, OutlinesMatchOpenScad) {
     for (const Vec3 &v : ref) {
         double best = kInfinity;
         for (const auto &e : edges) best = std::min(best, distanceToSegment(v, e.first, e.second));
-        EXPECT_LT(best, kGrid * std::max(1.0, length(v))) << "OpenSCAD's point off our outline: " << v.toString();
+        EXPECT_LT(best, kGrid * std::max(1.0, length(v)))
+            << "OpenSCAD's point off our outline: " << v.toString();
     }
 }
 

@@ -48,8 +48,7 @@ TEST(OpenScadRevolveCrossCheck, VerticesAndVolumeMatch) {
     }
     const RevolveCase tori[] = {
         {"rotate_extrude($fn=8) translate([2,0]) circle(0.5, $fn=8);", {circle}, 360, 8},
-        {"rotate_extrude(angle=135, $fn=8) translate([2,0]) circle(0.5, $fn=8);", {circle}, 135,
-         3},
+        {"rotate_extrude(angle=135, $fn=8) translate([2,0]) circle(0.5, $fn=8);", {circle}, 135, 3},
     };
     fs::path tmp = fs::temp_directory_path() / ("scadray_revolve_" + std::to_string(getpid()));
     fs::create_directories(tmp);

@@ -16,10 +16,10 @@
 #include <vector>
 
 #include "core/ir/diagnostics.h"
-#include "core/meshing/facets.h"
 #include "core/ir/mesh.h"
 #include "core/ir/prism.h"
 #include "core/math/float_util.h"
+#include "core/meshing/facets.h"
 #include "importers/mesh/mesh_reader.h"
 #include "importers/scad/test_support.h"
 
@@ -49,8 +49,8 @@ inline double polytopeVolume(const std::vector<Vec3> &verts,
 }
 
 /// Every point of `a` has one of `b` within OFF's rounding (`digits`, relative above 1).
-inline void expectCovered(const std::vector<Vec3> &a, const std::vector<Vec3> &b,
-                          const char *what, double digits = kOffDigits) {
+inline void expectCovered(const std::vector<Vec3> &a, const std::vector<Vec3> &b, const char *what,
+                          double digits = kOffDigits) {
     for (const Vec3 &v : a) {
         double best = kInfinity;
         for (const Vec3 &w : b) best = std::min(best, length(v - w));
@@ -166,9 +166,10 @@ inline std::vector<Vec3> distinctPoints(std::vector<Vec3> v, bool flatten) {
         return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
     };
     std::sort(v.begin(), v.end(), less);
-    v.erase(std::unique(v.begin(), v.end(),
-                        [&less](const Vec3 &a, const Vec3 &b) { return !less(a, b) && !less(b, a); }),
-            v.end());
+    v.erase(
+        std::unique(v.begin(), v.end(),
+                    [&less](const Vec3 &a, const Vec3 &b) { return !less(a, b) && !less(b, a); }),
+        v.end());
     return v;
 }
 

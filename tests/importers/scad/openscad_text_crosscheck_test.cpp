@@ -50,7 +50,8 @@ INSTANTIATE_TEST_SUITE_P(
     Text, TextCrossCheck,
     ::testing::Values(
         // Outlines with holes, curve segments from $fa/$fs and from $fn
-        Case{"linear_extrude(1) text(\"O\");"}, Case{"linear_extrude(1) text(\"B8\", size=4, $fn=40);"},
+        Case{"linear_extrude(1) text(\"O\");"},
+        Case{"linear_extrude(1) text(\"B8\", size=4, $fn=40);"},
         // $fn beyond int, and $fa = $fs = 0: 2 points a curve (x86's conversion of the count)
         Case{"linear_extrude(1) text(\"Se\", $fn=1e10);"},
         Case{"linear_extrude(1) text(\"Se\", $fa=0, $fs=0);"},

@@ -17,9 +17,11 @@ Bounds3 worldBounds(const Imported &r) {
     for (const auto &p : primitives(*r.scene.root)) {
         if (const auto *box = std::get_if<ir::BoxPrim>(&p.node->shape)) {
             for (int i = 0; i < 8; ++i)
-                b = unionBounds(b, p.worldFromObject.transformPoint(Bounds3(box->min, box->max).corner(i)));
+                b = unionBounds(
+                    b, p.worldFromObject.transformPoint(Bounds3(box->min, box->max).corner(i)));
         } else if (const auto *poly = std::get_if<ir::PolytopePrim>(&p.node->shape)) {
-            for (const Vec3 &v : poly->vertices) b = unionBounds(b, p.worldFromObject.transformPoint(v));
+            for (const Vec3 &v : poly->vertices)
+                b = unionBounds(b, p.worldFromObject.transformPoint(v));
         } else if (const auto *prism = std::get_if<ir::PrismPrim>(&p.node->shape)) {
             for (const auto &q : prism->outline)
                 b = unionBounds(b, p.worldFromObject.transformPoint(Vec3(q.x, q.y, 0)));

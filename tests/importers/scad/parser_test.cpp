@@ -119,9 +119,8 @@ TEST(ParserStatements, ModifiersIfElseAndChildBlocks) {
 
 TEST(ParserStatements, KeywordModulesAndTrailingCommas) {
     DiagnosticSink diag;
-    auto f =
-        parse("for (i = [0:2]) echo(i); let (a = 1) echo(a); assert(true); module m(a, b = 1,) {}",
-              diag);
+    auto f = parse(
+        "for (i = [0:2]) echo(i); let (a = 1) echo(a); assert(true); module m(a, b = 1,) {}", diag);
     ASSERT_EQ(f->top.instantiations.size(), 3u);
     EXPECT_EQ(f->top.instantiations[0]->name.str(), "for");
     EXPECT_EQ(f->top.instantiations[0]->args.size(), 1u);
@@ -143,8 +142,9 @@ TEST(ParserCommas, EmptyElementsAreSkippedWhere2021Allows) {
     EXPECT_EQ(test::echoOf("module m(a,,b,) echo(a, b); m(1,, 2);"), "1, 2");
     EXPECT_EQ(test::echoOf("echo(let(a = 1,, b = 2) a + b, [let(,a = 1) for (i = [0,,a]) i]);"),
               "3, [0, 1]");
-    test::Imported r = test::importText("cylinder(h=2, r1=2,, $fn=50); for (i = [0:1],, j = [2]) "
-                                        "echo(i, j); let(a = 1,, b = 2) echo(a, b);");
+    test::Imported r = test::importText(
+        "cylinder(h=2, r1=2,, $fn=50); for (i = [0:1],, j = [2]) "
+        "echo(i, j); let(a = 1,, b = 2) echo(a, b);");
     EXPECT_EQ(r.echoes(), (std::vector<std::string>{"0, 2", "1, 2", "1, 2"}));
     EXPECT_EQ(r.scene.root->primitiveCount(), 1u);
 }

@@ -12,8 +12,7 @@ namespace {
 
 bool hasError(const Imported &r, const std::string &part) {
     for (const auto &d : r.diag.all())
-        if (d.severity == Severity::Error && d.message.find(part) != std::string::npos)
-            return true;
+        if (d.severity == Severity::Error && d.message.find(part) != std::string::npos) return true;
     return false;
 }
 
@@ -106,8 +105,9 @@ TEST(Revolve, NegativeSideIsMirroredAndTurned) {
 TEST(Revolve, ProfileAcrossTheAxisIsOpenScadsError) {
     Imported r = importText("rotate_extrude() translate([-1, 0]) square([2, 1]);");
     EXPECT_TRUE(primitives(*r.scene.root).empty());
-    EXPECT_TRUE(hasError(r, "all points for rotate_extrude() must have the same X coordinate "
-                            "sign (range is -1.00 -> 1.00)"));
+    EXPECT_TRUE(hasError(r,
+                         "all points for rotate_extrude() must have the same X coordinate "
+                         "sign (range is -1.00 -> 1.00)"));
     // A circle centred on the axis crosses it
     r = importText("rotate_extrude() circle(1);");
     EXPECT_TRUE(primitives(*r.scene.root).empty());
@@ -166,8 +166,7 @@ TEST(Revolve, ProfileBelowOpenScadsGridIsRevolvedWithAWarning) {
     EXPECT_EQ(primitives(*r.scene.root).size(), 1u);
     EXPECT_TRUE(r.warnings().empty());
     // A profile with no area (one outline twice: even-odd) is empty, as in OpenSCAD, silently
-    r = importText(
-        "rotate_extrude() polygon([[1,0],[2,0],[2,1],[1,1]], [[0,1,2,3],[0,1,2,3]]);");
+    r = importText("rotate_extrude() polygon([[1,0],[2,0],[2,1],[1,1]], [[0,1,2,3],[0,1,2,3]]);");
     EXPECT_TRUE(primitives(*r.scene.root).empty());
     EXPECT_TRUE(r.warnings().empty());
 }

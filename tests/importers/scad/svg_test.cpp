@@ -72,8 +72,9 @@ TEST_F(Svg, ViewBoxScalesIntoThePage) {
 }
 
 TEST_F(Svg, CirclesHaveFortyPointsAndCurvesTwentySegments) {
-    svg::Drawing d = read("<circle cx=\"10\" cy=\"10\" r=\"5\"/>"
-                          "<path d=\"M0,0 C0,10 10,10 10,0 z\"/>");
+    svg::Drawing d = read(
+        "<circle cx=\"10\" cy=\"10\" r=\"5\"/>"
+        "<path d=\"M0,0 C0,10 10,10 10,0 z\"/>");
     ASSERT_EQ(d.shapes.size(), 2u);
     EXPECT_EQ(d.shapes[0][0].size(), 40u);
     EXPECT_EQ(d.shapes[1][0].size(), 1u + 20u + 1u);
@@ -92,8 +93,9 @@ TEST_F(Svg, PathNumbersFollowSvgsGrammar) {
 }
 
 TEST_F(Svg, OpenPathsAndLinesAreTheirStrokes) {
-    svg::Drawing d = read("<line x1=\"0\" y1=\"10\" x2=\"20\" y2=\"10\" stroke-width=\"4\" "
-                          "stroke-linecap=\"butt\"/>");
+    svg::Drawing d = read(
+        "<line x1=\"0\" y1=\"10\" x2=\"20\" y2=\"10\" stroke-width=\"4\" "
+        "stroke-linecap=\"butt\"/>");
     Vec2 lo, hi;
     bounds(d, lo, hi);
     EXPECT_NEAR(lo.x, 0, 1e-9);
@@ -106,8 +108,9 @@ TEST_F(Svg, OpenPathsAndLinesAreTheirStrokes) {
 }
 
 TEST_F(Svg, GroupTransformsCompose) {
-    svg::Drawing d = read("<g transform=\"translate(10,0)\"><rect transform=\"scale(2)\" "
-                          "x=\"1\" y=\"0\" width=\"1\" height=\"1\"/></g>");
+    svg::Drawing d = read(
+        "<g transform=\"translate(10,0)\"><rect transform=\"scale(2)\" "
+        "x=\"1\" y=\"0\" width=\"1\" height=\"1\"/></g>");
     Vec2 lo, hi;
     bounds(d, lo, hi);
     EXPECT_DOUBLE_EQ(lo.x, 12);
@@ -115,8 +118,9 @@ TEST_F(Svg, GroupTransformsCompose) {
 }
 
 TEST_F(Svg, TextAndUseAreLeftOutAndNamed) {
-    svg::Drawing d = read("<text>hi</text><use href=\"#a\"/><defs><rect width=\"1\" "
-                          "height=\"1\"/></defs>");
+    svg::Drawing d = read(
+        "<text>hi</text><use href=\"#a\"/><defs><rect width=\"1\" "
+        "height=\"1\"/></defs>");
     EXPECT_TRUE(d.shapes.empty());
     ASSERT_EQ(d.skipped.size(), 2u);
     EXPECT_EQ(d.skipped[0].first, "text");
@@ -125,14 +129,15 @@ TEST_F(Svg, TextAndUseAreLeftOutAndNamed) {
 
 TEST_F(Svg, StrokesBeyondClipperRangeAreErrors) {
     // Scaled for Clipper's integers, 1e92 leaves their range: its conversion was undefined
-    for (const char *body :
-         {"<path d=\"M1e92,45 L100,45\" style=\"stroke-width:2\"/>",
-          "<path d=\"M0,0 L1,0\" style=\"stroke-width:1e300\"/>"}) {
+    for (const char *body : {"<path d=\"M1e92,45 L100,45\" style=\"stroke-width:2\"/>",
+                             "<path d=\"M0,0 L1,0\" style=\"stroke-width:1e300\"/>"}) {
         SCOPED_TRACE(body);
         svg::Drawing d;
         std::string error;
-        std::string text = std::string("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"72\" "
-                                       "height=\"72\">") + body + "</svg>";
+        std::string text = std::string(
+                               "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"72\" "
+                               "height=\"72\">") +
+                           body + "</svg>";
         EXPECT_FALSE(svg::read(text, "big.svg", {}, d, error));
         EXPECT_NE(error.find("beyond the range of 2D geometry"), std::string::npos) << error;
     }

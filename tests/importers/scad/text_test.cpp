@@ -11,8 +11,8 @@
 
 #include "core/ir/diagnostics.h"
 #include "importers/scad/geometry2d/clipper2d.h"
-#include "importers/scad/openscad_support.h"
 #include "importers/scad/geometry2d/text_render.h"
+#include "importers/scad/openscad_support.h"
 #include "importers/scad/text_support.h"
 
 namespace rt::scad::test {
@@ -241,9 +241,10 @@ TEST(Text, BadInputWarnsWhereOpenScadIsSilentOrWarns) {
     EXPECT_TRUE(r.hasWarning("halign = true is not a string; OpenSCAD 2021.01 uses \"left\""));
     // A direction HarfBuzz reads by its first letter, or not at all
     r = importText("linear_extrude(1) text(\"A\", direction=\"rubbish\");");
-    EXPECT_EQ(r.warnings(), (std::vector<std::string>{
-                                "text(): direction = \"rubbish\" is not \"ltr\", \"rtl\", \"ttb\" or "
-                                "\"btt\"; OpenSCAD 2021.01 lays the text out rtl"}));
+    EXPECT_EQ(r.warnings(),
+              (std::vector<std::string>{
+                  "text(): direction = \"rubbish\" is not \"ltr\", \"rtl\", \"ttb\" or "
+                  "\"btt\"; OpenSCAD 2021.01 lays the text out rtl"}));
     r = importText("linear_extrude(1) text(\"A\", direction=\"foo\");");
     EXPECT_TRUE(r.hasWarning("OpenSCAD 2021.01 lays the text out ltr"));
     r = importText("linear_extrude(1) text(\"A\", direction=\"TTB\");");
@@ -284,15 +285,17 @@ TEST(Text, BadInputWarnsWhereOpenScadIsSilentOrWarns) {
     // A font that is not installed: fontconfig's best match, as OpenSCAD takes it silently;
     // generic names are not warned about
     r = importText("linear_extrude(1) text(\"A\", font=\"No Such Font 42\");");
-    EXPECT_TRUE(r.hasWarning("text(): font 'No Such Font 42' is not installed; fontconfig's best "
-                             "match, "));
+    EXPECT_TRUE(
+        r.hasWarning("text(): font 'No Such Font 42' is not installed; fontconfig's best "
+                     "match, "));
     EXPECT_EQ(r.warning("No Such Font").loc.col, 29);
     EXPECT_FALSE(primitives(*r.scene.root).empty());
     r = importText("text(\"A\", font=\":size=abc\");");
     EXPECT_TRUE(r.hasWarning("text(): font ':size=abc' is not a fontconfig pattern"));
     EXPECT_TRUE(primitives(*r.scene.root).empty());
-    r = importText("linear_extrude(1) text(\"A\", font=\"sans-serif\"); "
-                   "linear_extrude(1) text(\"A\", font=\"Liberation Serif:style=Bold\");");
+    r = importText(
+        "linear_extrude(1) text(\"A\", font=\"sans-serif\"); "
+        "linear_extrude(1) text(\"A\", font=\"Liberation Serif:style=Bold\");");
     EXPECT_TRUE(r.warnings().empty()) << r.warnings().front();
 
     // A huge $fn is refused before the points are made
@@ -313,7 +316,8 @@ TEST(Text, UsedFontFileIsFound) {
     fs::create_directories(dir);
     if (!writeRenamedFont("Scadraytsu", dir / "renamed.ttf")) {
         fs::remove_all(dir);
-        GTEST_SKIP() << kLiberationSans << " is missing (scripts/setup.sh installs fonts-liberation)";
+        GTEST_SKIP() << kLiberationSans
+                     << " is missing (scripts/setup.sh installs fonts-liberation)";
     }
     // Without use<> the family is not installed; with it the text is Liberation Sans' shape
     std::string scene = "linear_extrude(1) text(\"Ag\", font=\"Scadraytsu Sans\");";
