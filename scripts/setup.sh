@@ -16,6 +16,7 @@ packages=(
     # render --frames encodes the video with ffmpeg; its tests count the frames with ffprobe (same package)
     ffmpeg
     clang libclang-rt-14-dev
+    clang-format  # scripts/check_format.sh: the code stays as .clang-format says (CI)
     libembree-dev
     libjs-chart.js  # Chart.js, embedded into `scadray report` pages for the converge plots
     chromium  # the headless browser of the report's test (tests/integration/report_browser.sh)
