@@ -26,16 +26,6 @@
 
 namespace rt::scad {
 
-namespace {
-
-size_t countNodes(const ir::Node &n) {
-    size_t count = 1;
-    for (const auto &c : n.children) count += countNodes(*c);
-    return count;
-}
-
-}  // namespace
-
 /// OpenSCAD's lookup_radius: a numeric diameter wins over the radius.
 Value lookupRadius(Evaluator &ev, const Value &d, const Value &r, const char *dName,
                    const char *rName, const SourceLoc &loc) {
