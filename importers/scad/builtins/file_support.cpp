@@ -25,27 +25,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// A parameter OpenSCAD reads with toString(): undef is "", other values as str() shows them.
-std::string textOf(const Value &v) { return v.isUndef() ? std::string() : v.toString(false); }
-
-/// The bytes of a file that import(), dxf_dim() or dxf_cross() names, through the input reader.
-/// Nothing when it is missing, unreadable or a folder: OpenSCAD warns and goes on, and so does
-/// the caller. A FIFO, device or socket (which would block, or never end) or a file past
-/// `maxBytes` is a located error.
-std::optional<std::string> readNamedFile(const std::string &path, uint64_t maxBytes,
-                                         const std::string &who, const SourceLoc &loc) {
-    std::error_code ec;
-    if (path.empty() || fs::is_directory(path, ec)) return std::nullopt;
-    try {
-        return readInputFile(path, maxBytes);
-    } catch (const InputFileError &e) {
-        if (e.reason() == InputFileError::Reason::Missing ||
-            e.reason() == InputFileError::Reason::Unreadable)
-            return std::nullopt;
-        throw EvalError(loc, who + "(): " + e.what());
-    }
-}
-
 ir::NodePtr dxfShapeNode(Evaluator &ev, const std::string &path, const Dxf2dArgs &args,
                          const ModuleInstantiation &inst) {
     dxf::ReadOptions opts;
@@ -117,6 +96,22 @@ ir::NodePtr importSvg(Evaluator &ev, const std::string &path, const BoundArgs &a
 }
 
 }  // namespace
+
+std::string textOf(const Value &v) { return v.isUndef() ? std::string() : v.toString(false); }
+
+std::optional<std::string> readNamedFile(const std::string &path, uint64_t maxBytes,
+                                         const std::string &who, const SourceLoc &loc) {
+    std::error_code ec;
+    if (path.empty() || fs::is_directory(path, ec)) return std::nullopt;
+    try {
+        return readInputFile(path, maxBytes);
+    } catch (const InputFileError &e) {
+        if (e.reason() == InputFileError::Reason::Missing ||
+            e.reason() == InputFileError::Reason::Unreadable)
+            return std::nullopt;
+        throw EvalError(loc, who + "(): " + e.what());
+    }
+}
 
 std::string resolveImportPath(Evaluator &ev, const std::string &name, const SourceLoc &loc) {
     fs::path p(name);

@@ -2,6 +2,8 @@
 // How builtins find and read the files they name: import(), surface() and the DXF forms.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <string>
 
 #include "importers/scad/lang/evaluator.h"
@@ -13,6 +15,15 @@ struct Dxf2dArgs {
     std::string layer;  ///< empty: all layers
     double originX = 0, originY = 0, scale = 1;
 };
+
+/// A parameter OpenSCAD reads with toString(): undef is "", other values as str() shows them.
+std::string textOf(const Value &v);
+/// The bytes of a file that import(), dxf_dim() or dxf_cross() names, through the input reader.
+/// Nothing when it is missing, unreadable or a folder: OpenSCAD warns and goes on, and so does
+/// the caller. A FIFO, device or socket (which would block, or never end) or a file past
+/// `maxBytes` is a located error.
+std::optional<std::string> readNamedFile(const std::string &path, uint64_t maxBytes,
+                                         const std::string &who, const SourceLoc &loc);
 
 /// The file an import() names: relative to the folder of the file holding the call, else
 /// (deprecated, with OpenSCAD's warning) relative to the main file's folder.

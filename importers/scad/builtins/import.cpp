@@ -27,27 +27,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// A parameter OpenSCAD reads with toString(): undef is "", other values as str() shows them.
-std::string textOf(const Value &v) { return v.isUndef() ? std::string() : v.toString(false); }
-
-/// The bytes of a file that import(), dxf_dim() or dxf_cross() names, through the input reader.
-/// Nothing when it is missing, unreadable or a folder: OpenSCAD warns and goes on, and so does
-/// the caller. A FIFO, device or socket (which would block, or never end) or a file past
-/// `maxBytes` is a located error.
-std::optional<std::string> readNamedFile(const std::string &path, uint64_t maxBytes,
-                                         const std::string &who, const SourceLoc &loc) {
-    std::error_code ec;
-    if (path.empty() || fs::is_directory(path, ec)) return std::nullopt;
-    try {
-        return readInputFile(path, maxBytes);
-    } catch (const InputFileError &e) {
-        if (e.reason() == InputFileError::Reason::Missing ||
-            e.reason() == InputFileError::Reason::Unreadable)
-            return std::nullopt;
-        throw EvalError(loc, who + "(): " + e.what());
-    }
-}
-
 /// ev.state().meshFiles entry of a mesh file without triangles: nothing to place.
 constexpr int kNoMesh = -1;
 
