@@ -46,7 +46,7 @@ timed() {
 
 have_povray=0
 command -v povray >/dev/null 2>&1 && have_povray=1
-echo "Plate with N holes at 640x480, 1 spp, $threads thread(s) (0 = all cores)"
+echo "Plate with N holes at 640x480, default (adaptive) sampling, $threads thread(s) (0 = all cores)"
 echo
 echo "| holes | scadray render time | scadray whole run: wall / CPU | peak memory | POV-Ray whole run (its export): wall / CPU |"
 echo "|---:|---:|---:|---:|---:|"

@@ -5,7 +5,7 @@
 # triggered it. Each suite runs as one process; SANITIZE_GTEST_FILTER replaces the default
 # filter (which leaves out the OpenSCAD cross-checks).
 #
-#   ./scripts/sanitize.sh                 configure, build, run the core/scad/gltf/meshio/cli/exporter tests
+#   ./scripts/sanitize.sh                 configure, build, run the unit suites (core, scad, gltf, ...)
 #   ./scripts/sanitize.sh --build T...    only configure build-asan/ and build targets T (scripts/fuzz.sh)
 #
 # The same build holds the libFuzzer targets (SCADRAY_FUZZ instruments everything for coverage;

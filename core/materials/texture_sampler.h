@@ -28,8 +28,8 @@ Rgb sampleTexture(const ir::Texture &tex, double u, double v);
 /// KHR_texture_transform of `ref` applied to (u, v): scale, then rotate, then offset. The
 /// rotation turns counter-clockwise as seen in uv space with v pointing down, as the extension
 /// describes, the glTF-Sample-Viewer renders it and the TextureTransformTest sample checks it:
-/// u' = cos r u + sin r v, v' = -sin r u + cos r v (KhronosGroup/glTF issue 1563: the GLSL
-/// listing in the extension text turns the other way).
+/// u' = cos r u + sin r v, v' = -sin r u + cos r v. The GLSL listing in the extension text turns
+/// the other way (github.com/KhronosGroup/glTF/issues/1563).
 void transformTexCoord(const ir::TextureRef &ref, double *u, double *v);
 
 /// The texture coordinates a TextureRef reads at a hit: its coordinate set (false when the

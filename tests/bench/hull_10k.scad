@@ -1,4 +1,4 @@
-// Benchmark (scripts/bench_hull.sh): hull() of 10,000 points, the corners of 1,250 small cubes
+// Benchmark (scripts/bench_vs_openscad.sh): hull() of 10,000 points, the corners of 1,250 small cubes
 // spread over a sphere of radius 10 (a Fibonacci spiral), so most corners are hull vertices.
 n = 1250;
 golden = 180 * (3 - sqrt(5));  // degrees

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-# Writes the small hand-made seed inputs of tests/fuzz/seeds/ (issue 14): tiny PNG, OpenEXR,
+# Writes the small hand-made seed inputs of tests/fuzz/seeds/: tiny PNG, OpenEXR,
 # STL and OFF files. Run from anywhere; the output is committed, this script says how it was made.
 import os
 import struct

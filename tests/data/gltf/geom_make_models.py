@@ -3,7 +3,7 @@
 # Writes geom_skin_morph_colors.gltf: a skinned bar posed by its second joint (COLOR_0 float
 # RGB), a cube whose morph target (weight 0.5) lifts its top (COLOR_0 normalized unsigned byte
 # RGBA), and a quad with COLOR_0 normalized unsigned short RGBA, placed twice by
-# EXT_mesh_gpu_instancing. Test data for scadray (issue 17); run it to regenerate the file.
+# EXT_mesh_gpu_instancing. Test data for scadray; run it to regenerate the file.
 import base64, json, math, struct
 
 data = bytearray()

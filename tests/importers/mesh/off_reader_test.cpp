@@ -157,7 +157,7 @@ TEST(OffReader, MalformedFilesAreLocatedErrors) {
 }
 
 TEST(OffReader, CountsTheFileCannotHoldAreRefusedBeforeAllocating) {
-    // Issue 14: 4e9 vertices used to be reserved at once ("out of memory", unlocated)
+    // 4e9 vertices must not be reserved at once (that ends in an unlocated "out of memory")
     DiagnosticSink diag;
     std::string path = testDir() + "/huge.off";
     writeFile(path, "OFF\n4000000000 1 0\n0 0 0\n");

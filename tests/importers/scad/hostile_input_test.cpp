@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Hostile input (issue 14): generated inputs that used to overflow the stack, exhaust memory,
+// Hostile input: generated inputs that could overflow the stack, exhaust memory,
 // hang or reach undefined behaviour must each end in a located error (or OpenSCAD's defined
 // result) quickly and before allocating much.
 #include <gtest/gtest.h>
@@ -55,7 +55,7 @@ void expectTooDeep(const std::string &src) {
     EXPECT_EQ(e.loc().line, 1);
 }
 
-// --- Item 1: chains a million links long -----------------------------------------------------
+// --- Chains a million links long -----------------------------------------------------------------
 
 TEST(Hostile, PostfixChainsOfAMillionLinksAreTooDeep) {
     // Parsed without recursion, they built a tree a million deep whose evaluation (and
@@ -127,7 +127,7 @@ TEST(Hostile, DeeplyNestedVectorsAreALocatedError) {
                        "vectors nested too deep");
 }
 
-// --- Item 2: values shared by reference ------------------------------------------------------
+// --- Values shared by reference ------------------------------------------------------------------
 
 /// t(60) is 2^60 elements deep down, described by 61 vectors.
 const std::string kTower = "function t(n) = n == 0 ? [1] : let(s = t(n - 1)) [s, s];\n";
@@ -231,7 +231,7 @@ TEST(Hostile, SearchingHugeSharedVectorsStops) {
                     "evaluation too long");
 }
 
-// --- Item 3: rands() ---------------------------------------------------------------------
+// --- rands() -------------------------------------------------------------------------------------
 
 std::string echoOf(const std::string &src) {
     Imported r = importText(src);
@@ -262,7 +262,7 @@ TEST(Hostile, RandsCountsAndBoundsThatAreNotFinite) {
     EXPECT_EQ(e.loc().col, 5);
 }
 
-// --- Items 4 and 5: files named by include<>, use<> and import() ---------------------------
+// --- Files named by include<>, use<> and import() ------------------------------------------------
 
 /// A fresh folder for the running test.
 std::string testDir() {
