@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Perspective pinhole or orthographic camera with POV-Ray 3.7's look_at construction
-// (povray-semantics.md section 3), right-handed: a film position maps to the same ray POV-Ray
-// traces for it. Orthographic rays start on the film rectangle (right x up) through the
-// location and all run along the view direction.
+// (docs/design/povray-semantics.md section 7), right-handed: a film position maps to the same
+// ray POV-Ray traces for it. Orthographic rays start on the film rectangle (right x up)
+// through the location and all run along the view direction.
 #pragma once
 
 #include "core/ir/camera.h"

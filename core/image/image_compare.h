@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Statistical comparison of a rendered image with a reference (DESIGN.md "Comparing images"):
-// per-tile t-tests of the mean difference, Benjamini-Hochberg control of false alarms across
-// tiles and channels, an equivalence margin, and masks for silhouettes and coplanar faces.
+// Statistical comparison of a rendered image with a reference (docs/design/conventions.md,
+// "Comparing images"): per-tile t-tests of the mean difference, Benjamini-Hochberg control of
+// false alarms across tiles and channels, an equivalence margin, and masks for silhouettes and
+// coplanar faces.
 #pragma once
 
 #include <string>

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// IR light sources (POV-Ray light_source semantics, povray-semantics.md 1.2-1.3).
+// IR light sources (POV-Ray light_source semantics, docs/design/povray-semantics.md sections
+// 3.2-3.3).
 #pragma once
 
 #include "core/ir/source_loc.h"
@@ -31,9 +32,9 @@ struct Light {
     bool shadowless = false;
     /// POV-Ray area_light (point and spot lights): shadows are the average visibility of an
     /// n1 x n2 grid spanning axis1 x axis2 about `position`, averaged recursively as POV-Ray
-    /// does (povray-semantics.md 1.5); light colour, fade and highlights still come from the
-    /// centre. With jitter each grid point moves by up to half a cell, drawn from the
-    /// sample's seeded stream, so soft shadows converge with samples per pixel.
+    /// does (docs/design/povray-semantics.md section 5); light colour, fade and highlights
+    /// still come from the centre. With jitter each grid point moves by up to half a cell,
+    /// drawn from the sample's seeded stream, so soft shadows converge with samples per pixel.
     struct Area {
         Vec3 axis1{1, 0, 0}, axis2{0, 1, 0};
         int n1 = 1, n2 = 1;

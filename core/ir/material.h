@@ -18,7 +18,8 @@ struct PbrMaterial;  // core/ir/pbr_material.h
 /// the 8-bit sRGB-less integers divided by 255, exactly as OpenSCAD treats colours.
 constexpr Rgb kOpenScadDefaultColor{0xf9 / 255.0, 0xd7 / 255.0, 0x2c / 255.0};
 
-/// Local-illumination and reflection parameters (povray-semantics.md section 1-2).
+/// Local-illumination and reflection parameters (docs/design/povray-semantics.md sections 3
+/// and 6).
 struct Finish {
     double ambient = 0.15;
     double diffuse = 0.75;

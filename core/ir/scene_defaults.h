@@ -19,7 +19,7 @@ constexpr double kOpenScadBuiltinVpd = 500;
 
 /// OpenSCAD's gimbal camera ($vpt, $vpr, $vpd, $vpf) as an explicit camera with vertical fov:
 /// with Rinv = Rz(vpr.z) Ry(vpr.y) Rx(vpr.x - 90), the eye is vpt + Rinv (0,-vpd,0), looking at
-/// vpt, with up Rinv (0,0,1) (openscad-subset.md section 5).
+/// vpt, with up Rinv (0,0,1) (docs/design/openscad-subset.md section 14).
 Camera cameraFromViewport(const Vec3 &vpt, const Vec3 &vpr, double vpd, double vpf);
 
 /// How the automatic camera frames a scene without one.

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // POV-Ray 3.7's area_light shadow: a grid of shadow-ray targets about the light's centre
 // (optionally jittered, circular, or oriented towards the shaded point) and the recursive,
-// optionally adaptive, average of their filtered light colours (povray-semantics.md 1.5).
+// optionally adaptive, average of their filtered light colours (docs/design/povray-semantics.md
+// section 5).
 #pragma once
 
 #include <functional>

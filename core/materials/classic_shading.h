@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// POV-Ray 3.7's classic finish formulas (povray-semantics.md sections 1.2 and 2.2), shared by
-// the tracer and its tests: reflectivity with falloff or Fresnel, highlight colour, light fade.
+// POV-Ray 3.7's classic finish formulas (docs/design/povray-semantics.md sections 3.2, 3.3,
+// 6.2 and 6.6), shared by the tracer and its tests: reflectivity with falloff or Fresnel,
+// highlight colour, light fade, interior fade.
 #pragma once
 
 #include "core/ir/light.h"
@@ -31,8 +32,9 @@ Rgb highlightColour(const ir::Finish &f, const Rgb &lightColour, const Rgb &pigm
 /// POV-Ray light fade: 2 / (1 + (d / fadeDistance)^fadePower), or 1 when fade is off.
 double lightFade(const ir::Light &light, double distance);
 
-/// Interior fade of light that travelled `depth` inside a medium (POV-Ray section 2.6); the
-/// shadow path requires fadePower > 0, the trace path does not.
+/// Interior fade of light that travelled `depth` inside a medium
+/// (docs/design/povray-semantics.md section 6.6); the shadow path requires fadePower > 0, the
+/// trace path does not.
 Rgb interiorFade(const ir::Interior &in, double depth, bool shadowPath);
 
 }  // namespace rt

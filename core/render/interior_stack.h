@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The solids a ray is inside, innermost last, as POV-Ray's per-ray interior list; it decides
-// the relative index of refraction at each surface (povray-semantics.md section 2.4).
+// the relative index of refraction at each surface (docs/design/povray-semantics.md section
+// 6.4).
 #pragma once
 
 #include <array>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Whitted-style recursive ray tracer with POV-Ray 3.7's classic shading, shadows through
 // transparent solids, reflection, refraction and total internal reflection, exactly as
-// docs/povray-semantics.md sets them out.
+// docs/design/povray-semantics.md sets them out (sections 3 to 6).
 #pragma once
 
 #include <vector>
@@ -69,13 +69,15 @@ class WhittedIntegrator {
                   const Vec3 &ns, const Rgb &c, int level, double weight,
                   const InteriorStack &stack, bool blurred, TraceContext &ctx) const;
     /// Filtered light reaching si from the direction L over distance dist (1 = unoccluded),
-    /// POV-Ray section 1.4. `stack` is the interior list of the ray that hit si.
+    /// docs/design/povray-semantics.md section 4. `stack` is the interior list of the ray that
+    /// hit si.
     Rgb shadowFilter(const SurfaceInteraction &si, const Vec3 &L, double dist,
                      const InteriorStack &stack, TraceContext &ctx) const;
     /// Light colour `lc` arriving at si from area light `index`: POV-Ray's averaged grid of
-    /// shadow rays (section 1.5). Below a blurred split, where the path is one of a fan
-    /// whose mean is taken, a light with fixed grid weights sends one shadow ray to a grid
-    /// point drawn by weight instead: the same expectation for a fraction of the rays.
+    /// shadow rays (docs/design/povray-semantics.md section 5). Below a blurred split, where
+    /// the path is one of a fan whose mean is taken, a light with fixed grid weights sends one
+    /// shadow ray to a grid point drawn by weight instead: the same expectation for a fraction
+    /// of the rays.
     Rgb areaShadow(const SurfaceInteraction &si, size_t index, const Rgb &lc,
                    const InteriorStack &stack, bool blurred, TraceContext &ctx) const;
     /// Whether light `index`'s shadow rays at a hit take random numbers from the pixel's

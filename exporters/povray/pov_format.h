@@ -17,8 +17,8 @@ std::string num(double v);
 std::string vec(const Vec3 &v);
 /// rgb <r, g, b>
 std::string rgb(const Rgb &c);
-/// POV-Ray's `matrix <...>` for a column-vector affine matrix (povray-semantics.md 6.2): the
-/// 12 numbers are the rows of its 4x3 transpose.
+/// POV-Ray's `matrix <...>` for a column-vector affine matrix (docs/design/povray-semantics.md
+/// section 10.2): the 12 numbers are the rows of its 4x3 transpose.
 std::string matrix(const Mat4 &m);
 /// The shortest exact POV-Ray transform for m: `translate <...>` for a pure translation,
 /// `scale <...>` for a pure axis scale, otherwise `matrix <...>`.

@@ -24,10 +24,11 @@ struct IniOptions {
 ///
 /// The IR is right-handed and Z-up; POV-Ray is left-handed. Geometry is written in its own
 /// coordinates and the camera gets `right <-image_width/image_height, 0, 0>`, which makes
-/// POV-Ray's look_at construction right-handed (povray-semantics.md section 3). Solids are
-/// grouped exactly as the ray tracer groups them: each top-level solid is one POV-Ray object
-/// with one interior (that of its first primitive); unions inside CSG and transparent unions
-/// are `merge`, so no internal surface appears that scadray does not have.
+/// POV-Ray's look_at construction right-handed (docs/design/povray-semantics.md section 7.3).
+/// Solids are grouped exactly as the ray tracer groups them: each top-level solid is one
+/// POV-Ray object with one interior (that of its first primitive); the unions of a solid with a
+/// transparent part are `merge`, so no internal surface shows that scadray does not have, and
+/// those of an opaque solid stay `union` (same note, section 10.3).
 ///
 /// Textured materials refer to images named `<assetPrefix>_Material_<n>.png` (the texture with
 /// the material's colour baked in, linear 16-bit); they are appended to `textures` when given.

@@ -37,8 +37,8 @@ TEST(AreaLight, GridSpansTheAxesAboutTheCentre) {
 }
 
 TEST(AreaLight, CentreBlockedInNineByNineGivesPovRaysWeightedAverage) {
-    // povray-semantics.md 1.5: a 9x9 light with only the centre blocked gives 1 - 1/64, not
-    // the plain mean 1 - 1/81
+    // docs/design/povray-semantics.md section 5.3: a 9x9 light with only the centre blocked
+    // gives 1 - 1/64, not the plain mean 1 - 1/81
     ir::Light l = areaLight(9, 9);
     Rng rng(1);
     AreaLightSampler s(l, Vec3(0, 0, 0), rng);

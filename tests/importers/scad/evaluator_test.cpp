@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Evaluator tests: OpenSCAD 2021.01 scoping rules (openscad-subset.md sections 4 and 7),
+// Evaluator tests: OpenSCAD 2021.01 scoping rules (docs/design/openscad-subset.md sections 3-6),
 // recursion, comprehensions, include/use, and the limits on runaway programs.
 #include "importers/scad/lang/evaluator.h"
 
@@ -462,7 +462,7 @@ TEST(Echo, NamedArgumentsAndValueFormatting) {
     EXPECT_EQ(r.diag.all()[0].loc.line, 1);
 }
 
-// The time it takes is a benchmark, not a test: build/tests/scad_eval_bench (issue 14)
+// The time it takes is a benchmark, not a test: build/tests/scad_eval_bench
 TEST(EvaluatorScale, HundredThousandPrimitives) {
     Imported r = importText(
         "for (i = [0:99], j = [0:99], k = [0:9]) translate([i, j, k]) color([i / 100, j / 100, "

@@ -10,7 +10,8 @@
 namespace rt::scad::test {
 namespace {
 
-/// The tetrahedron of openscad-subset.md section 1: faces clockwise seen from outside.
+/// The tetrahedron of docs/design/openscad-subset.md section 8.5: faces clockwise seen from
+/// outside.
 const std::string kPoints = "[[0, 0, 0], [10, 0, 0], [0, 10, 0], [0, 0, 10]]";
 const std::string kFaces = "[[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]";
 

@@ -1,4 +1,4 @@
-// OpenSCAD 2021.01 scoping rules (openscad-subset.md section 4).
+// OpenSCAD 2021.01 scoping rules (docs/design/openscad-subset.md sections 3 to 5).
 a = 1;
 echo(a = a);
 a = 2;
