@@ -17,6 +17,7 @@ packages=(
     ffmpeg
     clang libclang-rt-14-dev
     clang-format  # scripts/check_format.sh: the code stays as .clang-format says (CI)
+    python3  # scripts/check_docs.py: the documentation test
     libembree-dev
     libjs-chart.js  # Chart.js, embedded into `scadray report` pages for the converge plots
     chromium  # the headless browser of the report's test (tests/integration/report_browser.sh)
