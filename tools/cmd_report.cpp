@@ -355,7 +355,7 @@ int runReport(const ReportArgs &ra) {
     std::time_t now = std::time(nullptr);
     char when[64];
     std::strftime(when, sizeof when, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
-    page.generated = std::string("generated ") + when + " by scadray 0.1.0";
+    page.generated = std::string("generated ") + when + " by scadray " SCADRAY_VERSION;
     if (!scenes.empty()) {
         const CheckArgs &a = ra.check;
         page.settings = std::to_string(a.width) + "x" + std::to_string(a.height) + ", POV-Ray " +

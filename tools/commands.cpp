@@ -8,7 +8,7 @@ namespace rt::cli {
 
 void addCommands(CLI::App &app, std::function<int()> &action) {
     app.require_subcommand(1);
-    app.set_version_flag("--version", "scadray 0.1.0");
+    app.set_version_flag("--version", "scadray " SCADRAY_VERSION);
     addRenderCommand(app, action);
     addDumpCommand(app, action);
     addExportCommand(app, action);

@@ -42,6 +42,12 @@ TEST_F(Cli, EverySceneRenders) {
     }
 }
 
+TEST_F(Cli, VersionIsTheProjectVersion) {
+    CliRun r = run("--version");
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_EQ(r.out, "scadray " SCADRAY_VERSION "\n");
+}
+
 TEST_F(Cli, SummaryReportsRaysAndTime) {
     std::string out = (dir / "a.png").string();
     CliRun r = run("render -W 32 -H 24 " + scene("glass.scad") + " -o " + out);
